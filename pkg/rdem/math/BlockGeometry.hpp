@@ -1,0 +1,107 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+/* Geometry of rectangular blocks (oriented boxes): the face two blocks share, and how deep a point lies inside a block.
+
+   A block is its centroid x, its rotation R (columns = body axes in global coordinates) and its half-extents h [m]. */
+#pragma once
+
+#include <Eigen/Core>
+#include <cmath>
+
+namespace yade {
+namespace rdem {
+
+	template <class S> struct OrientedBlock {
+		Eigen::Matrix<S, 3, 1> pos;  ///< centroid [m]
+		Eigen::Matrix<S, 3, 3> rot;  ///< body-to-global rotation
+		Eigen::Matrix<S, 3, 1> half; ///< half-extents along the body axes [m]
+	};
+
+	/// The rectangle two blocks share, expressed in global coordinates.
+	template <class S> struct SharedFace {
+		bool                   found = false;
+		int                    axisA = -1, axisB = -1; ///< body axis of A (B) normal to the face
+		S                      signA = 0, signB = 0;   ///< side of that axis: the face normal of A is signA·R_A e_axisA
+		S                      gap   = 0;              ///< distance between the two face planes along the normal, >0 apart [m]
+		Eigen::Matrix<S, 3, 1> centre, normal, t1, t2; ///< normal points from A to B; t1, t2 unit, in-plane
+		S                      h1 = 0, h2 = 0;         ///< half-sizes of the shared rectangle along t1, t2 [m]
+	};
+
+	/* Find the face of A that faces a parallel face of B across a plane gap |gap| ≤ gapTol with an in-plane overlap
+	   of positive area. Faces must be parallel and their edges aligned (within angleTol, as |cos| ≥ 1-angleTol). */
+	template <class S> SharedFace<S> findSharedFace(const OrientedBlock<S>& A, const OrientedBlock<S>& B, S gapTol, S angleTol)
+	{
+		using std::abs;
+		using std::max;
+		using std::min;
+		using V = Eigen::Matrix<S, 3, 1>;
+		SharedFace<S> best;
+		for (int k = 0; k < 3; ++k) {
+			for (int sa = -1; sa <= 1; sa += 2) {
+				const V n = S(sa) * A.rot.col(k);
+				int     m = -1;
+				for (int j = 0; j < 3; ++j)
+					if (abs(B.rot.col(j).dot(n)) >= 1 - angleTol) m = j;
+				if (m < 0) continue;
+				const S sb  = B.rot.col(m).dot(n) > 0 ? S(-1) : S(1); // B's face looks back at A
+				const V cA  = A.pos + A.half[k] * n;
+				const V cB  = B.pos + sb * B.half[m] * B.rot.col(m);
+				const S gap = (cB - cA).dot(n);
+				if (abs(gap) > gapTol) continue;
+				const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+				const V   t1 = A.rot.col(k1), t2 = A.rot.col(k2);
+				// Half-extents of B's face along t1 and t2: the B axis parallel to each.
+				S hB1 = -1, hB2 = -1;
+				for (int j = 0; j < 3; ++j) {
+					if (j == m) continue;
+					if (abs(B.rot.col(j).dot(t1)) >= 1 - angleTol) hB1 = B.half[j];
+					if (abs(B.rot.col(j).dot(t2)) >= 1 - angleTol) hB2 = B.half[j];
+				}
+				if (hB1 < 0 || hB2 < 0) continue; // faces parallel but edges not aligned
+				const S o1 = (cB - cA).dot(t1), o2 = (cB - cA).dot(t2);
+				const S lo1 = max(-A.half[k1], o1 - hB1), hi1 = min(A.half[k1], o1 + hB1);
+				const S lo2 = max(-A.half[k2], o2 - hB2), hi2 = min(A.half[k2], o2 + hB2);
+				if (!(hi1 > lo1 && hi2 > lo2)) continue;
+				if (best.found && abs(gap) >= abs(best.gap)) continue;
+				best.found  = true;
+				best.axisA  = k;
+				best.axisB  = m;
+				best.signA  = S(sa);
+				best.signB  = sb;
+				best.gap    = gap;
+				best.normal = n;
+				best.t1     = t1;
+				best.t2     = t2;
+				best.h1     = (hi1 - lo1) / 2;
+				best.h2     = (hi2 - lo2) / 2;
+				best.centre = cA + (gap / 2) * n + ((lo1 + hi1) / 2) * t1 + ((lo2 + hi2) / 2) * t2;
+			}
+		}
+		return best;
+	}
+
+	/// How deep a point lies inside a block: depth > 0 inside, measured to the nearest face, whose outward unit
+	/// normal (global) is returned in normal. depth ≤ 0 means outside or on the surface.
+	template <class S> S penetrationDepth(const OrientedBlock<S>& A, const Eigen::Matrix<S, 3, 1>& p, Eigen::Matrix<S, 3, 1>& normal)
+	{
+		using std::abs;
+		const Eigen::Matrix<S, 3, 1> q = A.rot.transpose() * (p - A.pos);
+		int                          k = 0;
+		S                            depth = A.half[0] - abs(q[0]);
+		for (int j = 1; j < 3; ++j) {
+			const S d = A.half[j] - abs(q[j]);
+			if (d < depth) {
+				depth = d;
+				k     = j;
+			}
+		}
+		normal = (q[k] >= 0 ? S(1) : S(-1)) * A.rot.col(k);
+		return depth;
+	}
+
+} // namespace rdem
+} // namespace yade

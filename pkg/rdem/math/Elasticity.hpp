@@ -1,0 +1,87 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+/* Isotropic linear elasticity and the spring constants of the refined DEM.
+
+   Pure functions, Eigen only, templated on the scalar so that they are unit-tested in double
+   without YADE and used with yade::Real inside the plugin.
+
+   Reference [P]: "Incorporating Poisson effect into DEM for enhanced numerical analysis of masonry
+   structures" (shared/reference/paper-poisson-effect-refined-dem.txt), equations (11)-(13), (18), (19).
+   Units: SI throughout (Pa, m, kg, s). Voigt order (xx, yy, zz, yz, zx, xy), engineering shear strains. */
+#pragma once
+
+#include <Eigen/Core>
+#include <cmath>
+
+namespace yade {
+namespace rdem {
+
+	template <class S> using Matrix6 = Eigen::Matrix<S, 6, 6>;
+
+	/* Normal stiffness modulus of the face springs.
+	   Paper:      E/(1-ν²), the plane-stress modulus of eq. (8) used by eq. (11) [P].
+	   Consistent: λ+2μ = E(1-ν)/((1+ν)(1-2ν)), the diagonal of eq. (18), so that springs (diagonal)
+	               plus Poisson elements (off-diagonal, eq. 19) add up to the full isotropic tensor
+	               (derivation: doc/theory.md). */
+	enum class SpringModulus { Paper = 0, Consistent = 1 };
+
+	/// Lamé's first parameter λ = Eν/((1+ν)(1-2ν)) [Pa]; equals the off-diagonal entry of eq. (18).
+	template <class S> S lameLambda(S E, S nu) { return E * nu / ((1 + nu) * (1 - 2 * nu)); }
+
+	/// Shear modulus μ = G = E/(2(1+ν)) [Pa].
+	template <class S> S shearModulus(S E, S nu) { return E / (2 * (1 + nu)); }
+
+	/// Normal modulus of a face spring [Pa], see SpringModulus.
+	template <class S> S springNormalModulus(S E, S nu, SpringModulus m)
+	{
+		return m == SpringModulus::Paper ? E / (1 - nu * nu) : lameLambda(E, nu) + 2 * shearModulus(E, nu);
+	}
+
+	/// Eq. (11) [P], normal: stiffness per unit area of the pyramid between a face and the centroid at distance ℓ [N/m³].
+	template <class S> S normalStiffnessPerArea(S E, S nu, S ell, SpringModulus m) { return springNormalModulus(E, nu, m) / ell; }
+
+	/// Eq. (11) [P], shear: k_s = E/(2(1+ν)ℓ) [N/m³].
+	template <class S> S shearStiffnessPerArea(S E, S nu, S ell) { return shearModulus(E, nu) / ell; }
+
+	/// Eq. (12) [P]: the springs of blocks A and B in series, k̄ = 1/(1/k_A + 1/k_B) [N/m³].
+	template <class S> S seriesStiffness(S kA, S kB) { return 1 / (1 / kA + 1 / kB); }
+
+	/// Eq. (13) [P]: equivalent mass per unit contact area m_ave = ρ_A ℓ_A + ρ_B ℓ_B [kg/m²].
+	template <class S> S equivalentMassPerArea(S rhoA, S ellA, S rhoB, S ellB) { return rhoA * ellA + rhoB * ellB; }
+
+	/// Eq. (13) [P]: dashpot coefficient per unit area c = 2h√(m_ave k) [N·s/m³]; h = 1 is critical damping.
+	template <class S> S dampingPerArea(S h, S massPerArea, S kPerArea)
+	{
+		using std::sqrt;
+		return 2 * h * sqrt(massPerArea * kPerArea);
+	}
+
+	/// Eq. (18) [P]: isotropic elasticity tensor D in Voigt notation, σ = D ε.
+	template <class S> Matrix6<S> elasticityTensor(S E, S nu)
+	{
+		const S    lambda = lameLambda(E, nu), mu = shearModulus(E, nu);
+		Matrix6<S> D      = Matrix6<S>::Zero();
+		D.template topLeftCorner<3, 3>().setConstant(lambda);
+		for (int i = 0; i < 3; ++i) {
+			D(i, i)         = lambda + 2 * mu;
+			D(i + 3, i + 3) = mu;
+		}
+		return D;
+	}
+
+	/// Eq. (19) [P]: the off-diagonal (Poisson) part D_p of eq. (18): λ between the normal components, zero elsewhere.
+	template <class S> Matrix6<S> poissonTensor(S E, S nu)
+	{
+		Matrix6<S> Dp = Matrix6<S>::Zero();
+		Dp.template topLeftCorner<3, 3>().setConstant(lameLambda(E, nu));
+		for (int i = 0; i < 3; ++i)
+			Dp(i, i) = 0;
+		return Dp;
+	}
+
+} // namespace rdem
+} // namespace yade
