@@ -73,15 +73,18 @@ namespace rdem {
 		return D;
 	}
 
-	/// Eq. (19) [P]: the off-diagonal (Poisson) part D_p of eq. (18): λ between the normal components, zero elsewhere.
-	template <class S> Matrix6<S> poissonTensor(S E, S nu)
+	/// Eq. (19) [P] from λ directly: D_p has λ between different normal components and zeros elsewhere.
+	template <class S> Matrix6<S> poissonTensorFromLambda(S lambda)
 	{
 		Matrix6<S> Dp = Matrix6<S>::Zero();
-		Dp.template topLeftCorner<3, 3>().setConstant(lameLambda(E, nu));
+		Dp.template topLeftCorner<3, 3>().setConstant(lambda);
 		for (int i = 0; i < 3; ++i)
 			Dp(i, i) = 0;
 		return Dp;
 	}
+
+	/// Eq. (19) [P]: the off-diagonal (Poisson) part D_p of eq. (18).
+	template <class S> Matrix6<S> poissonTensor(S E, S nu) { return poissonTensorFromLambda(lameLambda(E, nu)); }
 
 } // namespace rdem
 } // namespace yade

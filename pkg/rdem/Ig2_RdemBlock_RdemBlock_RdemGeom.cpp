@@ -1,0 +1,150 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+#include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
+#include <pkg/rdem/math/BlockGeometry.hpp>
+#include <pkg/rdem/math/SegmentGrid.hpp>
+#include <stdexcept>
+#include <string>
+
+namespace yade {
+
+YADE_PLUGIN((Ig2_RdemBlock_RdemBlock_RdemGeom));
+CREATE_LOGGER(Ig2_RdemBlock_RdemBlock_RdemGeom);
+
+namespace {
+	using Block = rdem::OrientedBlock<Real>;
+
+	Vector3r pointVelocity(const State& s, const Vector3r& centre, const Vector3r& p) { return s.vel + s.angVel.cross(p - centre); }
+
+	/// Distance from a block's centroid to its face whose outward normal is closest to n [m].
+	Real faceDistance(const Block& b, const Vector3r& n)
+	{
+		int k = 0;
+		for (int j = 1; j < 3; ++j)
+			if (math::abs(b.rot.col(j).dot(n)) > math::abs(b.rot.col(k).dot(n))) k = j;
+		return b.half[k];
+	}
+
+	/* Sample points of block X (which = 0 for body 1, 1 for body 2) strictly inside block Y, appended to geom. Sample
+	   keys are ((which·6 + face)·(n+1)² + point), stable from step to step for the shear history. */
+	void sampleInside(const Block& X, const State& sx, const Block& Y, const State& sy, int which, int n, RdemGeom& g)
+	{
+		const int perFace = (n + 1) * (n + 1);
+		for (int k = 0; k < 3; ++k) {
+			const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+			for (int side = 0; side < 2; ++side) {
+				const Real     s    = side ? 1 : -1;
+				const Vector3r nf   = s * X.rot.col(k);
+				const auto     pts  = rdem::faceSamplePoints<Real>(X.pos + X.half[k] * nf, X.rot.col(k1), X.rot.col(k2), X.half[k1], X.half[k2], n);
+				const int      face = 2 * k + side;
+				for (int p = 0; p < perFace; ++p) {
+					Vector3r  nY;
+					const Real depth = rdem::penetrationDepth(Y, pts[size_t(p)].pos, nY);
+					const Real cosFace = -nf.dot(nY); // the sampled face must look into Y's face
+					if (!(depth > 0) || !(cosFace > 0)) continue;
+					// Normal from body 1 to body 2: Y's outward normal if Y is body 1, its opposite otherwise.
+					const Vector3r normal = which == 1 ? nY : Vector3r(-nY);
+					const Vector3r point  = pts[size_t(p)].pos + (depth / 2) * nY;
+					const State&   s1     = which == 0 ? sx : sy;
+					const State&   s2     = which == 0 ? sy : sx;
+					const Vector3r x1     = which == 0 ? X.pos : Y.pos;
+					const Vector3r x2     = which == 0 ? Y.pos : X.pos;
+					g.sampleKey.push_back((which * 6 + face) * perFace + p);
+					g.samplePoint.push_back(point);
+					g.sampleNormal.push_back(normal);
+					g.sampleVel.push_back(pointVelocity(s2, x2, point) - pointVelocity(s1, x1, point));
+					g.sampleDepth.push_back(depth);
+					g.sampleArea.push_back(pts[size_t(p)].weight * cosFace / 2); // both blocks are sampled: half each
+				}
+			}
+		}
+	}
+}
+
+void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom&)
+{
+	if (segmentsPerEdge < 1)
+		throw std::invalid_argument("Ig2_RdemBlock_RdemBlock_RdemGeom.segmentsPerEdge = " + std::to_string(segmentsPerEdge) + ": must be an integer >= 1");
+	if (!(bondGapTolerance >= 0))
+		throw std::invalid_argument("Ig2_RdemBlock_RdemBlock_RdemGeom.bondGapTolerance = " + std::to_string(bondGapTolerance) + ": must be >= 0");
+}
+
+bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
+        const shared_ptr<Shape>&       shape1,
+        const shared_ptr<Shape>&       shape2,
+        const State&                   state1,
+        const State&                   state2,
+        const Vector3r&                shift2,
+        const bool&                    force,
+        const shared_ptr<Interaction>& I)
+{
+	const Block A { state1.pos, state1.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape1.get())->extents };
+	const Block B { state2.pos + shift2, state2.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape2.get())->extents };
+
+	if (!I->geom) {
+		if (force) {
+			// Bonding (utils.createInteraction): the shared face, cut into n×n segments.
+			const Real tol  = bondGapTolerance * math::min(A.half.minCoeff(), B.half.minCoeff());
+			const auto face = rdem::findSharedFace<Real>(A, B, tol, Real(1e-6));
+			if (!face.found) return false;
+			auto       g = shared_ptr<RdemGeom>(new RdemGeom);
+			const auto segs = rdem::segmentCentres<Real>(face.centre, face.t1, face.t2, face.h1, face.h2, segmentsPerEdge);
+			g->samplesPerEdge = segmentsPerEdge;
+			g->ell1           = A.half[face.axisA];
+			g->ell2           = B.half[face.axisB];
+			g->segNormal1     = A.rot.transpose() * face.normal;
+			g->segNormal2     = -(B.rot.transpose() * face.normal);
+			g->segTangent1    = A.rot.transpose() * face.t1;
+			g->segHalfSizes   = Vector2r(face.h1, face.h2) / segmentsPerEdge;
+			for (const auto& sp : segs) {
+				g->segPoint1.push_back(A.rot.transpose() * (sp.pos - A.pos));
+				g->segPoint2.push_back(B.rot.transpose() * (sp.pos - B.pos));
+				g->segArea.push_back(sp.weight);
+			}
+			I->geom = g;
+		} else {
+			if (!(rdem::overlapDepth<Real>(A, B) > 0)) return false;
+			RdemGeom probe;
+			probe.samplesPerEdge = segmentsPerEdge;
+			sampleInside(A, state1, B, state2, 0, segmentsPerEdge, probe);
+			sampleInside(B, state2, A, state1, 1, segmentsPerEdge, probe);
+			if (probe.sampleKey.empty()) return false;
+			auto g            = shared_ptr<RdemGeom>(new RdemGeom(probe));
+			g->ell1           = faceDistance(A, probe.sampleNormal[0]);
+			g->ell2           = faceDistance(B, probe.sampleNormal[0]);
+			I->geom           = g;
+			return true; // samples of this step are already in place
+		}
+	}
+
+	RdemGeom& g = *static_cast<RdemGeom*>(I->geom.get());
+	if (g.nSegments() > 0) {
+		// Bonded: relative displacement and velocity of the two material points of every segment.
+		g.normal           = (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized();
+		const size_t nSeg = g.nSegments();
+		g.segDisp.resize(nSeg);
+		g.segVel.resize(nSeg);
+		g.segPoint.resize(nSeg);
+		for (size_t i = 0; i < nSeg; ++i) {
+			const Vector3r P1 = A.pos + A.rot * g.segPoint1[i];
+			const Vector3r P2 = B.pos + B.rot * g.segPoint2[i];
+			const Vector3r C  = (P1 + P2) / 2;
+			g.segDisp[i]      = P2 - P1;
+			g.segPoint[i]     = C;
+			g.segVel[i]       = pointVelocity(state2, B.pos, C) - pointVelocity(state1, A.pos, C);
+		}
+		return true;
+	}
+	g.clearSamples();
+	if (rdem::overlapDepth<Real>(A, B) > 0) {
+		sampleInside(A, state1, B, state2, 0, g.samplesPerEdge, g);
+		sampleInside(B, state2, A, state1, 1, g.samplesPerEdge, g);
+	}
+	return true; // a real interaction stays; the law erases it when no sample is in contact
+}
+
+} // namespace yade

@@ -1,0 +1,45 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+#pragma once
+
+#include <core/Dispatching.hpp>
+#include <pkg/rdem/RdemBlock.hpp>
+#include <pkg/rdem/RdemGeom.hpp>
+
+namespace yade {
+
+/// Bonds face-adjacent blocks (on utils.createInteraction) and finds contacts between blocks that are not bonded.
+class Ig2_RdemBlock_RdemBlock_RdemGeom : public IGeomFunctor {
+public:
+	bool go(const shared_ptr<Shape>&       shape1,
+	        const shared_ptr<Shape>&       shape2,
+	        const State&                   state1,
+	        const State&                   state2,
+	        const Vector3r&                shift2,
+	        const bool&                    force,
+	        const shared_ptr<Interaction>& I) override;
+	/// Throws std::invalid_argument (Python: ValueError) for segmentsPerEdge < 1 or a negative bondGapTolerance.
+	void postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom&);
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS(Ig2_RdemBlock_RdemBlock_RdemGeom,IGeomFunctor,R"""(Geometry functor of two :yref:`RdemBlock`, producing :yref:`RdemGeom`.
+
+*Bonding.* Called through ``utils.createInteraction`` (``force=True``) on two blocks whose faces are parallel, aligned and within ``bondGapTolerance``, it cuts the shared rectangle into ``segmentsPerEdge``² segments and fixes their centres as material points of both blocks (paper §3.1, Fig. 2a). Blocks that share no face make ``createInteraction`` fail.
+
+*Contact.* For pairs found by the collider (not bonded), a separating-axis test first discards blocks that are apart or only touch; otherwise the trapezoid sample grid of each block's faces is tested against the other block (depth to the nearest face, normal of that face). Bonded pairs are never sampled: their broken segments are the paper's contact springs. A bond whose segments are all broken and whose blocks have slid apart is turned into a sampled contact by :yref:`Law2_RdemGeom_RdemPhys_FaceSprings`.
+
+Not for periodic cells with shear (``shift2`` of the cell is honoured, the cell's shear is not).)""",
+		((int,segmentsPerEdge,2,Attr::triggerPostLoad,"$n$: each bonded face is cut into $n\\times n$ segments (paper: 4 springs per face, $n=2$); also the density of the contact sample grid. $n\\ge 1$."))
+		((Real,bondGapTolerance,1e-6,Attr::triggerPostLoad,"Largest gap or overlap between two faces that are bonded, relative to the smaller half-extent of the two blocks."))
+	);
+	// clang-format on
+	FUNCTOR2D(RdemBlock, RdemBlock);
+	DEFINE_FUNCTOR_ORDER_2D(RdemBlock, RdemBlock);
+	DECLARE_LOGGER;
+};
+REGISTER_SERIALIZABLE(Ig2_RdemBlock_RdemBlock_RdemGeom);
+
+} // namespace yade

@@ -1,0 +1,146 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+#include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
+#include <core/Scene.hpp>
+#include <pkg/rdem/math/Failure.hpp>
+
+namespace yade {
+
+YADE_PLUGIN((Law2_RdemGeom_RdemPhys_FaceSprings));
+
+namespace {
+	/// Energies of one interaction in one step [J].
+	struct Energies {
+		Real elastic = 0, dashpot = 0, friction = 0, bondBreak = 0;
+	};
+
+	/* Contact spring and dashpot of one point (paper eqs. 13, 17). delta > 0 is the overlap [m], n the unit normal from
+	   body 1 to body 2, v the velocity of body 2 relative to body 1 at the point, shear the elastic shear elongation
+	   (updated here). Returns the force on body 2 [N]. */
+	Vector3r contactForce(
+	        const RdemPhys& p, Real area, Real delta, const Vector3r& n, const Vector3r& v, Real dt, Vector3r& shear, bool trackEnergy, Energies& e)
+	{
+		const Real     kn = p.kn * area, ks = p.ks * area, cn = p.cn * area, cs = p.cs * area;
+		const Real     vn     = v.dot(n);
+		const Vector3r vt     = v - vn * n;
+		const Real     fElast = kn * delta;                           // elastic normal force, compressive > 0
+		const Real     fN     = math::max(fElast - cn * vn, Real(0)); // with the dashpot, never tensile
+		shear -= shear.dot(n) * n;                                    // keep the spring in the current tangent plane
+		shear += vt * dt;
+		Vector3r   fS    = -ks * shear;
+		const Real limit = p.tanFriction * fElast; // eq. (17): |τ| ≤ -σ tanφ, σ = -k_n δ
+		bool       slip  = false;
+		if (fS.squaredNorm() > limit * limit) {
+			const Vector3r trial = fS;
+			fS *= (fS.norm() > 0 ? limit / fS.norm() : Real(0));
+			shear = -fS / ks;
+			slip  = true;
+			if (trackEnergy) e.friction += ((trial - fS) / ks).dot(fS); // plastic slip times the sliding force, >= 0
+		}
+		if (!slip) fS -= cs * vt;
+		if (trackEnergy) {
+			e.elastic += fElast * delta / 2 + fS.squaredNorm() / (2 * ks);
+			e.dashpot += ((fN - fElast) * -vn + (slip ? Real(0) : cs * vt.squaredNorm())) * dt;
+		}
+		return fN * n + fS;
+	}
+}
+
+bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
+{
+	RdemGeom&      g           = *static_cast<RdemGeom*>(ig.get());
+	RdemPhys&      p           = *static_cast<RdemPhys*>(ip.get());
+	const Body::id_t id1 = I->getId1(), id2 = I->getId2();
+	const State&   s1          = *Body::byId(id1, scene)->state;
+	const State&   s2          = *Body::byId(id2, scene)->state;
+	const Vector3r x1          = s1.pos;
+	const Vector3r x2          = scene->isPeriodic ? Vector3r(s2.pos + scene->cell->hSize * I->cellDist.cast<Real>()) : s2.pos;
+	const bool     trackEnergy = scene->trackEnergy;
+	const Real     dt          = scene->dt;
+	Energies       e;
+	Vector3r       f2 = Vector3r::Zero(), t1 = Vector3r::Zero(), t2 = Vector3r::Zero();
+	auto           apply = [&](const Vector3r& F, const Vector3r& C) {
+                f2 += F;
+                t2 += (C - x2).cross(F);
+                t1 -= (C - x1).cross(F);
+	};
+
+	const size_t nSeg = g.nSegments();
+	if (nSeg > 0) {
+		bool       anyIntactOrTouching = false;
+		const Real maxSlide            = g.segHalfSizes.minCoeff();
+		for (size_t i = 0; i < nSeg; ++i) {
+			const Real     A  = g.segArea[i];
+			const Vector3r n  = g.normal;
+			const Real     un = g.segDisp[i].dot(n); // eq. (14): opening positive
+			const Vector3r us = g.segDisp[i] - un * n;
+			if (p.segState[i] == int(rdem::SegmentState::Intact)) {
+				const Real     sigma = p.kn * un;
+				const Vector3r tau   = p.ks * us;
+				const auto     state = rdem::restoringSpringState(sigma, Real(tau.norm()), p.tensileStrength, p.cohesion, p.tanFriction);
+				const Real     energy = A * (sigma * sigma / p.kn + tau.squaredNorm() / p.ks) / 2;
+				if (state == rdem::SegmentState::Intact) {
+					apply(-(sigma * n + tau) * A, g.segPoint[i]);
+					p.segSigma[i]       = sigma;
+					p.segTau[i]         = tau.norm();
+					anyIntactOrTouching = true;
+					e.elastic += energy;
+					continue;
+				}
+				p.segState[i] = int(state);
+				if (state == rdem::SegmentState::BrokenTension) tensionBreaks += 1;
+				else
+					shearBreaks += 1;
+				e.bondBreak += energy;
+				p.segShear[i] = Vector3r::Zero();
+			}
+			// Broken: the contact spring of this segment (eqs. 13, 17), while the material points overlap and face each other.
+			if (un < 0 && us.norm() < maxSlide) {
+				const Vector3r F = contactForce(p, A, -un, n, g.segVel[i], dt, p.segShear[i], trackEnergy, e);
+				apply(F, g.segPoint[i]);
+				p.segSigma[i]       = -F.dot(n) / A;
+				p.segTau[i]         = (F - F.dot(n) * n).norm() / A;
+				anyIntactOrTouching = true;
+			} else {
+				p.segShear[i] = Vector3r::Zero();
+				p.segSigma[i] = p.segTau[i] = 0;
+			}
+		}
+		if (!anyIntactOrTouching) {
+			// Fully broken and apart: release the bond (the interaction is reset); the collider and contact sampling take over.
+			return false;
+		}
+	} else {
+		if (g.sampleKey.empty()) return false; // apart: the collider drops the pair once the bounding boxes separate
+		const size_t nKeys = size_t(2 * 6 * (g.samplesPerEdge + 1) * (g.samplesPerEdge + 1));
+		p.sampleShear.resize(nKeys, Vector3r::Zero());
+		std::vector<char> active(nKeys, 0);
+		for (size_t k = 0; k < g.sampleKey.size(); ++k) {
+			const size_t key = size_t(g.sampleKey[k]);
+			active[key]      = 1;
+			apply(contactForce(p, g.sampleArea[k], g.sampleDepth[k], g.sampleNormal[k], g.sampleVel[k], dt, p.sampleShear[key], trackEnergy, e),
+			      g.samplePoint[k]);
+		}
+		for (size_t key = 0; key < nKeys; ++key)
+			if (!active[key]) p.sampleShear[key] = Vector3r::Zero();
+	}
+
+	p.force = f2;
+	scene->forces.addForce(id2, f2);
+	scene->forces.addForce(id1, -f2);
+	scene->forces.addTorque(id2, t2);
+	scene->forces.addTorque(id1, t1);
+	if (trackEnergy) {
+		scene->energy->add(e.elastic, "rdemElastic", elasticIx, /*reset every step*/ true);
+		scene->energy->add(e.dashpot, "rdemDashpot", dashpotIx, false);
+		scene->energy->add(e.friction, "rdemFriction", frictionIx, false);
+		scene->energy->add(e.bondBreak, "rdemBondBreak", bondBreakIx, false);
+	}
+	return true;
+}
+
+} // namespace yade

@@ -1,0 +1,40 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+#pragma once
+
+#include <lib/base/openmp-accu.hpp>
+#include <core/Dispatching.hpp>
+#include <pkg/rdem/RdemGeom.hpp>
+#include <pkg/rdem/RdemPhys.hpp>
+
+namespace yade {
+
+/// Restoring springs, their failure, and contact springs with dashpots and friction (paper §3.5-3.6, eqs. 13-17).
+class Law2_RdemGeom_RdemPhys_FaceSprings : public LawFunctor {
+public:
+	bool go(shared_ptr<IGeom>& geom, shared_ptr<IPhys>& phys, Interaction* I) override;
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS(Law2_RdemGeom_RdemPhys_FaceSprings,LawFunctor,R"""(Constitutive law of the refined distinct element method (paper §3, eqs. 13-17).
+
+*Restoring springs* (intact segments of a bond): stresses $\sigma=\bar{k}_n u_n$ (positive in tension) and $\boldsymbol{\tau}=\bar{k}_s\mathbf{u}_s$ from the total relative displacement of the segment's material points (eq. 14); force on body 2 $-(\sigma\mathbf{n}+\boldsymbol{\tau})A$, applied at the segment point, so that bending and twisting moments emerge from the segment grid. A spring breaks when $\sigma>f_t$ (eq. 15) or $|\tau|+\sigma\tan\phi>c$ (eq. 16), tension checked first; its elastic energy is released (``rdemBondBreak`` in :yref:`O.energy<Scene.energy>`).
+
+*Contact springs* (broken segments, and sampled contacts of blocks that are not bonded): compression only, normal force $\max(\bar{k}_n A\delta - c_nA\dot{u}_n,0)$ with $\delta$ the overlap; incremental shear spring $\bar{k}_s A$ limited by Coulomb friction $|F_s|\le\tan\phi\,\bar{k}_nA\delta$ (eq. 17); shear dashpot $c_sA$ while sticking (eq. 13). A broken segment is in contact while its material points overlap and have slid less than the smaller of :yref:`RdemGeom::segHalfSizes`. When every segment of a bond is broken and none is in contact, the interaction is released and later contacts are found by sampling (:yref:`Ig2_RdemBlock_RdemBlock_RdemGeom`).
+
+With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemElastic`` (springs, current value), ``rdemDashpot``, ``rdemFriction`` and ``rdemBondBreak`` (cumulated).)""",
+		((OpenMPAccumulator<int>,tensionBreaks,,Attr::readonly,"Number of restoring springs broken in tension (eq. 15) so far."))
+		((OpenMPAccumulator<int>,shearBreaks,,Attr::readonly,"Number of restoring springs broken in shear (eq. 16) so far."))
+		((int,elasticIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
+		((int,dashpotIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
+		((int,frictionIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
+		((int,bondBreakIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
+	);
+	// clang-format on
+	FUNCTOR2D(RdemGeom, RdemPhys);
+};
+REGISTER_SERIALIZABLE(Law2_RdemGeom_RdemPhys_FaceSprings);
+
+} // namespace yade

@@ -1,0 +1,23 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+#include <pkg/rdem/RdemGeom.hpp>
+
+namespace yade {
+
+YADE_PLUGIN((RdemGeom));
+
+void RdemGeom::clearSamples()
+{
+	sampleKey.clear();
+	samplePoint.clear();
+	sampleNormal.clear();
+	sampleVel.clear();
+	sampleDepth.clear();
+	sampleArea.clear();
+}
+
+} // namespace yade

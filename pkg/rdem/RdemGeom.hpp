@@ -1,0 +1,55 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+#pragma once
+
+#include <core/IGeom.hpp>
+
+namespace yade {
+
+/* Geometry of a pair of blocks: the bonded segments of their shared face (fixed material points in both body frames)
+   and, each step, the contact sample points of one block that lie inside the other. */
+class RdemGeom : public IGeom {
+public:
+	/// Number of bonded segments (0 for a pure contact).
+	size_t nSegments() const { return segArea.size(); }
+	/// Clear the per-step list of contact samples.
+	void clearSamples();
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR(RdemGeom,IGeom,R"""(Geometry of a pair of :yref:`RdemBlock` (built by :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom`).
+
+*Bonded segments.* When the pair is bonded (created with ``utils.createInteraction`` on face-adjacent blocks), the shared face is cut into $n\times n$ segments (paper §3.1, Fig. 2a). The centre of each is stored as a material point of both blocks (``segPoint1``, ``segPoint2`` in body frames). Each step the relative displacement $\mathbf{d}=\mathbf{P}_2-\mathbf{P}_1$ of the two material points is split along the current face normal $\mathbf{n}$ (from body 1 to body 2): $u_n=\mathbf{d}\cdot\mathbf{n}$ (positive = opening, the paper's tension-positive convention of eq. 14) and $\mathbf{u}_s=\mathbf{d}-u_n\mathbf{n}$. Rigid motions of the pair give $\mathbf{d}=0$ exactly, at any rotation.
+
+*Sampled contacts.* Blocks that are not bonded interact where sample points of one block's faces (an $(n+1)\times(n+1)$ trapezoid grid per face, corners and edges included) lie inside the other block: depth to the nearest face of the other block, normal of that face; see doc/theory.md.)""",
+		((int,samplesPerEdge,2,,"$n$: segments per face edge of the bond, and sample-grid density of contacts."))
+		((Real,ell1,0,,"Distance from the centroid of body 1 to the bonded (or first contacted) face, $\\ell_A$ of eq. 12 [m]."))
+		((Real,ell2,0,,"Distance from the centroid of body 2 to its face, $\\ell_B$ of eq. 12 [m]."))
+		((Vector3r,segNormal1,Vector3r::Zero(),,"Outward unit normal of body 1's bonded face, in body-1 frame."))
+		((Vector3r,segNormal2,Vector3r::Zero(),,"Outward unit normal of body 2's bonded face, in body-2 frame."))
+		((Vector3r,segTangent1,Vector3r::Zero(),,"First in-plane axis of the bonded face (body-1 frame); the second is ``segNormal1`` × ``segTangent1``."))
+		((Vector2r,segHalfSizes,Vector2r::Zero(),,"Half-sizes of a segment along the two in-plane axes [m]; a broken segment is in contact only while its material points have slid less than the smaller one."))
+		((vector<Vector3r>,segPoint1,,,"Segment centres (material points) in body-1 frame [m]."))
+		((vector<Vector3r>,segPoint2,,,"The same points in body-2 frame [m]."))
+		((vector<Real>,segArea,,,"Segment areas [m²]."))
+		((Vector3r,normal,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"Current unit normal of the bonded face, from body 1 to body 2 (global)."))
+		((vector<Vector3r>,segDisp,,(Attr::noSave|Attr::readonly),"Relative displacement $\\mathbf{P}_2-\\mathbf{P}_1$ of each segment's material points (global) [m]."))
+		((vector<Vector3r>,segVel,,(Attr::noSave|Attr::readonly),"Relative velocity of body 2 with respect to body 1 at each segment (global) [m/s]."))
+		((vector<Vector3r>,segPoint,,(Attr::noSave|Attr::readonly),"Current segment points, mid-way between the two material points (global) [m]."))
+		((vector<int>,sampleKey,,(Attr::noSave|Attr::readonly),"Per active contact sample: which sample it is (a stable index, for the shear history)."))
+		((vector<Vector3r>,samplePoint,,(Attr::noSave|Attr::readonly),"Per active contact sample: contact point (global) [m]."))
+		((vector<Vector3r>,sampleNormal,,(Attr::noSave|Attr::readonly),"Per active contact sample: unit normal from body 1 to body 2 (global)."))
+		((vector<Vector3r>,sampleVel,,(Attr::noSave|Attr::readonly),"Per active contact sample: velocity of body 2 relative to body 1 at the point [m/s]."))
+		((vector<Real>,sampleDepth,,(Attr::noSave|Attr::readonly),"Per active contact sample: penetration depth (>0) [m]."))
+		((vector<Real>,sampleArea,,(Attr::noSave|Attr::readonly),"Per active contact sample: tributary area, trapezoid weight times the cosine between the sampled face and the contact normal, halved because both blocks are sampled [m²]."))
+		,
+		/* ctor */ createIndex();
+	);
+	// clang-format on
+	REGISTER_CLASS_INDEX(RdemGeom, IGeom);
+};
+REGISTER_SERIALIZABLE(RdemGeom);
+
+} // namespace yade

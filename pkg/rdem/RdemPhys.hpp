@@ -1,0 +1,45 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+#pragma once
+
+#include <core/IPhys.hpp>
+
+namespace yade {
+
+/// Springs, dashpots, strengths and per-segment state of a pair of blocks (paper §3.2-3.6).
+class RdemPhys : public IPhys {
+public:
+	/// Number of segments whose restoring spring is intact.
+	int nIntact() const;
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemPhys,IPhys,R"""(Physics of a pair of :yref:`RdemBlock` (made by :yref:`Ip2_RdemMat_RdemMat_RdemPhys`, used by :yref:`Law2_RdemGeom_RdemPhys_FaceSprings`).
+
+Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact sample of area $A$ has spring $kA$ and dashpot $cA$. Per-segment state lives in ``segState`` (0 intact, 1 broken in tension, 2 broken in shear) and ``segShear`` (elastic shear elongation of the contact spring of a broken segment). Stresses are positive in tension (paper eq. 14).)""",
+		((Real,kn,0,,"$\\bar{k}_n$, normal spring stiffness per area, eq. 12 [N/m³]."))
+		((Real,ks,0,,"$\\bar{k}_s$, shear spring stiffness per area, eq. 12 [N/m³]."))
+		((Real,cn,0,,"$c_n=2h_n\\sqrt{m_{ave}\\bar{k}_n}$, normal contact dashpot per area, eq. 13 [N·s/m³]."))
+		((Real,cs,0,,"$c_s=2h_s\\sqrt{m_{ave}\\bar{k}_s}$, shear contact dashpot per area, eq. 13 [N·s/m³]."))
+		((Real,tensileStrength,0,,"$f_t$ of the joint [Pa]."))
+		((Real,cohesion,0,,"$c$ of the joint [Pa]."))
+		((Real,tanFriction,0,,"$\\tan\\phi$ of the joint."))
+		((vector<int>,segState,,,"Per bonded segment: 0 intact, 1 broken in tension (eq. 15), 2 broken in shear (eq. 16)."))
+		((vector<Vector3r>,segShear,,,"Per bonded segment: elastic shear elongation of the contact spring after breakage (global) [m]."))
+		((vector<Real>,segSigma,,,"Per bonded segment: normal stress of the last step, positive in tension [Pa]."))
+		((vector<Real>,segTau,,,"Per bonded segment: magnitude of the shear stress of the last step [Pa]."))
+		((vector<Vector3r>,sampleShear,,,"Per contact sample key: elastic shear elongation of its contact spring (global) [m]."))
+		((Vector3r,force,Vector3r::Zero(),,"Total force exerted by body 1 on body 2 in the last step (global) [N]."))
+		,
+		/* ctor */ createIndex();
+		,
+		.def("nIntact",&RdemPhys::nIntact,"Number of segments whose restoring spring is intact.")
+	);
+	// clang-format on
+	REGISTER_CLASS_INDEX(RdemPhys, IPhys);
+};
+REGISTER_SERIALIZABLE(RdemPhys);
+
+} // namespace yade

@@ -1,0 +1,243 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+#include <pkg/rdem/RdemPoissonEngine.hpp>
+#include <core/Omega.hpp>
+#include <core/Scene.hpp>
+#include <pkg/rdem/RdemBlock.hpp>
+#include <pkg/rdem/RdemGeom.hpp>
+#include <pkg/rdem/RdemMat.hpp>
+#include <pkg/rdem/RdemPhys.hpp>
+#include <pkg/rdem/math/Elasticity.hpp>
+#include <algorithm>
+#include <array>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace yade {
+
+YADE_PLUGIN((RdemPoissonEngine));
+CREATE_LOGGER(RdemPoissonEngine);
+
+namespace {
+	/// The 12 edges of the hexahedron: node pairs that differ in one of the bits i, j, k (node a = i + 2j + 4k).
+	constexpr int hexEdges[12][2] = { { 0, 1 }, { 2, 3 }, { 4, 5 }, { 6, 7 }, { 0, 2 }, { 1, 3 }, { 4, 6 }, { 5, 7 }, { 0, 4 }, { 1, 5 }, { 2, 6 }, { 3, 7 } };
+	constexpr Real sameSideCos    = 0.99; // two bond normals within ~8° point to the same side of a block
+
+	using Neighbours = std::map<Body::id_t, vector<std::pair<Body::id_t, Vector3r>>>; // per block: bonded block, unit direction
+
+	Body::id_t next(const Neighbours& nbr, Body::id_t b, const Vector3r& dir)
+	{
+		if (b < 0) return -1;
+		const auto it = nbr.find(b);
+		if (it == nbr.end()) return -1;
+		for (const auto& nd : it->second)
+			if (nd.second.dot(dir) > sameSideCos) return nd.first;
+		return -1;
+	}
+}
+
+void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
+{
+	scene = Omega::instance().getScene().get();
+	std::set<Body::id_t> ids(idsIn.begin(), idsIn.end());
+	if (ids.empty())
+		for (const auto& b : *scene->bodies)
+			if (b && dynamic_cast<RdemBlock*>(b->shape.get())) ids.insert(b->id);
+	for (Body::id_t id : ids) {
+		const shared_ptr<Body>& b = Body::byId(id, scene);
+		if (!b || !dynamic_cast<RdemBlock*>(b->shape.get()))
+			throw std::invalid_argument("RdemPoissonEngine.build: body " + std::to_string(id) + " is not an RdemBlock");
+		if (!dynamic_cast<RdemMat*>(b->material.get()))
+			throw std::invalid_argument("RdemPoissonEngine.build: body " + std::to_string(id) + " has no RdemMat material");
+	}
+
+	// Bonded neighbours of every block, with the bond's unit normal (global) pointing to the neighbour.
+	Neighbours nbr;
+	for (const auto& I : *scene->interactions) {
+		if (!I->isReal()) continue;
+		const auto* g = dynamic_cast<RdemGeom*>(I->geom.get());
+		if (!g || g->nSegments() == 0 || !ids.count(I->getId1()) || !ids.count(I->getId2())) continue;
+		const Vector3r n = Body::byId(I->getId1(), scene)->state->ori * g->segNormal1;
+		nbr[I->getId1()].push_back({ I->getId2(), n });
+		nbr[I->getId2()].push_back({ I->getId1(), -n });
+	}
+	for (const auto& bn : nbr)
+		for (size_t i = 0; i < bn.second.size(); ++i)
+			for (size_t j = i + 1; j < bn.second.size(); ++j)
+				if (bn.second[i].second.dot(bn.second[j].second) > sameSideCos) {
+					std::ostringstream msg;
+					msg << "RdemPoissonEngine.build: block " << bn.first << " has two bonded neighbours on one side (blocks " << bn.second[i].first
+					    << " and " << bn.second[j].first
+					    << "); Poisson elements need blocks on a grid of 2x2x2 groups (one neighbour per face), e.g. not running-bond masonry";
+					throw std::invalid_argument(msg.str());
+				}
+
+	nodes.clear();
+	refPos.clear();
+	lambda.clear();
+	std::set<std::array<Body::id_t, 8>> seen;
+	int                                 incomplete = 0;
+	for (Body::id_t b : ids) {
+		const Matrix3r R = Body::byId(b, scene)->state->ori.toRotationMatrix();
+		const Vector3r ex = R.col(0), ey = R.col(1), ez = R.col(2);
+		std::array<Body::id_t, 8> n;
+		n[0] = b;
+		n[1] = next(nbr, b, ex);
+		n[2] = next(nbr, b, ey);
+		n[4] = next(nbr, b, ez);
+		if (n[1] < 0 || n[2] < 0 || n[4] < 0) continue; // b is not the (-,-,-) corner of a group
+		n[3] = next(nbr, n[1], ey);
+		n[5] = next(nbr, n[1], ez);
+		n[6] = next(nbr, n[2], ez);
+		n[7] = next(nbr, n[3], ez);
+		// Every one of the 12 edges must be a bond between the nodes found above.
+		bool complete = true;
+		for (const auto& e : hexEdges) {
+			const Body::id_t a = n[size_t(e[0])], c = n[size_t(e[1])];
+			const int        bit = e[0] ^ e[1];
+			const Vector3r   dir = bit == 1 ? ex : (bit == 2 ? ey : ez);
+			if (a < 0 || c < 0) {
+				complete = false;
+				continue;
+			}
+			const Body::id_t found = next(nbr, a, dir);
+			if (found < 0) complete = false;
+			else if (found != c) {
+				std::ostringstream msg;
+				msg << "RdemPoissonEngine.build: blocks around block " << b << " do not close into a 2x2x2 group (block " << a << " is bonded to "
+				    << found << " where the grid expects " << c << ")";
+				throw std::invalid_argument(msg.str());
+			}
+		}
+		if (!complete) {
+			++incomplete;
+			continue;
+		}
+		std::array<Body::id_t, 8> key = n;
+		std::sort(key.begin(), key.end());
+		if (!seen.insert(key).second) continue;
+		rdem::Nodes8<Real> X;
+		Real               lam = 0;
+		for (size_t a = 0; a < 8; ++a) {
+			const Body& body = *Body::byId(n[a], scene);
+			X[a]             = body.state->pos;
+			const auto& m    = *static_cast<RdemMat*>(body.material.get());
+			lam += rdem::lameLambda(m.young, m.poisson) / 8;
+		}
+		if (!rdem::hex8IsValid<Real>(X)) {
+			std::ostringstream msg;
+			msg << "RdemPoissonEngine.build: the centroids of blocks " << n[0] << "," << n[1] << ",...," << n[7] << " form an inverted or flat hexahedron";
+			throw std::invalid_argument(msg.str());
+		}
+		for (size_t a = 0; a < 8; ++a) {
+			nodes.push_back(n[a]);
+			refPos.push_back(X[a]);
+		}
+		lambda.push_back(lam);
+	}
+	if (nodes.empty())
+		throw std::invalid_argument(
+		        "RdemPoissonEngine.build: no 2x2x2 group of bonded blocks among the " + std::to_string(ids.size())
+		        + " blocks given (bond them first, e.g. with rdem.bondAll)");
+	LOG_INFO(nElements() << " Poisson elements on " << ids.size() << " blocks (" << incomplete << " groups skipped: a bond missing)");
+	prepare();
+}
+
+void RdemPoissonEngine::postLoad(RdemPoissonEngine&)
+{
+	stiffness.clear();
+	bonds.clear();
+}
+
+void RdemPoissonEngine::prepare()
+{
+	const size_t nEl = size_t(nElements());
+	stiffness.resize(nEl);
+	bonds.assign(12 * nEl, shared_ptr<Interaction>());
+	for (size_t e = 0; e < nEl; ++e) {
+		rdem::Nodes8<Real> X;
+		for (size_t a = 0; a < 8; ++a)
+			X[a] = refPos[8 * e + a];
+		stiffness[e] = rdem::hex8Stiffness<Real>(X, rdem::poissonTensorFromLambda<Real>(lambda[e]));
+		for (size_t k = 0; k < 12; ++k)
+			bonds[12 * e + k] = scene->interactions->find(nodes[8 * e + size_t(hexEdges[k][0])], nodes[8 * e + size_t(hexEdges[k][1])]);
+	}
+}
+
+vector<Real> RdemPoissonEngine::elementScales()
+{
+	scene = Omega::instance().getScene().get();
+	if (stiffness.size() != size_t(nElements())) prepare();
+	vector<Real> s(size_t(nElements()), 1);
+	if (!releaseOnCrack) return s;
+	for (size_t e = 0; e < s.size(); ++e)
+		for (size_t k = 0; k < 12; ++k) {
+			const auto& I = bonds[12 * e + k];
+			if (!I || !I->isReal()) {
+				s[e] = 0;
+				break;
+			}
+			const auto* p = static_cast<RdemPhys*>(I->phys.get());
+			s[e]          = math::min(s[e], Real(p->nIntact()) / Real(p->segState.size()));
+		}
+	return s;
+}
+
+void RdemPoissonEngine::action()
+{
+	if (stiffness.size() != size_t(nElements())) prepare();
+	const vector<Real> scale = elementScales();
+	const long         nEl   = long(nElements());
+#ifdef YADE_OPENMP
+#pragma omp parallel for schedule(static)
+#endif
+	for (long e = 0; e < nEl; ++e) {
+		const Real s = scale[size_t(e)];
+		if (s <= 0) continue;
+		rdem::Nodes8<Real> X, x;
+		for (size_t a = 0; a < 8; ++a) {
+			X[a] = refPos[8 * size_t(e) + a];
+			x[a] = Body::byId(nodes[8 * size_t(e) + a], scene)->state->pos;
+		}
+		rdem::Vec24<Real> F;
+		if (corotational) {
+			const Matrix3r R = rdem::hex8Rotation<Real>(X, x);
+			F                = -s * (stiffness[size_t(e)] * rdem::hex8Displacement<Real>(X, x, &R));
+			for (int a = 0; a < 8; ++a)
+				F.segment<3>(3 * a) = R * F.segment<3>(3 * a).eval();
+		} else {
+			F = -s * (stiffness[size_t(e)] * rdem::hex8Displacement<Real>(X, x, nullptr));
+		}
+		for (size_t a = 0; a < 8; ++a)
+			scene->forces.addForce(nodes[8 * size_t(e) + a], F.segment<3>(3 * long(a)));
+	}
+}
+
+vector<Real> RdemPoissonEngine::stiffnessBound() const
+{
+	const Scene* sc = Omega::instance().getScene().get();
+	vector<Real> bound(sc->bodies->size(), 0);
+	for (size_t e = 0; e < size_t(nElements()); ++e) {
+		rdem::Nodes8<Real> X;
+		for (size_t a = 0; a < 8; ++a)
+			X[a] = refPos[8 * e + a];
+		const rdem::Mat24<Real> K = stiffness.size() == size_t(nElements())
+		        ? stiffness[e]
+		        : rdem::hex8Stiffness<Real>(X, rdem::poissonTensorFromLambda<Real>(lambda[e]));
+		for (size_t a = 0; a < 8; ++a) {
+			Real rowMax = 0;
+			for (int d = 0; d < 3; ++d)
+				rowMax = math::max(rowMax, Real(K.row(3 * long(a) + d).cwiseAbs().sum()));
+			bound[size_t(nodes[8 * e + a])] += rowMax;
+		}
+	}
+	return bound;
+}
+
+} // namespace yade

@@ -1,0 +1,63 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+#pragma once
+
+#include <core/GlobalEngine.hpp>
+#include <core/Interaction.hpp>
+#include <pkg/rdem/math/Hex8.hpp>
+
+namespace yade {
+
+/// The Poisson effect: virtual 8-node hexahedra on the centroids of 2×2×2 bonded blocks (paper §4.2, eqs. 18-21).
+class RdemPoissonEngine : public GlobalEngine {
+public:
+	void action() override;
+	/// Find every 2×2×2 group of bonded blocks among ids (all RdemBlock bodies if empty) and make one element each;
+	/// the current positions become the reference. Throws std::invalid_argument for block sets that are not grids.
+	void build(const vector<Body::id_t>& ids);
+	/// Upper bound of the Poisson stiffness per body: max over its 3 rows of Σ|K_p| of every element it is a node of [N/m].
+	vector<Real> stiffnessBound() const;
+	/// Number of elements.
+	int nElements() const { return int(nodes.size() / 8); }
+	/// Current scale factor of each element (1 intact, 0 released by a crack).
+	vector<Real> elementScales();
+	void         postLoad(RdemPoissonEngine&);
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemPoissonEngine,GlobalEngine,R"""(Adds the Poisson effect to the refined DEM (paper §4.2, eqs. 18-21).
+
+One virtual 8-node hexahedral finite element is made for every $2\times2\times2$ group of face-bonded blocks; its nodes are the 8 block centroids (call ``build()`` once the bonds exist; a $10\times10\times12$ grid gives $9\times9\times11=891$ elements). Every step each element adds to its 8 blocks the nodal forces $\mathbf{F}=-K_p\,\Delta\mathbf{u}$, $K_p=\int B^T D_p B\,dV$ (trilinear shape functions, $2\times2\times2$ Gauss), $D_p$ the off-diagonal part of the isotropic elasticity tensor (eq. 19) and $\Delta\mathbf{u}$ the centroid displacements from the reference positions. Shortening along $z$ pushes the blocks outward in $x$ and $y$.
+
+*Materials:* an element uses the mean Lamé constant $\lambda$ of its 8 blocks' :yref:`RdemMat`.
+
+*Corotational* (``corotational=True``): the element's rigid rotation (polar decomposition of the deformation gradient at its centre) is removed before $K_p$ and the forces are rotated back, so rigidly rotating groups of blocks stay force-free (needed when blocks rotate by more than a few degrees, e.g. masonry collapse). Off by default, as in the paper.
+
+*Cracks:* an element's forces are scaled by the smallest fraction of intact restoring springs over the 12 bonds between its blocks, so an element bridging an open crack stops pushing its sides apart (a fully broken bond releases it for good).
+
+*Topology:* ``build`` refuses blocks with two bonded neighbours on one side (e.g. running-bond masonry), groups that close inconsistently and block sets with no group at all; blocks at edges and surfaces belong to fewer elements or none.)""",
+		((vector<int>,nodes,,Attr::readonly,"Body ids of the element nodes, 8 per element, node $a=i+2j+4k$ at the block $(i,j,k)\\in\\{0,1\\}^3$ of the group."))
+		((vector<Vector3r>,refPos,,Attr::readonly,"Reference positions of the nodes (8 per element) [m]."))
+		((vector<Real>,lambda,,Attr::readonly,"Lamé constant $\\lambda$ of each element (mean of its blocks) [Pa]."))
+		((bool,corotational,false,,"Remove each element's rigid rotation before $K_p$ (see above)."))
+		((bool,releaseOnCrack,true,,"Scale element forces by the intact fraction of their bonds (see above)."))
+		,
+		/* ctor */,
+		.def("build",&RdemPoissonEngine::build,(py::arg("ids")=vector<Body::id_t>()),"Make the elements from the bonded blocks ``ids`` (default: all blocks); current positions become the reference.")
+		.def("stiffnessBound",&RdemPoissonEngine::stiffnessBound,"Per body, an upper bound of the Poisson stiffness it feels [N/m] (used by :yref:`RdemTimeStepper`).")
+		.def("elementScales",&RdemPoissonEngine::elementScales,"Per element, the current force scale (1 intact, 0 released by a crack).")
+		.add_property("nElements",&RdemPoissonEngine::nElements,"Number of elements.")
+	);
+	// clang-format on
+	DECLARE_LOGGER;
+
+private:
+	vector<rdem::Mat24<Real>>       stiffness; // K_p of each element, rebuilt from refPos and lambda (not saved)
+	vector<shared_ptr<Interaction>> bonds;     // the 12 bonds of each element, looked up once (not saved)
+	void                            prepare();
+};
+REGISTER_SERIALIZABLE(RdemPoissonEngine);
+
+} // namespace yade

@@ -1,0 +1,148 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+/* Unit tests of pkg/rdem/math/SegmentGrid.hpp: the n×n segment centres of a face (paper §3.1, Fig. 2a) and the
+   (n+1)×(n+1) trapezoid-rule sample points. Faces are tilted in space so that mixing up t1/t2 or h1/h2 shows. */
+#include <pkg/rdem/math/SegmentGrid.hpp>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+namespace {
+
+namespace rdem = yade::rdem;
+using V3 = Eigen::Vector3d;
+
+// A tilted face: centre c, orthonormal in-plane axes t1, t2 (columns of a rotation), half-sizes 0.3 × 0.2 m.
+struct Face {
+	V3     c, t1, t2;
+	double h1, h2;
+};
+
+Face tiltedFace()
+{
+	const Eigen::Matrix3d Q = Eigen::AngleAxisd(0.7, V3(1, -2, 0.5).normalized()).toRotationMatrix();
+	return { V3(1.5, -0.25, 2.0), Q.col(0), Q.col(1), 0.3, 0.2 };
+}
+
+// Sizes: face area 4·0.3·0.2 = 0.24 m², coordinates O(1) m. Round-off of sums of at most 16 terms: 1e-14 relative.
+constexpr double tol = 1e-14;
+
+TEST(SegmentGrid, CentresTileTheFace)
+{
+	const Face f = tiltedFace();
+	for (int n = 1; n <= 3; ++n) {
+		const auto pts = rdem::segmentCentres<double>(f.c, f.t1, f.t2, f.h1, f.h2, n);
+		ASSERT_EQ(pts.size(), size_t(n * n));
+		double area = 0;
+		V3     centroid = V3::Zero();
+		for (const auto& p : pts) {
+			// every segment has the same area 0.24/n²; a single division: 1e-15 relative
+			EXPECT_NEAR(p.weight, 0.24 / (n * n), 1e-15 * 0.24);
+			area += p.weight;
+			centroid += p.weight * p.pos;
+			// lies in the face plane (normal t1×t2), within the rectangle
+			const V3 d = p.pos - f.c;
+			EXPECT_NEAR(d.dot(f.t1.cross(f.t2)), 0, tol);
+			EXPECT_LT(std::abs(d.dot(f.t1)), f.h1);
+			EXPECT_LT(std::abs(d.dot(f.t2)), f.h2);
+		}
+		EXPECT_NEAR(area, 0.24, tol * 0.24) << "n = " << n;
+		centroid /= area;
+		EXPECT_NEAR((centroid - f.c).norm(), 0, tol * f.c.norm()) << "n = " << n;
+	}
+}
+
+TEST(SegmentGrid, CentresForNEquals2ByHand)
+{
+	// Axis-aligned face at c = (1,2,3), t1 = x, t2 = y, h1 = 0.4, h2 = 0.1: segments of 0.4 × 0.1, centres at
+	// c ± 0.2 x ± 0.05 y, in the order (i over t1, j over t2): (-,-), (-,+), (+,-), (+,+); areas 0.04.
+	const auto pts = rdem::segmentCentres<double>(V3(1, 2, 3), V3::UnitX(), V3::UnitY(), 0.4, 0.1, 2);
+	ASSERT_EQ(pts.size(), 4u);
+	const V3 expected[4] = { V3(0.8, 1.95, 3), V3(0.8, 2.05, 3), V3(1.2, 1.95, 3), V3(1.2, 2.05, 3) };
+	for (int k = 0; k < 4; ++k) {
+		// coordinates O(1) after 3 roundings: 1e-15 absolute [m]
+		EXPECT_NEAR((pts[k].pos - expected[k]).norm(), 0, 1e-15 * 4) << "point " << k;
+		EXPECT_NEAR(pts[k].weight, 0.04, 1e-15 * 0.04);
+	}
+	// n = 1: the single centre is the face centre, weight the whole area 4·0.4·0.1 = 0.16.
+	const auto one = rdem::segmentCentres<double>(V3(1, 2, 3), V3::UnitX(), V3::UnitY(), 0.4, 0.1, 1);
+	ASSERT_EQ(one.size(), 1u);
+	EXPECT_EQ(one[0].pos, V3(1, 2, 3)); // s = r = 0 exactly
+	EXPECT_NEAR(one[0].weight, 0.16, 1e-15 * 0.16);
+}
+
+TEST(SegmentGrid, SamplePointsTrapezoidWeights)
+{
+	const Face f = tiltedFace();
+	for (int n = 1; n <= 4; ++n) {
+		const auto pts = rdem::faceSamplePoints<double>(f.c, f.t1, f.t2, f.h1, f.h2, n);
+		ASSERT_EQ(pts.size(), size_t((n + 1) * (n + 1)));
+		const double segment = 0.24 / (n * n);
+		double       sum     = 0;
+		for (const auto& p : pts) {
+			const V3     d = p.pos - f.c;
+			const double s = d.dot(f.t1) / f.h1, r = d.dot(f.t2) / f.h2; // in [-1, 1]
+			const bool   edgeS = std::abs(std::abs(s) - 1) < 1e-12, edgeR = std::abs(std::abs(r) - 1) < 1e-12;
+			// corner ¼, edge ½, interior 1 segment area; one product: 1e-15 relative
+			const double factor = edgeS && edgeR ? 0.25 : (edgeS || edgeR ? 0.5 : 1.0);
+			EXPECT_NEAR(p.weight, factor * segment, 1e-15 * segment) << "n = " << n << " s = " << s << " r = " << r;
+			EXPECT_LE(std::abs(s), 1 + 1e-12);
+			EXPECT_LE(std::abs(r), 1 + 1e-12);
+			sum += p.weight;
+		}
+		EXPECT_NEAR(sum, 0.24, tol * 0.24) << "n = " << n;
+	}
+	// n = 2 on an axis-aligned face of 2 × 2: weights 0.25 (corners), 0.5 (edge midpoints), 1 (centre), sum 4.
+	const auto pts = rdem::faceSamplePoints<double>(V3::Zero(), V3::UnitX(), V3::UnitY(), 1.0, 1.0, 2);
+	ASSERT_EQ(pts.size(), 9u);
+	const double expected[9] = { 0.25, 0.5, 0.25, 0.5, 1.0, 0.5, 0.25, 0.5, 0.25 };
+	for (int k = 0; k < 9; ++k)
+		EXPECT_EQ(pts[k].weight, expected[k]) << "point " << k; // products of 1, 0.5: exact
+	EXPECT_EQ(pts[0].pos, V3(-1, -1, 0));
+	EXPECT_EQ(pts[4].pos, V3(0, 0, 0));
+	EXPECT_EQ(pts[8].pos, V3(1, 1, 0));
+}
+
+TEST(SegmentGrid, TrapezoidRuleIntegratesLinearAndBilinearExactly)
+{
+	const Face f = tiltedFace();
+	// f(x) = a + g·x is linear in space, hence linear in (s, r) on the face: ∫ f dA = area · f(centre).
+	const double a = 0.7;
+	const V3     g(2.0, -1.5, 0.25);
+	const double exact = 0.24 * (a + g.dot(f.c));
+	// A bilinear function of the face coordinates, f = (x-c)·t1 · (x-c)·t2 = s·r, integrates to 0.
+	for (int n = 1; n <= 5; ++n) {
+		double linear = 0, bilinear = 0, midpointLinear = 0;
+		for (const auto& p : rdem::faceSamplePoints<double>(f.c, f.t1, f.t2, f.h1, f.h2, n)) {
+			linear += p.weight * (a + g.dot(p.pos));
+			const V3 d = p.pos - f.c;
+			bilinear += p.weight * d.dot(f.t1) * d.dot(f.t2);
+		}
+		for (const auto& p : rdem::segmentCentres<double>(f.c, f.t1, f.t2, f.h1, f.h2, n))
+			midpointLinear += p.weight * (a + g.dot(p.pos));
+		// |f| ≤ ~6 over the face: sums of ≤ 36 terms, 1e-14 relative to the integral (≈ 0.65)
+		EXPECT_NEAR(linear, exact, tol * 6) << "n = " << n;
+		EXPECT_NEAR(midpointLinear, exact, tol * 6) << "n = " << n;
+		// (x-c)·t1 (x-c)·t2 = s·r is odd in s: integral 0; |f| ≤ 0.06, 1e-14 relative
+		EXPECT_NEAR(bilinear, 0, tol * 0.06) << "n = " << n;
+	}
+	// The trapezoid rule is NOT exact for s², and must show exactly its known error: ∫ s² dA = (2h1³/3)·2h2 = 0.0072.
+	for (int n = 1; n <= 3; ++n) {
+		double q = 0;
+		for (const auto& p : rdem::faceSamplePoints<double>(f.c, f.t1, f.t2, f.h1, f.h2, n)) {
+			const double s = (p.pos - f.c).dot(f.t1);
+			q += p.weight * s * s;
+		}
+		// Composite trapezoid error for s² on [-h, h] with step H = 2h/n: (2h)·H²/6; times the other extent 2h2.
+		const double H = 2 * f.h1 / n, expected = 0.0072 + 2 * f.h2 * (2 * f.h1) * H * H / 6;
+		EXPECT_NEAR(q, expected, tol * expected) << "n = " << n; // round-off only, 1e-14 relative
+	}
+}
+
+} // namespace
