@@ -1,0 +1,24 @@
+"""yade-rdem: the refined distinct element method with the Poisson effect, for YADE.
+
+Typical use inside a YADE script (``yade script.py`` with the launcher made by the build)::
+
+    from yade import *
+    import rdem
+    mat = O.materials.append(RdemMat(young=30e9, poisson=0.2, density=2300, tensileStrength=4.5e6))
+    O.engines = rdem.engines(segmentsPerEdge=2, poisson='paper')
+    ids = rdem.blockGrid((10, 10, 10), (0.02, 0.02, 0.02), material=mat)
+    rdem.bond(ids)
+    rdem.poissonEngine().build(ids)
+    O.dt = 0.8 * rdem.timeStepper().estimate()
+
+Modules: :mod:`rdem.build` (blocks, bonds, engine lists), :mod:`rdem.measure` (stresses, apparent moduli, cracks),
+:mod:`rdem.export` (ParaView files of cracks and Poisson elements).
+"""
+from rdem.build import block, blockGrid, bond, engines, poissonEngine, timeStepper, law, geomFunctor
+from rdem.measure import segmentTable, breakCounts, apparentPoisson
+from rdem.export import CrackExport
+
+__all__ = [
+        'block', 'blockGrid', 'bond', 'engines', 'poissonEngine', 'timeStepper', 'law', 'geomFunctor', 'segmentTable', 'breakCounts',
+        'apparentPoisson', 'CrackExport'
+]

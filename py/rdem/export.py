@@ -1,0 +1,98 @@
+"""ParaView output of what YADE's own VTKRecorder does not know: crack faces (broken segments) and Poisson elements.
+
+Blocks themselves are written by YADE's ``VTKRecorder(recorders=['boxes'])``. Files are VTK XML unstructured grids
+(``.vtu``, ASCII) plus a ``.pvd`` collection per series so ParaView can play them in time."""
+import os
+from yade import O
+from yade.wrapper import RdemGeom, RdemPhys
+import rdem.build
+
+
+def _writeVtu(path, points, cells, cellType, cellData):
+	with open(path, 'w') as f:
+		f.write('<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">\n<UnstructuredGrid>\n')
+		f.write('<Piece NumberOfPoints="%d" NumberOfCells="%d">\n<Points>\n<DataArray type="Float64" NumberOfComponents="3" format="ascii">\n' %
+		        (len(points), len(cells)))
+		f.write('\n'.join('%.9g %.9g %.9g' % tuple(p) for p in points))
+		f.write('\n</DataArray>\n</Points>\n<Cells>\n<DataArray type="Int64" Name="connectivity" format="ascii">\n')
+		f.write('\n'.join(' '.join(str(i) for i in c) for c in cells))
+		f.write('\n</DataArray>\n<DataArray type="Int64" Name="offsets" format="ascii">\n')
+		off = 0
+		offsets = []
+		for c in cells:
+			off += len(c)
+			offsets.append(str(off))
+		f.write(' '.join(offsets))
+		f.write('\n</DataArray>\n<DataArray type="UInt8" Name="types" format="ascii">\n')
+		f.write(' '.join([str(cellType)] * len(cells)))
+		f.write('\n</DataArray>\n</Cells>\n<CellData>\n')
+		for name, values in cellData.items():
+			f.write('<DataArray type="Float64" Name="%s" format="ascii">\n%s\n</DataArray>\n' % (name, ' '.join('%.9g' % v for v in values)))
+		f.write('</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n')
+
+
+class CrackExport:
+	"""Writes ``<prefix>cracks.<iter>.vtu`` (one quad per broken segment, with its state and stresses) and
+	``<prefix>poisson.<iter>.vtu`` (one hexahedron per Poisson element on the current centroids, with its force scale), plus
+	``.pvd`` collections. Call :meth:`write` from a :yref:`PyRunner`, and :meth:`close` at the end."""
+
+	def __init__(self, prefix):
+		self.prefix = prefix
+		d = os.path.dirname(prefix)
+		if d:
+			os.makedirs(d, exist_ok=True)
+		self.series = {'cracks': [], 'poisson': []}
+
+	def write(self):
+		self._cracks()
+		try:
+			self._poisson(rdem.build.poissonEngine())
+		except RuntimeError:
+			pass  # no Poisson engine in this scene
+
+	def _cracks(self):
+		points, cells, state, sigma, tau = [], [], [], [], []
+		for I in O.interactions:
+			if not I.isReal or not isinstance(I.geom, RdemGeom) or not isinstance(I.phys, RdemPhys):
+				continue
+			g, p = I.geom, I.phys
+			s1 = O.bodies[I.id1].state
+			t1 = s1.ori * g.segTangent1
+			t2 = (s1.ori * g.segNormal1).cross(t1)
+			h1, h2 = g.segHalfSizes[0], g.segHalfSizes[1]
+			for k, pt in enumerate(g.segPoint1):
+				if p.segState[k] == 0:
+					continue
+				c = s1.pos + s1.ori * pt
+				base = len(points)
+				points += [c - h1 * t1 - h2 * t2, c + h1 * t1 - h2 * t2, c + h1 * t1 + h2 * t2, c - h1 * t1 + h2 * t2]
+				cells.append([base, base + 1, base + 2, base + 3])
+				state.append(p.segState[k])
+				sigma.append(p.segSigma[k])
+				tau.append(p.segTau[k])
+		self._save('cracks', points, cells, 9, {'state': state, 'sigma': sigma, 'tau': tau})
+
+	def _poisson(self, eng):
+		nodes = eng.nodes
+		scales = eng.elementScales()
+		order = [0, 1, 3, 2, 4, 5, 7, 6]  # our node a = i + 2j + 4k to VTK_HEXAHEDRON's counter-clockwise order
+		points, cells = [], []
+		for e in range(eng.nElements):
+			base = len(points)
+			points += [O.bodies[nodes[8 * e + a]].state.pos for a in range(8)]
+			cells.append([base + a for a in order])
+		self._save('poisson', points, cells, 12, {'scale': scales})
+
+	def _save(self, kind, points, cells, cellType, data):
+		path = '%s%s.%d.vtu' % (self.prefix, kind, O.iter)
+		_writeVtu(path, points, cells, cellType, data)
+		self.series[kind].append((O.time, os.path.basename(path)))
+
+	def close(self):
+		"""Write the ``.pvd`` collections (time series for ParaView)."""
+		for kind, entries in self.series.items():
+			with open('%s%s.pvd' % (self.prefix, kind), 'w') as f:
+				f.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n<Collection>\n')
+				for t, name in entries:
+					f.write('<DataSet timestep="%.9g" file="%s"/>\n' % (t, name))
+				f.write('</Collection>\n</VTKFile>\n')

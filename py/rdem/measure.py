@@ -1,0 +1,46 @@
+"""Post-processing: per-segment state, break counts, apparent elastic constants."""
+from yade import O
+from yade.wrapper import RdemGeom, RdemPhys
+import rdem.build
+
+
+def segmentTable():
+	"""Every bonded segment of the scene as a list of dicts: ``id1``, ``id2``, ``point`` (global), ``normal`` (global, body 1 to 2),
+	``area``, ``state`` (0 intact, 1 broken in tension, 2 broken in shear), ``sigma`` (positive in tension) and ``tau`` [Pa]."""
+	rows = []
+	for I in O.interactions:
+		if not I.isReal or not isinstance(I.geom, RdemGeom) or not isinstance(I.phys, RdemPhys):
+			continue
+		g, p = I.geom, I.phys
+		s1 = O.bodies[I.id1].state
+		n = s1.ori * g.segNormal1
+		for k, (pt, area) in enumerate(zip(g.segPoint1, g.segArea)):
+			rows.append(dict(id1=I.id1, id2=I.id2, point=s1.pos + s1.ori * pt, normal=n, area=area, state=p.segState[k], sigma=p.segSigma[k], tau=p.segTau[k]))
+	return rows
+
+
+def breakCounts():
+	"""(tension, shear): restoring springs broken so far (eqs. 15, 16)."""
+	law = rdem.build.law()
+	return int(law.tensionBreaks), int(law.shearBreaks)
+
+
+def apparentPoisson(lateralPairs, axialPair, axis=2):
+	"""Apparent Poisson's ratio from centroid displacements, as in the paper's §5.3.1:
+	$\\nu_{app} = -\\varepsilon_{lat}/\\varepsilon_{ax}$, each strain the change of a centroid distance over its reference value.
+
+	:param lateralPairs: pairs of body ids whose distance along their own reference direction gives lateral strains (averaged).
+	:param axialPair: pair of body ids along the load axis.
+	"""
+
+	def strain(i, j):
+		a, b = O.bodies[i].state, O.bodies[j].state
+		d0 = b.refPos - a.refPos
+		d = b.pos - a.pos
+		return (d - d0).dot(d0) / d0.squaredNorm()
+
+	eAx = strain(*axialPair)
+	if eAx == 0:
+		return float('nan')
+	eLat = sum(strain(i, j) for i, j in lateralPairs) / len(lateralPairs)
+	return -eLat / eAx
