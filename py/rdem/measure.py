@@ -25,22 +25,16 @@ def breakCounts():
 	return int(law.tensionBreaks), int(law.shearBreaks)
 
 
-def apparentPoisson(lateralPairs, axialPair, axis=2):
-	"""Apparent Poisson's ratio from centroid displacements, as in the paper's §5.3.1:
-	$\\nu_{app} = -\\varepsilon_{lat}/\\varepsilon_{ax}$, each strain the change of a centroid distance over its reference value.
+def pairStrain(i, j):
+	"""Engineering strain of the centroid distance of bodies i and j along their reference direction (positive = longer)."""
+	a, b = O.bodies[i].state, O.bodies[j].state
+	d0 = b.refPos - a.refPos
+	return (b.pos - a.pos - d0).dot(d0) / d0.squaredNorm()
 
-	:param lateralPairs: pairs of body ids whose distance along their own reference direction gives lateral strains (averaged).
-	:param axialPair: pair of body ids along the load axis.
-	"""
 
-	def strain(i, j):
-		a, b = O.bodies[i].state, O.bodies[j].state
-		d0 = b.refPos - a.refPos
-		d = b.pos - a.pos
-		return (d - d0).dot(d0) / d0.squaredNorm()
-
-	eAx = strain(*axialPair)
-	if eAx == 0:
-		return float('nan')
-	eLat = sum(strain(i, j) for i, j in lateralPairs) / len(lateralPairs)
-	return -eLat / eAx
+def apparentPoisson(lateralPairs, axialPairs):
+	"""Apparent Poisson's ratio from centroid displacements, as in the paper's §5.3.1: $\\nu_{app} = -\\varepsilon_{lat}/\\varepsilon_{ax}$,
+	each strain the mean :func:`pairStrain` of the given pairs of body ids."""
+	eAx = sum(pairStrain(i, j) for i, j in axialPairs) / len(axialPairs)
+	eLat = sum(pairStrain(i, j) for i, j in lateralPairs) / len(lateralPairs)
+	return -eLat / eAx if eAx else float('nan')

@@ -1,0 +1,110 @@
+"""Ready-made scenes. :class:`CompressionTest` is the paper's §5 compression test of a concrete cube.
+
+Specimen: ``blocksPerEdge``³ cubic blocks forming a cube of side ``size``, between a bottom (fixed) and a top (loading)
+plate of ``blocksPerEdge``² blocks, ``plateHeight`` tall, of the same material, all face-bonded (so the Poisson grid
+spans both plates: 10×10×12 blocks give 9×9×11 = 891 elements, as in the paper's §5.2). Plate blocks are rigidly guided
+in z and cannot rotate; they are free in x and y (frictionless platens), so the specimen is in uniaxial stress. The
+top plate moves down at ``rate``.
+"""
+import math
+from yade import O, Vector3
+from yade.wrapper import RdemMat
+import rdem.build as build
+import rdem.measure as measure
+
+
+class CompressionTest:
+	"""Build the compression scene into the current (empty) scene. Lengths in m, stresses in Pa, rate in m/s, time in s."""
+
+	def __init__(self,
+	             blocksPerEdge=10,
+	             size=0.2,
+	             plateHeight=0.04,
+	             segmentsPerEdge=2,
+	             young=30e9,
+	             poisson=0.2,
+	             density=2300,
+	             tensileStrength=4.5e6,
+	             cohesion=float('inf'),
+	             frictionCoefficient=0.624,
+	             dampingConstant=1.0,
+	             formulation='paper',
+	             corotational=False,
+	             rate=1.0e-3,
+	             dt=2.0e-6):
+		if not (isinstance(blocksPerEdge, int) and blocksPerEdge >= 2):
+			raise ValueError('blocksPerEdge = %r: must be an integer >= 2' % (blocksPerEdge, ))
+		for name, value in (('size', size), ('plateHeight', plateHeight), ('rate', rate)):
+			if not value > 0:
+				raise ValueError('%s = %r: must be > 0' % (name, value))
+		if not frictionCoefficient >= 0:
+			raise ValueError('frictionCoefficient = %r: must be >= 0' % (frictionCoefficient, ))
+		if len(O.bodies) or len(O.interactions):
+			raise RuntimeError('CompressionTest builds into an empty scene: call O.reset() first')
+		self.n, self.size, self.plateHeight, self.rate = blocksPerEdge, size, plateHeight, rate
+		self.formulation = formulation
+		self.material = RdemMat(young=young,
+		                        poisson=poisson,
+		                        density=density,
+		                        tensileStrength=tensileStrength,
+		                        cohesion=cohesion,
+		                        frictionAngle=math.atan(frictionCoefficient),
+		                        dampingNormal=dampingConstant,
+		                        dampingShear=dampingConstant,
+		                        label='concrete')
+		O.materials.append(self.material)
+		breakable = tensileStrength < float('inf') or cohesion < float('inf')
+		h = size / blocksPerEdge
+		O.engines = build.engines(segmentsPerEdge=segmentsPerEdge,
+		                          poisson=formulation,
+		                          corotational=corotational,
+		                          recontact=breakable,
+		                          dt=dt,
+		                          verletDist=0.05 * h)
+		n = blocksPerEdge
+		grey, red, blue = Vector3(.7, .7, .7), Vector3(.9, .2, .2), Vector3(.5, .7, 1)
+		self.bottom = build.blockGrid((n, n, 1), (h, h, plateHeight), self.material, color=blue)
+		self.specimen = build.blockGrid((n, n, n), (h, h, h), self.material, origin=(0, 0, plateHeight), color=grey)
+		self.top = build.blockGrid((n, n, 1), (h, h, plateHeight), self.material, origin=(0, 0, plateHeight + size), color=red)
+		self.ids = self.bottom + self.specimen + self.top
+		self.nBonds = build.bond(self.ids)
+		self.nElements = 0
+		if build.POISSON_MODES[formulation] is not None:
+			build.poissonEngine().build(self.ids)
+			self.nElements = build.poissonEngine().nElements
+		for i in self.bottom + self.top:
+			O.bodies[i].state.blockedDOFs = 'zXYZ'
+		for i in self.top:
+			O.bodies[i].state.vel = Vector3(0, 0, -rate)
+		self.area = size * size
+
+	def block(self, i, j, k):
+		"""Body id of specimen block (i, j, k)."""
+		return self.specimen[i + self.n * (j + self.n * k)]
+
+	def stress(self):
+		"""Mean compressive stress on the loading plate [Pa], positive in compression: the z-force the specimen exerts on
+		the top plate over the cross-section (paper §5.3.2)."""
+		return sum(O.forces.f(i)[2] for i in self.top) / self.area
+
+	def displacement(self):
+		"""Downward displacement of the loading plate [m]."""
+		return sum(O.bodies[i].state.refPos[2] - O.bodies[i].state.pos[2] for i in self.top) / len(self.top)
+
+	def apparentPoisson(self):
+		"""Apparent Poisson's ratio -ε_lat/ε_ax (paper §5.3.1) from centroid distances: lateral between opposite surface
+		blocks of the mid-height layer(s) along x and y, axial between the bottom and top specimen layers."""
+		n, mid = self.n, [self.n // 2] if self.n % 2 else [self.n // 2 - 1, self.n // 2]
+		lateral = [(self.block(0, j, k), self.block(n - 1, j, k)) for j in range(n) for k in mid]
+		lateral += [(self.block(i, 0, k), self.block(i, n - 1, k)) for i in range(n) for k in mid]
+		axial = [(self.block(i, j, 0), self.block(i, j, n - 1)) for i in range(n) for j in range(n)]
+		eAx = sum(measure.pairStrain(a, b) for a, b in axial) / len(axial)
+		eLat = sum(measure.pairStrain(a, b) for a, b in lateral) / len(lateral)
+		return -eLat / eAx if eAx else float('nan')
+
+	def apparentYoung(self):
+		"""Apparent Young's modulus: mean stress over the axial centroid strain of the specimen [Pa]."""
+		n = self.n
+		axial = [(self.block(i, j, 0), self.block(i, j, n - 1)) for i in range(n) for j in range(n)]
+		eAx = sum(measure.pairStrain(a, b) for a, b in axial) / len(axial)
+		return -self.stress() / eAx if eAx else float('nan')

@@ -1,0 +1,185 @@
+# -*- coding: utf-8 -*-
+"""Compression test of a concrete cube with the refined DEM and the Poisson effect (the paper's §5).
+
+Problem
+    A 20 cm concrete cube of 10×10×10 rigid blocks sits on a fixed plate and is pushed down by a loading plate (each plate
+    10×10×1 blocks, 4 cm tall; 1200 blocks, 891 Poisson elements). Concrete: ρ = 2300 kg/m³, E = 30 GPa, ν = 0.2,
+    f_t = 4.5 MPa, bond strength ∞ (tension failure only), friction coefficient 0.624, damping constant 1.0; 2×2 springs
+    per face; loading plate at 1.0 mm/s; Δt = 2.0e-6 s.
+
+Expected result (paper §5.3)
+    The apparent Poisson's ratio stays ≈ 0.2 until the first tensile failure at ≈ 0.14 s, at a mean compressive stress
+    of ≈ 21.2 MPa (f_t/σ ≈ 0.21); cracks are vertical, first near the corners. The model's own estimate for uniform
+    uniaxial stress: the lateral springs reach f_t when σ = f_t (1-ν²)/ν = 21.6 MPa.
+
+How to run
+    build/bin/yade scripts/compression.py                 the paper's scene (see README for its wall time)
+    build/bin/yade scripts/compression.py --help          all options
+    build/bin/yade -j2 scripts/compression.py --blocks 6  smaller, on two threads
+
+Outputs (in --out, default output/compression): results.json, plots (PNG), ParaView files (*.pvd: blocks from YADE's
+VTKRecorder, crack faces and Poisson elements from rdem.export).
+"""
+import argparse
+import json
+import os
+import sys
+import time
+
+# 1. Options ---------------------------------------------------------------------------------------------------------
+parser = argparse.ArgumentParser(prog='yade scripts/compression.py', description=__doc__.split('\n\n')[0])
+parser.add_argument('--blocks', type=int, default=10, help='blocks per edge of the cube (default 10, as in the paper)')
+parser.add_argument('--springs', type=int, default=2, help='springs per face edge: n×n springs per face (default 2)')
+parser.add_argument('--nu', type=float, default=0.2, help="Poisson's ratio (default 0.2)")
+parser.add_argument('--formulation', choices=['paper', 'consistent', 'off'], default='paper', help='Poisson formulation (default paper)')
+parser.add_argument('--corotational', action='store_true', help='corotational Poisson elements (default off, as in the paper)')
+parser.add_argument('--rate', type=float, default=1.0, help='loading rate [mm/s] (default 1.0)')
+parser.add_argument('--end', type=float, default=0.25, help='end displacement of the loading plate [mm] (default 0.25)')
+parser.add_argument('--dt', type=float, default=2.0e-6, help='time step [s] (default 2e-6, as in the paper)')
+parser.add_argument('--out', default='output/compression', help='output folder (default output/compression)')
+parser.add_argument('--vtk-every', type=float, default=0.05, help='ParaView output every this displacement [mm] (default 0.05; 0 = none)')
+parser.add_argument('--threads', type=int, default=None, help='OpenMP threads; same as yade -jN (given here, it must match -j)')
+opts = parser.parse_args(sys.argv[1:])
+if opts.threads is not None and opts.threads != yade.runtime.ompThreads:  # noqa: F821 (yade is in the launcher's globals)
+	sys.exit('--threads %d given but YADE runs %d threads: start it as  build/bin/yade -j%d scripts/compression.py' %
+	         (opts.threads, yade.runtime.ompThreads, opts.threads))  # noqa: F821
+for name in ('rate', 'end', 'dt'):
+	if not getattr(opts, name) > 0:
+		sys.exit('--%s = %g: must be > 0' % (name, getattr(opts, name)))
+
+import matplotlib
+matplotlib.use('Agg')
+import matplotlib.pyplot as plt
+from yade import O, PyRunner, VTKRecorder
+import rdem
+from rdem.scenes import CompressionTest
+
+os.makedirs(opts.out, exist_ok=True)
+
+# 2. Scene ------------------------------------------------------------------------------------------------------------
+O.reset()
+wall0 = time.time()
+test = CompressionTest(blocksPerEdge=opts.blocks,
+                       segmentsPerEdge=opts.springs,
+                       poisson=opts.nu,
+                       formulation=opts.formulation,
+                       corotational=opts.corotational,
+                       rate=opts.rate * 1e-3,
+                       dt=opts.dt)
+nSteps = int(round(opts.end * 1e-3 / (opts.rate * 1e-3) / opts.dt))
+print('compression: %d blocks, %d bonds, %d Poisson elements, %d steps of %.3g s (critical step estimate %.3g s), set-up %.1f s' %
+      (len(test.ids), test.nBonds, test.nElements, nSteps, O.dt, rdem.timeStepper().estimate(), time.time() - wall0))
+
+# 3. Recording -------------------------------------------------------------------------------------------------------
+history = dict(t=[], disp=[], stress=[], nu=[], tension=[], shear=[])
+first = {}
+vtkEvery = int(round(opts.vtk_every * 1e-3 / (opts.rate * 1e-3) / opts.dt)) if opts.vtk_every > 0 else 0
+cracks = rdem.CrackExport(os.path.join(opts.out, 'vtk', ''))
+
+
+def record():
+	nT, nS = rdem.breakCounts()
+	history['t'].append(O.time)
+	history['disp'].append(test.displacement())
+	history['stress'].append(test.stress())
+	history['nu'].append(test.apparentPoisson())
+	history['tension'].append(nT)
+	history['shear'].append(nS)
+	if nT + nS > 0 and not first:
+		broken = [s for s in rdem.segmentTable() if s['state'] != 0]
+		first.update(time=O.time, iter=O.iter, stress=history['stress'][-1], disp=history['disp'][-1], segments=broken)
+
+
+progress = dict(wall=time.time(), iter=0)
+
+
+def report():
+	now = time.time()
+	rate = (O.iter - progress['iter']) / max(now - progress['wall'], 1e-9)
+	progress.update(wall=now, iter=O.iter)
+	left = (nSteps - O.iter) / rate if rate > 0 else float('nan')
+	nT, nS = rdem.breakCounts()
+	print('step %7d/%d  t=%.4f s  disp=%.4f mm  stress=%6.2f MPa  nu=%.4f  breaks=%d+%d  %.0f steps/s  %.0f s left' %
+	      (O.iter, nSteps, O.time, 1e3 * test.displacement(), 1e-6 * test.stress(), test.apparentPoisson(), nT, nS, rate, left),
+	      flush=True)
+
+
+O.engines += [PyRunner(command='record()', iterPeriod=max(1, nSteps // 2000)), PyRunner(command='report()', realPeriod=5)]
+if vtkEvery:
+	O.engines += [
+	        VTKRecorder(fileName=os.path.join(opts.out, 'vtk', 'blocks.'), recorders=['boxes'], iterPeriod=vtkEvery),
+	        PyRunner(command='cracks.write()', iterPeriod=vtkEvery)
+	]
+
+# 4. Run --------------------------------------------------------------------------------------------------------------
+wallRun = time.time()
+O.run(nSteps, True)
+wall = time.time() - wallRun
+record()
+cracks.close()
+
+# 5. Results ----------------------------------------------------------------------------------------------------------
+nuHist = [(t, nu) for t, nu in zip(history['t'], history['nu']) if t > 0]
+tCrack = first.get('time', float('inf'))
+preCrack = [nu for t, nu in nuHist if 0.25 * min(tCrack, O.time) <= t < tCrack]  # after the start-up transient
+nuBefore = sorted(preCrack)[len(preCrack) // 2] if preCrack else float('nan')
+firstSegs = first.get('segments', [])
+results = dict(
+        input=vars(opts),
+        blocks=len(test.ids),
+        bonds=test.nBonds,
+        poissonElements=test.nElements,
+        apparentPoissonBeforeCracking=nuBefore,
+        firstTensileFailure=dict(time=first.get('time'),
+                                 stressMPa=first['stress'] * 1e-6 if first else None,
+                                 displacementMm=first['disp'] * 1e3 if first else None,
+                                 ftOverStress=test.material.tensileStrength / first['stress'] if first else None,
+                                 segments=[dict(point=list(s['point']), normal=list(s['normal']), state=s['state']) for s in firstSegs]),
+        breaks=dict(zip(('tension', 'shear'), rdem.breakCounts())),
+        steps=O.iter,
+        wallSeconds=wall,
+        stepsPerSecond=O.iter / wall,
+        microsecondsPerBlockStep=1e6 * wall / (O.iter * len(test.ids)),
+        history=history)
+with open(os.path.join(opts.out, 'results.json'), 'w') as f:
+	json.dump(results, f, indent=1)
+
+# Figures: apparent Poisson's ratio vs time (paper Fig. 9b), stress vs displacement, crack pattern (paper Fig. 10).
+fig, ax = plt.subplots(figsize=(6, 4))
+ax.plot([t for t, _ in nuHist], [nu for _, nu in nuHist], label='apparent ν')
+ax.axhline(opts.nu, color='k', ls=':', label='input ν = %g' % opts.nu)
+if first:
+	ax.axvline(first['time'], color='r', ls='--', label='first tensile failure')
+ax.set_xlabel('time [s]')
+ax.set_ylabel("apparent Poisson's ratio")
+ax.set_ylim(0, max(0.5, 2 * opts.nu))
+ax.legend()
+fig.tight_layout()
+fig.savefig(os.path.join(opts.out, 'apparent_poisson.png'), dpi=120)
+
+fig, ax = plt.subplots(figsize=(6, 4))
+ax.plot([1e3 * d for d in history['disp']], [1e-6 * s for s in history['stress']])
+if first:
+	ax.plot([1e3 * first['disp']], [1e-6 * first['stress']], 'ro', label='first tensile failure, %.1f MPa' % (1e-6 * first['stress']))
+	ax.legend()
+ax.set_xlabel('displacement of the loading plate [mm]')
+ax.set_ylabel('mean compressive stress [MPa]')
+fig.tight_layout()
+fig.savefig(os.path.join(opts.out, 'stress_displacement.png'), dpi=120)
+
+segs = [s for s in rdem.segmentTable() if s['state'] != 0]
+fig, axes = plt.subplots(1, 2, figsize=(10, 5))
+for ax, (u, v, name) in zip(axes, ((0, 2, 'front view (x-z)'), (0, 1, 'top view (x-y)'))):
+	ax.scatter([s['point'][u] for s in segs], [s['point'][v] for s in segs], s=4, c=['r' if s['state'] == 1 else 'b' for s in segs])
+	ax.set_title('%s: %d broken springs' % (name, len(segs)))
+	ax.set_aspect('equal')
+	ax.set_xlabel('xyz'[u] + ' [m]')
+	ax.set_ylabel('xyz'[v] + ' [m]')
+fig.tight_layout()
+fig.savefig(os.path.join(opts.out, 'crack_pattern.png'), dpi=120)
+
+print('compression: apparent nu before cracking %.4f; first tensile failure at t = %s s, %s MPa (f_t/sigma = %s); breaks %s; '
+      '%d steps in %.1f s (%.0f steps/s, %.3f us per block-step); results in %s' %
+      (nuBefore, results['firstTensileFailure']['time'], results['firstTensileFailure']['stressMPa'], results['firstTensileFailure']['ftOverStress'],
+       results['breaks'], O.iter, wall, results['stepsPerSecond'], results['microsecondsPerBlockStep'], opts.out))
+sys.exit(0)
