@@ -29,7 +29,7 @@ namespace {
 		return b.half[k];
 	}
 
-	/* Sample points of block X (which = 0 for body 1, 1 for body 2) strictly inside block Y, appended to geom. Sample
+	/* Sample points of block X (which = 0 for body 1, 1 for body 2) that entered block Y (rdem::sampleContact), appended to geom. Sample
 	   keys are ((which·6 + face)·(n+1)² + point), stable from step to step for the shear history. */
 	void sampleInside(const Block& X, const State& sx, const Block& Y, const State& sy, int which, int n, RdemGeom& g)
 	{
@@ -42,13 +42,11 @@ namespace {
 				const auto     pts  = rdem::faceSamplePoints<Real>(X.pos + X.half[k] * nf, X.rot.col(k1), X.rot.col(k2), X.half[k1], X.half[k2], n);
 				const int      face = 2 * k + side;
 				for (int p = 0; p < perFace; ++p) {
-					Vector3r  nY;
-					const Real depth = rdem::penetrationDepth(Y, pts[size_t(p)].pos, nY);
-					const Real cosFace = -nf.dot(nY); // the sampled face must look into Y's face
-					if (!(depth > 0) || !(cosFace > 0)) continue;
+					const auto hit = rdem::sampleContact<Real>(Y, pts[size_t(p)].pos, nf);
+					if (!hit.hit) continue;
 					// Normal from body 1 to body 2: Y's outward normal if Y is body 1, its opposite otherwise.
-					const Vector3r normal = which == 1 ? nY : Vector3r(-nY);
-					const Vector3r point  = pts[size_t(p)].pos + (depth / 2) * nY;
+					const Vector3r normal = which == 1 ? hit.normal : Vector3r(-hit.normal);
+					const Vector3r point  = pts[size_t(p)].pos + (hit.depth / 2) * hit.normal;
 					const State&   s1     = which == 0 ? sx : sy;
 					const State&   s2     = which == 0 ? sy : sx;
 					const Vector3r x1     = which == 0 ? X.pos : Y.pos;
@@ -57,8 +55,8 @@ namespace {
 					g.samplePoint.push_back(point);
 					g.sampleNormal.push_back(normal);
 					g.sampleVel.push_back(pointVelocity(s2, x2, point) - pointVelocity(s1, x1, point));
-					g.sampleDepth.push_back(depth);
-					g.sampleArea.push_back(pts[size_t(p)].weight * cosFace / 2); // both blocks are sampled: half each
+					g.sampleDepth.push_back(hit.depth);
+					g.sampleArea.push_back(pts[size_t(p)].weight * hit.cosine / 2); // both blocks are sampled: half each
 				}
 			}
 		}

@@ -23,7 +23,7 @@ public:
 
 *Bonded segments.* When the pair is bonded (created with ``utils.createInteraction`` on face-adjacent blocks), the shared face is cut into $n\times n$ segments (paper §3.1, Fig. 2a). The centre of each is stored as a material point of both blocks (``segPoint1``, ``segPoint2`` in body frames). Each step the relative displacement $\mathbf{d}=\mathbf{P}_2-\mathbf{P}_1$ of the two material points is split along the current face normal $\mathbf{n}$ (from body 1 to body 2): $u_n=\mathbf{d}\cdot\mathbf{n}$ (positive = opening, the paper's tension-positive convention of eq. 14) and $\mathbf{u}_s=\mathbf{d}-u_n\mathbf{n}$. Rigid motions of the pair give $\mathbf{d}=0$ exactly, at any rotation.
 
-*Sampled contacts.* Blocks that are not bonded interact where sample points of one block's faces (an $(n+1)\times(n+1)$ trapezoid grid per face, corners and edges included) lie inside the other block: depth to the nearest face of the other block, normal of that face; see doc/theory.md.)""",
+*Sampled contacts.* Blocks that are not bonded interact where sample points of one block's faces (an $(n+1)\times(n+1)$ trapezoid grid per face, corners and edges included) have entered the other block through one of its faces that faces them: depth below that face, normal of that face, weight = trapezoid area × cosine between the two faces, halved because both blocks are sampled; see doc/theory.md.)""",
 		((int,samplesPerEdge,2,,"$n$: segments per face edge of the bond, and sample-grid density of contacts."))
 		((Real,ell1,0,,"Distance from the centroid of body 1 to the bonded (or first contacted) face, $\\ell_A$ of eq. 12 [m]."))
 		((Real,ell2,0,,"Distance from the centroid of body 2 to its face, $\\ell_B$ of eq. 12 [m]."))

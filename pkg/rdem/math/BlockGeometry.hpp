@@ -85,23 +85,42 @@ namespace rdem {
 		return best;
 	}
 
-	/// How deep a point lies inside a block: depth > 0 inside, measured to the nearest face, whose outward unit
-	/// normal (global) is returned in normal. depth ≤ 0 means outside or on the surface.
-	template <class S> S penetrationDepth(const OrientedBlock<S>& A, const Eigen::Matrix<S, 3, 1>& p, Eigen::Matrix<S, 3, 1>& normal)
+	/// Where a sample point of one block's face enters another block (see sampleContact).
+	template <class S> struct SampleHit {
+		bool                   hit    = false;
+		S                      depth  = 0;                                ///< distance inside the entered face's plane [m]
+		S                      cosine = 0;                                ///< -n_f·n: how squarely the sampled face meets it
+		Eigen::Matrix<S, 3, 1> normal = Eigen::Matrix<S, 3, 1>::Zero(); ///< outward unit normal of the entered face of Y
+	};
+
+	/* Contact of a sample point p, lying on a face of another block with outward unit normal nf, with block Y.
+	   Candidate faces of Y are those facing the sampled face (cosine -nf·n > 0) whose rectangle contains the projection
+	   of p (edges included, with a relative tolerance tol) and whose plane p has crossed by 0 < depth ≤ half-thickness;
+	   the shallowest candidate wins. Counting edges as inside makes flush, aligned faces (stacked blocks) see their
+	   edge and corner samples; requiring facing faces keeps the side faces of a stacked block out of the contact. */
+	template <class S>
+	SampleHit<S> sampleContact(const OrientedBlock<S>& Y, const Eigen::Matrix<S, 3, 1>& p, const Eigen::Matrix<S, 3, 1>& nf, S tol = S(1e-9))
 	{
 		using std::abs;
-		const Eigen::Matrix<S, 3, 1> q = A.rot.transpose() * (p - A.pos);
-		int                          k = 0;
-		S                            depth = A.half[0] - abs(q[0]);
-		for (int j = 1; j < 3; ++j) {
-			const S d = A.half[j] - abs(q[j]);
-			if (d < depth) {
-				depth = d;
-				k     = j;
+		const Eigen::Matrix<S, 3, 1> q = Y.rot.transpose() * (p - Y.pos);
+		SampleHit<S>                 best;
+		for (int k = 0; k < 3; ++k) {
+			for (int s = -1; s <= 1; s += 2) {
+				const Eigen::Matrix<S, 3, 1> n = S(s) * Y.rot.col(k);
+				const S                      c = -nf.dot(n);
+				if (!(c > 0)) continue;
+				const S d = Y.half[k] - S(s) * q[k];
+				if (!(d > 0 && d <= Y.half[k])) continue;
+				const int j1 = (k + 1) % 3, j2 = (k + 2) % 3;
+				if (abs(q[j1]) > Y.half[j1] * (1 + tol) || abs(q[j2]) > Y.half[j2] * (1 + tol)) continue;
+				if (best.hit && d >= best.depth) continue;
+				best.hit    = true;
+				best.depth  = d;
+				best.cosine = c;
+				best.normal = n;
 			}
 		}
-		normal = (q[k] >= 0 ? S(1) : S(-1)) * A.rot.col(k);
-		return depth;
+		return best;
 	}
 
 	/* Separating-axis test of two oriented blocks (Gottschalk, Lin & Manocha, SIGGRAPH 1996): the smallest overlap of

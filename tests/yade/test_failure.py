@@ -1,0 +1,77 @@
+"""Breakage of restoring springs (paper eqs. 14-16) and the contact springs that replace them (eqs. 13, 17).
+
+Two bonded 2 cm cubes, 2x2 springs on the shared face; both blocks blocked and placed by hand, so every step evaluates
+the law for exactly the configuration set (zero velocities: dashpots exert nothing)."""
+import os
+import sys
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import unittest
+import harness
+from yade import O, Vector3
+from yade.wrapper import RdemMat
+import rdem
+
+E, NU, H = 30e9, 0.2, 0.01
+AREA = (2 * H)**2
+KN = E / (1 - NU**2) / (2 * H)  # eqs. 11-12, two identical blocks, ell = H [N/m3]
+KS = E / (2 * (1 + NU)) / (2 * H)
+
+
+class Breakage(unittest.TestCase):
+
+	def build(self, ft=4.5e6, c=float('inf'), phi=0.5):
+		harness.freshScene()
+		mat = O.materials.append(RdemMat(young=E, poisson=NU, tensileStrength=ft, cohesion=c, frictionAngle=phi))
+		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=False, dt=1e-9)
+		rdem.blockGrid((2, 1, 1), (2 * H, ) * 3, material=mat)
+		rdem.bond([0, 1])
+		for i in (0, 1):
+			O.bodies[i].state.blockedDOFs = 'xyzXYZ'
+
+	def place(self, u):
+		"""Displace block 1 by u from its reference position, evaluate one step, return the force on block 1."""
+		O.bodies[1].state.pos = O.bodies[1].state.refPos + u
+		O.step()
+		return O.forces.f(1)
+
+	def testTensileBreakExactlyAtStrength(self):
+		ft = 4.5e6
+		self.build(ft=ft)
+		uLimit = ft / KN
+		self.place(Vector3(uLimit * (1 - 1e-9), 0, 0))  # sigma = f_t (1 - 1e-9): f_1 < 0 (eq. 15)
+		self.assertEqual(rdem.breakCounts(), (0, 0))
+		self.place(Vector3(uLimit * (1 + 1e-9), 0, 0))  # sigma = f_t (1 + 1e-9): all four springs break in tension
+		self.assertEqual(rdem.breakCounts(), (4, 0))
+		self.assertEqual(list(O.interactions[0, 1].phys.segState), [1, 1, 1, 1])
+
+	def testBrokenTransmitsCompressionOnly(self):
+		self.build(ft=1e6)
+		self.place(Vector3(2e6 / KN, 0, 0))  # break
+		self.assertEqual(rdem.breakCounts(), (4, 0))
+		f = self.place(Vector3(1e-6, 0, 0))  # opened: nothing
+		self.assertEqual(f.norm(), 0)
+		u = 1e-7
+		f = self.place(Vector3(-u, 0, 0))  # closed: contact springs k_n A per segment, same constants (paper §3.2)
+		self.assertAlmostEqual(f[0] / (KN * AREA * u), 1, delta=1e-12)  # round-off of 4 equal terms
+
+	def testShearBreakOnMohrCoulombLine(self):
+		c, phi = 2e6, 0.5
+		self.build(ft=float('inf'), c=c, phi=phi)
+		import math
+		sigma = -3e6  # compression
+		tauLimit = c - sigma * math.tan(phi)  # eq. 16: |tau| + sigma tan(phi) = c
+		un = sigma / KN
+		self.place(Vector3(un, tauLimit / KS * (1 - 1e-9), 0))
+		self.assertEqual(rdem.breakCounts(), (0, 0))
+		self.place(Vector3(un, tauLimit / KS * (1 + 1e-9), 0))
+		self.assertEqual(rdem.breakCounts(), (0, 4))
+		self.assertEqual(list(O.interactions[0, 1].phys.segState), [2, 2, 2, 2])
+
+	def testTensionCheckedFirst(self):
+		self.build(ft=1e6, c=1e6, phi=0.5)
+		self.place(Vector3(2e6 / KN, 2e6 / KS, 0))  # violates both criteria
+		self.assertEqual(rdem.breakCounts(), (4, 0))
+
+
+if __name__ == '__main__':
+	harness.run(Breakage)
