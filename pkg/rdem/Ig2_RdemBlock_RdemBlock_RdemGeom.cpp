@@ -29,6 +29,9 @@ namespace {
 		return b.half[k];
 	}
 
+	/// Overlaps below this are touching, not contact: grid neighbours along an edge or a corner overlap by round-off [m].
+	Real touchTolerance(const Block& A, const Block& B) { return 1e-9 * math::min(A.half.minCoeff(), B.half.minCoeff()); }
+
 	/* Sample points of block X (which = 0 for body 1, 1 for body 2) that entered block Y (rdem::sampleContact), appended to geom. Sample
 	   keys are ((which·6 + face)·(n+1)² + point), stable from step to step for the shear history. */
 	void sampleInside(const Block& X, const State& sx, const Block& Y, const State& sy, int which, int n, RdemGeom& g)
@@ -105,7 +108,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 			}
 			I->geom = g;
 		} else {
-			if (!(rdem::overlapDepth<Real>(A, B) > 0)) return false;
+			if (!rdem::blocksOverlap<Real>(A, B, touchTolerance(A, B))) return false;
 			RdemGeom probe;
 			probe.samplesPerEdge = segmentsPerEdge;
 			sampleInside(A, state1, B, state2, 0, segmentsPerEdge, probe);
@@ -138,7 +141,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 		return true;
 	}
 	g.clearSamples();
-	if (rdem::overlapDepth<Real>(A, B) > 0) {
+	if (rdem::blocksOverlap<Real>(A, B, touchTolerance(A, B))) {
 		sampleInside(A, state1, B, state2, 0, g.samplesPerEdge, g);
 		sampleInside(B, state2, A, state1, 1, g.samplesPerEdge, g);
 	}

@@ -11,7 +11,6 @@
 
 #include <Eigen/Core>
 #include <cmath>
-#include <limits>
 
 namespace yade {
 namespace rdem {
@@ -123,34 +122,31 @@ namespace rdem {
 		return best;
 	}
 
-	/* Separating-axis test of two oriented blocks (Gottschalk, Lin & Manocha, SIGGRAPH 1996): the smallest overlap of
-	   their projections over the 15 candidate axes (3 + 3 face normals, 9 edge cross products) [m]. A value ≤ 0 means
-	   the blocks are apart or only touch, so no contact sample can lie strictly inside the other block. */
-	template <class S> S overlapDepth(const OrientedBlock<S>& A, const OrientedBlock<S>& B)
+	/* Separating-axis test of two oriented blocks (Gottschalk, Lin & Manocha, SIGGRAPH 1996): true if their projections
+	   overlap by more than tol [m] on all 15 candidate axes (3 + 3 face normals, 9 edge cross products). Blocks that are
+	   apart or only touch (grid neighbours along an edge) return false, usually at the first face axis. */
+	template <class S> bool blocksOverlap(const OrientedBlock<S>& A, const OrientedBlock<S>& B, S tol)
 	{
 		using std::abs;
-		using V          = Eigen::Matrix<S, 3, 1>;
-		const V   d      = B.pos - A.pos;
-		S         minOv  = std::numeric_limits<S>::infinity();
-		auto      test   = [&](const V& axis) {
+		using V     = Eigen::Matrix<S, 3, 1>;
+		const V   d = B.pos - A.pos;
+		auto      overlapsAlong = [&](const V& axis) {
                         const S len = axis.norm();
-                        if (len < S(1e-9)) return; // parallel edges: the face axes already cover this direction
+                        if (len < S(1e-9)) return true; // parallel edges: the face axes already cover this direction
                         const V a  = axis / len;
                         S       rA = 0, rB = 0;
                         for (int j = 0; j < 3; ++j) {
                                 rA += A.half[j] * abs(A.rot.col(j).dot(a));
                                 rB += B.half[j] * abs(B.rot.col(j).dot(a));
                         }
-                        const S ov = rA + rB - abs(d.dot(a));
-                        if (ov < minOv) minOv = ov;
+                        return rA + rB - abs(d.dot(a)) > tol;
 		};
-		for (int i = 0; i < 3; ++i) {
-			test(A.rot.col(i));
-			test(B.rot.col(i));
+		for (int i = 0; i < 3; ++i)
+			if (!overlapsAlong(A.rot.col(i)) || !overlapsAlong(B.rot.col(i))) return false;
+		for (int i = 0; i < 3; ++i)
 			for (int j = 0; j < 3; ++j)
-				test(A.rot.col(i).cross(B.rot.col(j)));
-		}
-		return minOv;
+				if (!overlapsAlong(A.rot.col(i).cross(B.rot.col(j)))) return false;
+		return true;
 	}
 
 } // namespace rdem
