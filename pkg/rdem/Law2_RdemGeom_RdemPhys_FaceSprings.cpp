@@ -24,7 +24,8 @@ namespace {
 	Vector3r contactForce(
 	        const RdemPhys& p, Real area, Real delta, const Vector3r& n, const Vector3r& v, Real dt, Vector3r& shear, bool trackEnergy, Energies& e)
 	{
-		const Real     kn = p.kn * area, ks = p.ks * area, cn = p.cn * area, cs = p.cs * area;
+		const Real     an = p.weightNormal * area, as = p.weightShear * area;
+		const Real     kn = p.kn * an, ks = p.ks * as, cn = p.cn * an, cs = p.cs * as;
 		const Real     vn     = v.dot(n);
 		const Vector3r vt     = v - vn * n;
 		const Real     fElast = kn * delta;                           // elastic normal force, compressive > 0
@@ -82,9 +83,9 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 				const Real     sigma = p.kn * un;
 				const Vector3r tau   = p.ks * us;
 				const auto     state = rdem::restoringSpringState(sigma, Real(tau.norm()), p.tensileStrength, p.cohesion, p.tanFriction);
-				const Real     energy = A * (sigma * sigma / p.kn + tau.squaredNorm() / p.ks) / 2;
+				const Real     energy = A * (p.weightNormal * sigma * sigma / p.kn + p.weightShear * tau.squaredNorm() / p.ks) / 2;
 				if (state == rdem::SegmentState::Intact) {
-					apply(-(sigma * n + tau) * A, g.segPoint[i]);
+					apply(-(p.weightNormal * sigma * n + p.weightShear * tau) * A, g.segPoint[i]);
 					p.segSigma[i]       = sigma;
 					p.segTau[i]         = tau.norm();
 					anyIntactOrTouching = true;
@@ -102,8 +103,8 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 			if (un < 0 && us.norm() < maxSlide) {
 				const Vector3r F = contactForce(p, A, -un, n, g.segVel[i], dt, p.segShear[i], trackEnergy, e);
 				apply(F, g.segPoint[i]);
-				p.segSigma[i]       = -F.dot(n) / A;
-				p.segTau[i]         = (F - F.dot(n) * n).norm() / A;
+				p.segSigma[i]       = -F.dot(n) / (p.weightNormal * A);
+				p.segTau[i]         = (F - F.dot(n) * n).norm() / (p.weightShear * A);
 				anyIntactOrTouching = true;
 			} else {
 				p.segShear[i] = Vector3r::Zero();

@@ -26,6 +26,8 @@ Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact s
 		((Real,tensileStrength,0,,"$f_t$ of the joint [Pa]."))
 		((Real,cohesion,0,,"$c$ of the joint [Pa]."))
 		((Real,tanFriction,0,,"$\\tan\\phi$ of the joint."))
+		((Real,weightNormal,1,,"Volume weight $w_n$ of the normal restoring and contact springs of the segments (1, or set by the consistent formulation of :yref:`RdemPoissonEngine` at boundaries); forces are $w_n\\sigma A$, failure stresses stay $\\sigma$."))
+		((Real,weightShear,1,,"Volume weight $w_s$ of the shear springs, as ``weightNormal``."))
 		((vector<int>,segState,,,"Per bonded segment: 0 intact, 1 broken in tension (eq. 15), 2 broken in shear (eq. 16)."))
 		((vector<Vector3r>,segShear,,,"Per bonded segment: elastic shear elongation of the contact spring after breakage (global) [m]."))
 		((vector<Real>,segSigma,,,"Per bonded segment: normal stress of the last step, positive in tension [Pa]."))

@@ -5,8 +5,10 @@
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
 #include <pkg/rdem/RdemPoissonEngine.hpp>
+#include <core/InteractionLoop.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
+#include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemMat.hpp>
@@ -40,6 +42,40 @@ namespace {
 			if (nd.second.dot(dir) > sameSideCos) return nd.first;
 		return -1;
 	}
+
+	/// Half-extent of block id along its body axis closest to dir [m].
+	Real halfAlong(Scene* scene, Body::id_t id, const Vector3r& dir)
+	{
+		const Body&    b = *Body::byId(id, scene);
+		const Matrix3r R = b.state->ori.toRotationMatrix();
+		int            k = 0;
+		for (int j = 1; j < 3; ++j)
+			if (math::abs(R.col(j).dot(dir)) > math::abs(R.col(k).dot(dir))) k = j;
+		return static_cast<RdemBlock*>(b.shape.get())->extents[k];
+	}
+
+	/// Whether the translation of block id along dir is prescribed (dir along a global axis whose DOF is blocked).
+	bool prescribed(Scene* scene, Body::id_t id, const Vector3r& dir)
+	{
+		const State& s = *Body::byId(id, scene)->state;
+		for (int k = 0; k < 3; ++k)
+			if (math::abs(dir[k]) > sameSideCos) return (s.blockedDOFs & State::axisDOF(k)) != 0;
+		return false;
+	}
+
+	/// Extent of the dual cell of block id along the unit direction t: half-way to the neighbouring centroids, to the block's
+	/// face where it has no neighbour and is free, to its centroid where it is a platen [m].
+	Real dualExtent(Scene* scene, const Neighbours& nbr, Body::id_t id, const Vector3r& t)
+	{
+		Real ext = 0;
+		for (int side = -1; side <= 1; side += 2) {
+			const Body::id_t nb = next(nbr, id, side * t);
+			if (nb >= 0) ext += math::abs((Body::byId(nb, scene)->state->pos - Body::byId(id, scene)->state->pos).dot(t)) / 2;
+			else if (!prescribed(scene, id, t))
+				ext += halfAlong(scene, id, t);
+		}
+		return ext;
+	}
 }
 
 void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
@@ -56,6 +92,31 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 		if (!dynamic_cast<RdemMat*>(b->material.get()))
 			throw std::invalid_argument("RdemPoissonEngine.build: body " + std::to_string(id) + " has no RdemMat material");
 	}
+
+	for (const auto& e : scene->engines) {
+		const auto* loop = dynamic_cast<InteractionLoop*>(e.get());
+		if (!loop) continue;
+		for (const auto& f : loop->physDispatcher->functors) {
+			const auto* ip2 = dynamic_cast<Ip2_RdemMat_RdemMat_RdemPhys*>(f.get());
+			if (ip2 && (ip2->springModulus == 1) != consistent)
+				throw std::invalid_argument(
+				        std::string("RdemPoissonEngine.consistent = ") + (consistent ? "True" : "False")
+				        + " needs Ip2_RdemMat_RdemMat_RdemPhys.springModulus = " + (consistent ? "1" : "0")
+				        + "; rdem.engines(poisson='paper' or 'consistent') sets both");
+		}
+	}
+	// The paper's springs E/(1-ν²) plus D_p are an indefinite tensor for ν > (3-√5)/2 ≈ 0.382 (doc/theory.md §5.3): an
+	// explicit run would blow up, so refuse it with the way out.
+	const Real nuPaperMax = (3 - math::sqrt(Real(5))) / 2;
+	if (!consistent)
+		for (Body::id_t id : ids) {
+			const Real nu = static_cast<RdemMat*>(Body::byId(id, scene)->material.get())->poisson;
+			if (nu > nuPaperMax)
+				throw std::invalid_argument(
+				        "RdemPoissonEngine.build: block " + std::to_string(id) + " has poisson = " + std::to_string(nu)
+				        + ", above 0.382 where the paper formulation (springs E/(1-nu^2) plus D_p) is not positive definite and a run"
+				          " blows up; use the consistent formulation, rdem.engines(poisson='consistent')");
+		}
 
 	// Bonded neighbours of every block, with the bond's unit normal (global) pointing to the neighbour.
 	Neighbours nbr;
@@ -81,6 +142,7 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 	nodes.clear();
 	refPos.clear();
 	lambda.clear();
+	skin.clear();
 	std::set<std::array<Body::id_t, 8>> seen;
 	int                                 incomplete = 0;
 	for (Body::id_t b : ids) {
@@ -140,11 +202,53 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 			refPos.push_back(X[a]);
 		}
 		lambda.push_back(lam);
+		// Skin of the consistent formulation: a side whose four blocks have no neighbour further out and are free along
+		// that axis carries a slab as thick as those blocks' half-extent, in units of half the element length.
+		for (int d = 0; d < 3; ++d) {
+			const Vector3r ed = R.col(d);
+			for (int side = 0; side < 2; ++side) {
+				Real       t     = 0;
+				const Real sgn   = side ? 1 : -1;
+				bool       outer = consistent;
+				Real       ell = 0, halfLength = 0;
+				for (size_t a = 0; a < 8 && outer; ++a) {
+					if (((a >> d) & 1) != size_t(side)) continue;
+					outer = next(nbr, n[a], sgn * ed) < 0 && !prescribed(scene, n[a], ed);
+					ell += halfAlong(scene, n[a], ed) / 4;
+					halfLength += math::abs((X[a ^ (size_t(1) << d)] - X[a]).dot(ed)) / 8;
+				}
+				if (outer) t = ell / halfLength;
+				skin.push_back(t);
+			}
+		}
 	}
 	if (nodes.empty())
 		throw std::invalid_argument(
 		        "RdemPoissonEngine.build: no 2x2x2 group of bonded blocks among the " + std::to_string(ids.size())
 		        + " blocks given (bond them first, e.g. with rdem.bondAll)");
+	// Spring weights of the consistent formulation (doc/theory.md §5.2); 1 in the paper's.
+	for (const auto& I : *scene->interactions) {
+		if (!I->isReal()) continue;
+		const auto* g = dynamic_cast<RdemGeom*>(I->geom.get());
+		auto*       p = dynamic_cast<RdemPhys*>(I->phys.get());
+		if (!g || !p || g->nSegments() == 0 || !ids.count(I->getId1()) || !ids.count(I->getId2())) continue;
+		p->weightNormal = p->weightShear = 1;
+		if (!consistent) continue;
+		const Body::id_t a = I->getId1(), b = I->getId2();
+		const Matrix3r   Ra = Body::byId(a, scene)->state->ori.toRotationMatrix();
+		const Vector3r   nrm = Ra * g->segNormal1;
+		const Real       L   = (Body::byId(b, scene)->state->pos - Body::byId(a, scene)->state->pos).dot(nrm);
+		const Real extA = (next(nbr, a, -nrm) < 0 && !prescribed(scene, a, nrm)) ? halfAlong(scene, a, nrm) : Real(0);
+		const Real extB = (next(nbr, b, nrm) < 0 && !prescribed(scene, b, nrm)) ? halfAlong(scene, b, nrm) : Real(0);
+		Real       cross = 1;
+		for (int k = 0; k < 3; ++k) {
+			const Vector3r t = Ra.col(k);
+			if (math::abs(t.dot(nrm)) > sameSideCos) continue;
+			cross *= (dualExtent(scene, nbr, a, t) / (2 * halfAlong(scene, a, t)) + dualExtent(scene, nbr, b, t) / (2 * halfAlong(scene, b, t))) / 2;
+		}
+		p->weightNormal = (L + extA + extB) / L * cross;
+		p->weightShear  = cross;
+	}
 	LOG_INFO(nElements() << " Poisson elements on " << ids.size() << " blocks (" << incomplete << " groups skipped: a bond missing)");
 	prepare();
 }
@@ -161,13 +265,19 @@ void RdemPoissonEngine::prepare()
 	stiffness.resize(nEl);
 	bonds.assign(12 * nEl, shared_ptr<Interaction>());
 	for (size_t e = 0; e < nEl; ++e) {
-		rdem::Nodes8<Real> X;
-		for (size_t a = 0; a < 8; ++a)
-			X[a] = refPos[8 * e + a];
-		stiffness[e] = rdem::hex8Stiffness<Real>(X, rdem::poissonTensorFromLambda<Real>(lambda[e]));
+		stiffness[e] = elementStiffness(e);
 		for (size_t k = 0; k < 12; ++k)
 			bonds[12 * e + k] = scene->interactions->find(nodes[8 * e + size_t(hexEdges[k][0])], nodes[8 * e + size_t(hexEdges[k][1])]);
 	}
+}
+
+rdem::Mat24<Real> RdemPoissonEngine::elementStiffness(size_t e) const
+{
+	rdem::Nodes8<Real> X;
+	for (size_t a = 0; a < 8; ++a)
+		X[a] = refPos[8 * e + a];
+	const Vector3r lo(skin[6 * e], skin[6 * e + 2], skin[6 * e + 4]), hi(skin[6 * e + 1], skin[6 * e + 3], skin[6 * e + 5]);
+	return rdem::hex8StiffnessWithSkin<Real>(X, rdem::poissonTensorFromLambda<Real>(lambda[e]), lo, hi);
 }
 
 vector<Real> RdemPoissonEngine::elementScales()
@@ -224,12 +334,7 @@ vector<Real> RdemPoissonEngine::stiffnessBound() const
 	const Scene* sc = Omega::instance().getScene().get();
 	vector<Real> bound(sc->bodies->size(), 0);
 	for (size_t e = 0; e < size_t(nElements()); ++e) {
-		rdem::Nodes8<Real> X;
-		for (size_t a = 0; a < 8; ++a)
-			X[a] = refPos[8 * e + a];
-		const rdem::Mat24<Real> K = stiffness.size() == size_t(nElements())
-		        ? stiffness[e]
-		        : rdem::hex8Stiffness<Real>(X, rdem::poissonTensorFromLambda<Real>(lambda[e]));
+		const rdem::Mat24<Real> K = stiffness.size() == size_t(nElements()) ? stiffness[e] : elementStiffness(e);
 		for (size_t a = 0; a < 8; ++a) {
 			Real rowMax = 0;
 			for (int d = 0; d < 3; ++d)

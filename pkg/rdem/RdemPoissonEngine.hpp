@@ -41,6 +41,8 @@ One virtual 8-node hexahedral finite element is made for every $2\times2\times2$
 		((vector<int>,nodes,,Attr::readonly,"Body ids of the element nodes, 8 per element, node $a=i+2j+4k$ at the block $(i,j,k)\\in\\{0,1\\}^3$ of the group."))
 		((vector<Vector3r>,refPos,,Attr::readonly,"Reference positions of the nodes (8 per element) [m]."))
 		((vector<Real>,lambda,,Attr::readonly,"Lamé constant $\\lambda$ of each element (mean of its blocks) [Pa]."))
+		((bool,consistent,false,,"Consistent formulation (doc/theory.md §5.2): elements also integrate over the half-block skin beyond free faces and ``build`` sets boundary weights of the springs, so that with $\\lambda+2\\mu$ springs (:yref:`Ip2_RdemMat_RdemMat_RdemPhys::springModulus` = 1) a uniform strain is an exact equilibrium and the apparent $E$ and $\\nu$ equal the input. Faces whose blocks have their normal translation prescribed (blocked DOF) are platens: no skin there. Off: the paper's elements on the centroid hull only."))
+		((vector<Real>,skin,,Attr::readonly,"Skin weights of each element (6 per element: $-x,+x,-y,+y,-z,+z$ of its axes), 0 without skin; see :yref:`RdemPoissonEngine::consistent`."))
 		((bool,corotational,false,,"Remove each element's rigid rotation before $K_p$ (see above)."))
 		((bool,releaseOnCrack,true,,"Scale element forces by the intact fraction of their bonds (see above)."))
 		,
@@ -57,6 +59,7 @@ private:
 	vector<rdem::Mat24<Real>>       stiffness; // K_p of each element, rebuilt from refPos and lambda (not saved)
 	vector<shared_ptr<Interaction>> bonds;     // the 12 bonds of each element, looked up once (not saved)
 	void                            prepare();
+	rdem::Mat24<Real>               elementStiffness(size_t e) const;
 };
 REGISTER_SERIALIZABLE(RdemPoissonEngine);
 

@@ -27,8 +27,9 @@ namespace {
 	{
 		if (s.blockedDOFs == State::DOF_ALL) return;
 		const Vector3r r  = point - s.pos;
-		const Real     kt = math::max(p.kn, p.ks) * area;
-		const Real     kr = area * (p.kn * r.cross(n).squaredNorm() + p.ks * (r.squaredNorm() + math::pow(r.dot(n), 2)));
+		const Real     kn = p.weightNormal * p.kn, ks = p.weightShear * p.ks;
+		const Real     kt = math::max(kn, ks) * area;
+		const Real     kr = area * (kn * r.cross(n).squaredNorm() + ks * (r.squaredNorm() + math::pow(r.dot(n), 2)));
 		omega2[size_t(id)] += 2 * (kt / s.mass + kr / s.inertia.minCoeff());
 	}
 }

@@ -188,7 +188,7 @@ def engines(segmentsPerEdge=2, poisson='paper', corotational=False, recontact=Tr
 		eng.append(InsertionSortCollider([Bo1_Box_Aabb()], verletDist=verletDist if verletDist is not None else 0.0))
 	eng.append(loop)
 	if mode is not None:
-		eng.append(RdemPoissonEngine(corotational=corotational))
+		eng.append(RdemPoissonEngine(corotational=corotational, consistent=mode == 1))
 	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None)
 	eng += [stepper, NewtonIntegrator(damping=damping, gravity=Vector3(gravity))]
 	if dt is not None:

@@ -425,9 +425,10 @@ TEST(Hex8, IsValidRejectsInvertedAndFlatElements)
 TEST(Hex8, IsValidRejectsFlatElementsInTiltedPlanes)
 {
 	GTEST_SKIP() << "Header bug: Hex8.hpp hex8IsValid (line 124) tests det J > 0 with no tolerance, so a flat "
-	                "(zero-volume) element whose det J is round-off (~1e-22 m³ for L = 0.03 m) is accepted whenever the "
-	                "round-off happens to be positive: 14 of these 200 orientations. Fix: compare det J with a scale, "
-	                "e.g. det J > 1e-8 |J.row(0)| |J.row(1)| |J.row(2)| (Hadamard: the ratio is a shape measure in [0, 1]).";
+	                "(zero-volume) element whose det J is pure round-off (~1e-22 m³ for L = 0.03 m) is accepted whenever "
+	                "that round-off is positive (14 of these 200 orientations in the Release build). Fix: compare det J "
+	                "with a scale, e.g. det J > 1e-8 |J.row(0)| |J.row(1)| |J.row(2)| (by Hadamard's inequality the "
+	                "ratio is a shape measure in [0, 1]).";
 	// The distorted element projected onto its z = 0 plane (zero volume, a valid quadrilateral in plan) and then
 	// rotated into 200 tilted planes. Exactly degenerate: every one must be rejected.
 	int accepted = 0;
@@ -504,6 +505,24 @@ TEST(Hex8, SmallStrainPoissonForceOfARigidRotationIsSpurious)
 		x[a] = R * X[a] + V3(0.5, -0.2, 0.1);
 	const M3 Rc = rdem::hex8Rotation(X, x);
 	EXPECT_LE((Kp * rdem::hex8Displacement(X, x, &Rc)).norm(), 1e-9 * (Kp * affine(X, G)).norm()); // ≤ 1e-12 L of u
+}
+
+TEST(Hex8, CorotationalFrameOfAnInvertedElementIsAProperRotation)
+{
+	// x = R M X with M = diag(1.1, 1.0, -0.5): the element is squashed through itself along z (det F < 0). The
+	// closest proper rotation to F = R M is R (flip the sign of the smallest singular value), not the reflection
+	// R diag(1, 1, -1) that U Vᵀ alone would give.
+	const M3 R = rotation(0.6, V3(2, -1, 1));
+	const M3 M = V3(1.1, 1.0, -0.5).asDiagonal();
+	for (const auto& [name, X] : elements()) {
+		SCOPED_TRACE(name);
+		Nodes x;
+		for (int a = 0; a < 8; ++a)
+			x[a] = R * (M * X[a]);
+		const M3 Rc = rdem::hex8Rotation(X, x);
+		EXPECT_NEAR(Rc.determinant(), 1.0, 1e-12);        // a rotation, not a reflection (round-off of the SVD)
+		EXPECT_LE((Rc - R).cwiseAbs().maxCoeff(), 1e-12); // singular values 1.1, 1, 0.5 well separated: 1e-12
+	}
 }
 
 TEST(Hex8, CorotationalDisplacementOfStretchPlusRotationIsTheStretch)

@@ -24,6 +24,7 @@
 #include <Eigen/LU>
 #include <Eigen/SVD>
 #include <array>
+#include <utility>
 #include <cmath>
 
 namespace yade {
@@ -110,6 +111,31 @@ namespace rdem {
 			const Mat6x24<S> B = hex8B<S>(X, xi, detJ);
 			K.noalias() += B.transpose() * D * B * detJ;
 		}
+		return K;
+	}
+
+	/* K over the element extended by a skin (consistent formulation, doc/theory.md §5.2): along each axis d the 1-D rule is
+	   the two Gauss points ±1/√3 (weight 1) plus the end point ξ_d = -1 with weight skinLo[d] and ξ_d = +1 with weight
+	   skinHi[d] (left out when 0). A weight t = ℓ/(half the element length along d) integrates the strain of the element's
+	   face over a slab of thickness ℓ beyond it: the strain of the skin is that of the nearest point of the element
+	   (B(clamp(ξ))). With all weights 0 this is hex8Stiffness. */
+	template <class S> Mat24<S> hex8StiffnessWithSkin(const Nodes8<S>& X, const Matrix6<S>& D, const Vec3<S>& skinLo, const Vec3<S>& skinHi)
+	{
+		using std::sqrt;
+		const S g = 1 / sqrt(S(3));
+		std::array<std::array<std::pair<S, S>, 4>, 3> rule; // per axis: (ξ, weight) points, unused ones weight 0
+		for (int d = 0; d < 3; ++d)
+			rule[size_t(d)] = { { { -g, S(1) }, { g, S(1) }, { S(-1), skinLo[d] }, { S(1), skinHi[d] } } };
+		Mat24<S> K = Mat24<S>::Zero();
+		for (const auto& px : rule[0])
+			for (const auto& py : rule[1])
+				for (const auto& pz : rule[2]) {
+					const S w = px.second * py.second * pz.second;
+					if (w == 0) continue;
+					S                detJ;
+					const Mat6x24<S> B = hex8B<S>(X, Vec3<S>(px.first, py.first, pz.first), detJ);
+					K.noalias() += B.transpose() * D * B * (w * detJ);
+				}
 		return K;
 	}
 
