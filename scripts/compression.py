@@ -127,6 +127,8 @@ firstSegs = first.get('segments', [])
 results = dict(
         input=vars(opts),
         blocks=len(test.ids),
+        specimen=dict(blocksPerEdge=test.n, size=test.size, x0=0.0, y0=0.0),
+        tensileStrength=test.material.tensileStrength,
         bonds=test.nBonds,
         poissonElements=test.nElements,
         apparentPoissonBeforeCracking=nuBefore,
