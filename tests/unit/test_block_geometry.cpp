@@ -5,8 +5,9 @@
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
 /* Unit tests of pkg/rdem/math/BlockGeometry.hpp: the face shared by two oriented boxes, the contact of a face sample
-   point with a block (sampleContact) and the separating-axis overlap test (blocksOverlap). Blocks are unit cubes (or 1 × 0.6 × 0.8 boxes) with coordinates O(1) m, so round-off is ~1e-16 m
-   and the 1e-12 m tolerances used below leave a margin of 10⁴ while being far below any geometric offset tested. */
+   point with a block (sampleContact) and the separating-axis overlap test (blocksOverlap). Blocks are unit cubes or
+   boxes with half-extents of 0.2-3 m and coordinates O(1-10) m, so round-off is ~1e-16-1e-15 m; the 1e-12 m (1e-13 m
+   after a rigid motion) tolerances leave a margin of ≥ 10² while being far below any geometric offset tested. */
 #include <pkg/rdem/math/BlockGeometry.hpp>
 
 #include <gtest/gtest.h>

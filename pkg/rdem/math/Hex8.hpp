@@ -147,7 +147,10 @@ namespace rdem {
 		const S g = 1 / sqrt(S(3));
 		for (int q = 0; q < 9; ++q) {
 			const Vec3<S> xi = q < 8 ? Vec3<S>(g * hex8Corner<S>(q)) : Vec3<S>(Vec3<S>::Zero());
-			if (!(hex8Jacobian<S>(X, hex8ShapeDerivatives<S>(xi)).determinant() > 0)) return false;
+			// Scale-free: det J over the product of the row norms of J is in [-1, 1] (Hadamard's inequality); a flat
+			// element gives round-off of either sign, so require more than that.
+			const Mat3<S> J = hex8Jacobian<S>(X, hex8ShapeDerivatives<S>(xi));
+			if (!(J.determinant() > S(1e-8) * J.row(0).norm() * J.row(1).norm() * J.row(2).norm())) return false;
 		}
 		return true;
 	}
