@@ -253,6 +253,14 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 	prepare();
 }
 
+void RdemPoissonEngine::buildPy(const py::list& ids)
+{
+	vector<Body::id_t> v;
+	for (long i = 0; i < py::len(ids); ++i)
+		v.push_back(py::extract<Body::id_t>(ids[i]));
+	build(v);
+}
+
 void RdemPoissonEngine::postLoad(RdemPoissonEngine&)
 {
 	stiffness.clear();

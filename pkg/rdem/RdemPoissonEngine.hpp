@@ -19,6 +19,8 @@ public:
 	/// Find every 2×2×2 group of bonded blocks among ids (all RdemBlock bodies if empty) and make one element each;
 	/// the current positions become the reference. Throws std::invalid_argument for block sets that are not grids.
 	void build(const vector<Body::id_t>& ids);
+	/// Python front of build: a list of ids, empty (default) for all blocks.
+	void buildPy(const py::list& ids);
 	/// Upper bound of the Poisson stiffness per body: max over its 3 rows of Σ|K_p| of every element it is a node of [N/m].
 	vector<Real> stiffnessBound() const;
 	/// Number of elements.
@@ -47,7 +49,7 @@ One virtual 8-node hexahedral finite element is made for every $2\times2\times2$
 		((bool,releaseOnCrack,true,,"Scale element forces by the intact fraction of their bonds (see above)."))
 		,
 		/* ctor */,
-		.def("build",&RdemPoissonEngine::build,(py::arg("ids")=vector<Body::id_t>()),"Make the elements from the bonded blocks ``ids`` (default: all blocks); current positions become the reference.")
+		.def("build",&RdemPoissonEngine::buildPy,(py::arg("ids")=py::list()),"Make the elements from the bonded blocks ``ids`` (default: all blocks); current positions become the reference.")
 		.def("stiffnessBound",&RdemPoissonEngine::stiffnessBound,"Per body, an upper bound of the Poisson stiffness it feels [N/m] (used by :yref:`RdemTimeStepper`).")
 		.def("elementScales",&RdemPoissonEngine::elementScales,"Per element, the current force scale (1 intact, 0 released by a crack).")
 		.add_property("nElements",&RdemPoissonEngine::nElements,"Number of elements.")
