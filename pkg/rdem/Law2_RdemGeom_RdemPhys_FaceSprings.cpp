@@ -7,6 +7,7 @@
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <core/Scene.hpp>
 #include <pkg/rdem/math/Failure.hpp>
+#include <limits>
 
 namespace yade {
 
@@ -20,12 +21,21 @@ namespace {
 
 	/* Contact spring and dashpot of one point (paper eqs. 13, 17). delta > 0 is the overlap [m], n the unit normal from
 	   body 1 to body 2, v the velocity of body 2 relative to body 1 at the point, shear the elastic shear elongation
-	   (updated here). Returns the force on body 2 [N]. */
+	   (updated here), cMax the stability cap of the dashpot coefficient [N·s/m]. Returns the force on body 2 [N]. */
 	Vector3r contactForce(
-	        const RdemPhys& p, Real area, Real delta, const Vector3r& n, const Vector3r& v, Real dt, Vector3r& shear, bool trackEnergy, Energies& e)
+	        const RdemPhys& p,
+	        Real            area,
+	        Real            delta,
+	        const Vector3r& n,
+	        const Vector3r& v,
+	        Real            dt,
+	        Real            cMax,
+	        Vector3r&       shear,
+	        bool            trackEnergy,
+	        Energies&       e)
 	{
 		const Real     an = p.weightNormal * area, as = p.weightShear * area;
-		const Real     kn = p.kn * an, ks = p.ks * as, cn = p.cn * an, cs = p.cs * as;
+		const Real     kn = p.kn * an, ks = p.ks * as, cn = math::min(p.cn * an, cMax), cs = math::min(p.cs * as, cMax);
 		const Real     vn     = v.dot(n);
 		const Vector3r vt     = v - vn * n;
 		const Real     fElast = kn * delta;                           // elastic normal force, compressive > 0
@@ -64,6 +74,17 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	const Real     dt          = scene->dt;
 	Energies       e;
 	Vector3r       f2 = Vector3r::Zero(), t1 = Vector3r::Zero(), t2 = Vector3r::Zero();
+	/* Stability cap of a contact dashpot (explicit central differences): a dashpot may at most stop, never reverse, the
+	   relative motion of its point within one step, c ≤ share·m_eff/Δt, with m_eff the pair's effective mass at the
+	   point along n and share its part of the interaction's contact area. It binds only where a contact drives a small
+	   effective mass (an edge or a corner of a tumbling block); for a block landing flat it is 2.7 times above eq. 13's
+	   critical value at the paper's time step. */
+	auto dashpotCap = [&](const Vector3r& C, const Vector3r& n, Real share) {
+		Real invMass = 0;
+		if (s1.blockedDOFs != State::DOF_ALL) invMass += 1 / s1.mass + (C - x1).cross(n).squaredNorm() / s1.inertia.minCoeff();
+		if (s2.blockedDOFs != State::DOF_ALL) invMass += 1 / s2.mass + (C - x2).cross(n).squaredNorm() / s2.inertia.minCoeff();
+		return invMass > 0 ? share / (invMass * dt) : std::numeric_limits<Real>::infinity();
+	};
 	auto           apply = [&](const Vector3r& F, const Vector3r& C) {
                 f2 += F;
                 t2 += (C - x2).cross(F);
@@ -74,6 +95,14 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	if (nSeg > 0) {
 		bool       anyIntactOrTouching = false;
 		const Real maxSlide            = g.segHalfSizes.minCoeff();
+		auto       touching            = [&](size_t i, Real un, const Vector3r& us) {
+                        return p.segState[i] != int(rdem::SegmentState::Intact) && un < 0 && us.norm() < maxSlide;
+		};
+		Real contactArea = 0;
+		for (size_t i = 0; i < nSeg; ++i) {
+			const Real un = g.segDisp[i].dot(g.normal);
+			if (touching(i, un, g.segDisp[i] - un * g.normal)) contactArea += g.segArea[i];
+		}
 		for (size_t i = 0; i < nSeg; ++i) {
 			const Real     A  = g.segArea[i];
 			const Vector3r n  = g.normal;
@@ -101,7 +130,8 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 			}
 			// Broken: the contact spring of this segment (eqs. 13, 17), while the material points overlap and face each other.
 			if (un < 0 && us.norm() < maxSlide) {
-				const Vector3r F = contactForce(p, A, -un, n, g.segVel[i], dt, p.segShear[i], trackEnergy, e);
+				const Real     share = contactArea > 0 ? A / contactArea : Real(1); // a segment broken in this step joins now
+				const Vector3r F     = contactForce(p, A, -un, n, g.segVel[i], dt, dashpotCap(g.segPoint[i], n, share), p.segShear[i], trackEnergy, e);
 				apply(F, g.segPoint[i]);
 				p.segSigma[i]       = -F.dot(n) / (p.weightNormal * A);
 				p.segTau[i]         = (F - F.dot(n) * n).norm() / (p.weightShear * A);
@@ -120,10 +150,14 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		const size_t nKeys = size_t(2 * 6 * (g.samplesPerEdge + 1) * (g.samplesPerEdge + 1));
 		p.sampleShear.resize(nKeys, Vector3r::Zero());
 		std::vector<char> active(nKeys, 0);
+		Real              contactArea = 0;
+		for (Real a : g.sampleArea)
+			contactArea += a;
 		for (size_t k = 0; k < g.sampleKey.size(); ++k) {
-			const size_t key = size_t(g.sampleKey[k]);
-			active[key]      = 1;
-			apply(contactForce(p, g.sampleArea[k], g.sampleDepth[k], g.sampleNormal[k], g.sampleVel[k], dt, p.sampleShear[key], trackEnergy, e),
+			const size_t key  = size_t(g.sampleKey[k]);
+			active[key]       = 1;
+			const Real   cMax = dashpotCap(g.samplePoint[k], g.sampleNormal[k], g.sampleArea[k] / contactArea);
+			apply(contactForce(p, g.sampleArea[k], g.sampleDepth[k], g.sampleNormal[k], g.sampleVel[k], dt, cMax, p.sampleShear[key], trackEnergy, e),
 			      g.samplePoint[k]);
 		}
 		for (size_t key = 0; key < nKeys; ++key)

@@ -49,7 +49,7 @@ One virtual 8-node hexahedral finite element is made for every $2\times2\times2$
 		((bool,releaseOnCrack,true,,"Scale element forces by the intact fraction of their bonds (see above)."))
 		,
 		/* ctor */,
-		.def("build",&RdemPoissonEngine::buildPy,(py::arg("ids")=py::list()),"Make the elements from the bonded blocks ``ids`` (default: all blocks); current positions become the reference.")
+		.def("build",&RdemPoissonEngine::buildPy,(py::arg("ids")=py::list()),"Make the elements from the bonded blocks ``ids`` (default: all blocks); current positions become the reference. With ``consistent``, block the platens' DOFs first: the skin and spring weights depend on them.")
 		.def("stiffnessBound",&RdemPoissonEngine::stiffnessBound,"Per body, an upper bound of the Poisson stiffness it feels [N/m] (used by :yref:`RdemTimeStepper`).")
 		.def("elementScales",&RdemPoissonEngine::elementScales,"Per element, the current force scale (1 intact, 0 released by a crack).")
 		.add_property("nElements",&RdemPoissonEngine::nElements,"Number of elements.")

@@ -68,12 +68,12 @@ class CompressionTest:
 		self.top = build.blockGrid((n, n, 1), (h, h, plateHeight), self.material, origin=(0, 0, plateHeight + size), color=red)
 		self.ids = self.bottom + self.specimen + self.top
 		self.nBonds = build.bond(self.ids)
+		for i in self.bottom + self.top:
+			O.bodies[i].state.blockedDOFs = 'zXYZ'  # before the Poisson elements: the consistent formulation reads platens
 		self.nElements = 0
 		if build.POISSON_MODES[formulation] is not None:
 			build.poissonEngine().build(self.ids)
 			self.nElements = build.poissonEngine().nElements
-		for i in self.bottom + self.top:
-			O.bodies[i].state.blockedDOFs = 'zXYZ'
 		for i in self.top:
 			O.bodies[i].state.vel = Vector3(0, 0, -rate)
 		self.area = size * size

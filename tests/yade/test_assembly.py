@@ -4,7 +4,6 @@ import math
 import os
 import subprocess
 import sys
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import unittest
 import harness
 from yade import O, Vector3
@@ -12,7 +11,7 @@ from yade.wrapper import RdemMat
 import rdem
 
 E, NU, H = 30e9, 0.2, 0.01
-HERE = os.path.dirname(os.path.abspath(__file__))
+HERE = os.path.dirname(os.path.abspath(sys.argv[0]))  # YADE runs the test file as sys.argv[0]
 
 
 class Assembly(unittest.TestCase):

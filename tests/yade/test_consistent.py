@@ -3,7 +3,6 @@ Poisson elements, so the apparent E and ν equal the input for every ν. Checked
 between platens) with every block placed on the uniform field and blocked: one step gives the residual forces."""
 import os
 import sys
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import unittest
 import harness
 from yade import O, Vector3

@@ -5,7 +5,6 @@ sample that entered the other block pushes back with k_n per area times its weig
 import math
 import os
 import sys
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import unittest
 import harness
 from yade import O, Vector3, Quaternion

@@ -4,7 +4,6 @@ Two bonded 2 cm cubes, 2x2 springs on the shared face; both blocks blocked and p
 the law for exactly the configuration set (zero velocities: dashpots exert nothing)."""
 import os
 import sys
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import unittest
 import harness
 from yade import O, Vector3
@@ -42,7 +41,7 @@ class Breakage(unittest.TestCase):
 		self.assertEqual(rdem.breakCounts(), (0, 0))
 		self.place(Vector3(uLimit * (1 + 1e-9), 0, 0))  # sigma = f_t (1 + 1e-9): all four springs break in tension
 		self.assertEqual(rdem.breakCounts(), (4, 0))
-		self.assertEqual(list(O.interactions[0, 1].phys.segState), [1, 1, 1, 1])
+		self.assertFalse(O.interactions[0, 1].isReal)  # fully broken and open: the bond is released
 
 	def testBrokenTransmitsCompressionOnly(self):
 		self.build(ft=1e6)
@@ -52,7 +51,7 @@ class Breakage(unittest.TestCase):
 		self.assertEqual(f.norm(), 0)
 		u = 1e-7
 		f = self.place(Vector3(-u, 0, 0))  # closed: contact springs k_n A per segment, same constants (paper §3.2)
-		self.assertAlmostEqual(f[0] / (KN * AREA * u), 1, delta=1e-12)  # round-off of 4 equal terms
+		self.assertAlmostEqual(f[0] / (KN * AREA * u), 1, delta=1e-9)  # round-off of u, a difference of 0.03 m positions
 
 	def testShearBreakOnMohrCoulombLine(self):
 		c, phi = 2e6, 0.5

@@ -2,7 +2,6 @@
 import math
 import os
 import sys
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import unittest
 import numpy as np
 import harness

@@ -94,32 +94,39 @@ namespace rdem {
 	};
 
 	/* Contact of a sample point p, lying on a face of another block with outward unit normal nf, with block Y.
-	   Candidate faces of Y are those facing the sampled face (cosine -nf·n > 0) whose rectangle contains the projection
-	   of p (edges included, with a relative tolerance tol) and whose plane p has crossed by 0 < depth ≤ half-thickness;
-	   the shallowest candidate wins. Counting edges as inside makes flush, aligned faces (stacked blocks) see their
-	   edge and corner samples; requiring facing faces keeps the side faces of a stacked block out of the contact. */
+	   p is inside Y when its distance d_f = h_k - s q_k behind each face plane of Y is ≥ -tol·h_k (edges and faces
+	   included). The contact face is the nearest face among those p lies strictly behind (d_f > tol·h_k: a face whose
+	   plane p only touches, like the side of a flush stacked block, is not a candidate); it counts only if it faces the
+	   sampled face (cosine -nf·n > 0), otherwise the other block's samples carry this contact. Choosing the nearest face
+	   first keeps a sample on an inner face of an assembly (between two touching blocks) from being pushed out
+	   sideways through a far face. */
 	template <class S>
 	SampleHit<S> sampleContact(const OrientedBlock<S>& Y, const Eigen::Matrix<S, 3, 1>& p, const Eigen::Matrix<S, 3, 1>& nf, S tol = S(1e-9))
 	{
-		using std::abs;
 		const Eigen::Matrix<S, 3, 1> q = Y.rot.transpose() * (p - Y.pos);
 		SampleHit<S>                 best;
+		int                          kBest = -1, sBest = 0;
+		S                            dBest = 0;
 		for (int k = 0; k < 3; ++k) {
 			for (int s = -1; s <= 1; s += 2) {
-				const Eigen::Matrix<S, 3, 1> n = S(s) * Y.rot.col(k);
-				const S                      c = -nf.dot(n);
-				if (!(c > 0)) continue;
 				const S d = Y.half[k] - S(s) * q[k];
-				if (!(d > 0 && d <= Y.half[k])) continue;
-				const int j1 = (k + 1) % 3, j2 = (k + 2) % 3;
-				if (abs(q[j1]) > Y.half[j1] * (1 + tol) || abs(q[j2]) > Y.half[j2] * (1 + tol)) continue;
-				if (best.hit && d >= best.depth) continue;
-				best.hit    = true;
-				best.depth  = d;
-				best.cosine = c;
-				best.normal = n;
+				if (d < -tol * Y.half[k]) return best; // outside
+				if (d <= tol * Y.half[k]) continue;    // on this face's plane: not a candidate
+				if (kBest < 0 || d < dBest) {
+					kBest = k;
+					sBest = s;
+					dBest = d;
+				}
 			}
 		}
+		if (kBest < 0) return best;
+		const Eigen::Matrix<S, 3, 1> n = S(sBest) * Y.rot.col(kBest);
+		const S                      c = -nf.dot(n);
+		if (!(c > 0)) return best;
+		best.hit    = true;
+		best.depth  = dBest;
+		best.cosine = c;
+		best.normal = n;
 		return best;
 	}
 
