@@ -7,6 +7,7 @@
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
 #include <pkg/rdem/math/BlockGeometry.hpp>
 #include <pkg/rdem/math/SegmentGrid.hpp>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -64,6 +65,25 @@ namespace {
 			}
 		}
 	}
+
+	/// Edge-to-edge contact of the pair (rdem::edgeEdgeContact), appended to geom with the key after all face samples.
+	/// Its area is that of a corner sample of the smaller block, a quarter of a segment: a penalty for the contact of
+	/// two edges, which carries no area of its own.
+	void edgeInside(const Block& A, const State& s1, const Block& B, const State& s2, Real tol, int n, RdemGeom& g)
+	{
+		const auto hit = rdem::edgeEdgeContact<Real>(A, B, tol);
+		if (!hit.hit) return;
+		Real segArea = std::numeric_limits<Real>::infinity();
+		for (const Block* X : { &A, &B })
+			for (int k = 0; k < 3; ++k)
+				segArea = math::min(segArea, 4 * X->half[(k + 1) % 3] * X->half[(k + 2) % 3] / Real(n * n));
+		g.sampleKey.push_back(2 * 6 * (n + 1) * (n + 1));
+		g.samplePoint.push_back(hit.point);
+		g.sampleNormal.push_back(hit.normal);
+		g.sampleVel.push_back(pointVelocity(s2, B.pos, hit.point) - pointVelocity(s1, A.pos, hit.point));
+		g.sampleDepth.push_back(hit.depth);
+		g.sampleArea.push_back(segArea / 4);
+	}
 }
 
 void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom&)
@@ -113,6 +133,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 			probe.samplesPerEdge = segmentsPerEdge;
 			sampleInside(A, state1, B, state2, 0, segmentsPerEdge, probe);
 			sampleInside(B, state2, A, state1, 1, segmentsPerEdge, probe);
+			edgeInside(A, state1, B, state2, touchTolerance(A, B), segmentsPerEdge, probe);
 			if (probe.sampleKey.empty()) return false;
 			auto g            = shared_ptr<RdemGeom>(new RdemGeom(probe));
 			g->ell1           = faceDistance(A, probe.sampleNormal[0]);
@@ -144,6 +165,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	if (rdem::blocksOverlap<Real>(A, B, touchTolerance(A, B))) {
 		sampleInside(A, state1, B, state2, 0, g.samplesPerEdge, g);
 		sampleInside(B, state2, A, state1, 1, g.samplesPerEdge, g);
+		edgeInside(A, state1, B, state2, touchTolerance(A, B), g.samplesPerEdge, g);
 	}
 	return true; // a real interaction stays; the law erases it when no sample is in contact
 }

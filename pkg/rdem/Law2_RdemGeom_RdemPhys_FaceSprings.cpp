@@ -8,6 +8,7 @@
 #include <core/Scene.hpp>
 #include <pkg/rdem/math/Failure.hpp>
 #include <limits>
+#include <utility>
 
 namespace yade {
 
@@ -21,7 +22,8 @@ namespace {
 
 	/* Contact spring and dashpot of one point (paper eqs. 13, 17). delta > 0 is the overlap [m], n the unit normal from
 	   body 1 to body 2, v the velocity of body 2 relative to body 1 at the point, shear the elastic shear elongation
-	   (updated here), cMax the stability cap of the dashpot coefficient [N·s/m]. Returns the force on body 2 [N]. */
+	   (updated here), cMax the stability caps of the normal and shear dashpot coefficients [N·s/m]. Returns the force on
+	   body 2 [N]. */
 	Vector3r contactForce(
 	        const RdemPhys& p,
 	        Real            area,
@@ -29,13 +31,13 @@ namespace {
 	        const Vector3r& n,
 	        const Vector3r& v,
 	        Real            dt,
-	        Real            cMax,
+	        const Vector2r& cMax,
 	        Vector3r&       shear,
 	        bool            trackEnergy,
 	        Energies&       e)
 	{
 		const Real     an = p.weightNormal * area, as = p.weightShear * area;
-		const Real     kn = p.kn * an, ks = p.ks * as, cn = math::min(p.cn * an, cMax), cs = math::min(p.cs * as, cMax);
+		const Real     kn = p.kn * an, ks = p.ks * as, cn = math::min(p.cn * an, cMax[0]), cs = math::min(p.cs * as, cMax[1]);
 		const Real     vn     = v.dot(n);
 		const Vector3r vt     = v - vn * n;
 		const Real     fElast = kn * delta;                           // elastic normal force, compressive > 0
@@ -74,23 +76,28 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	const Real     dt          = scene->dt;
 	Energies       e;
 	Vector3r       f2 = Vector3r::Zero(), t1 = Vector3r::Zero(), t2 = Vector3r::Zero();
-	/* Stability cap of a contact dashpot (explicit central differences): a dashpot may at most stop, never reverse, the
-	   relative motion of its point within one step, c ≤ share·m_eff/Δt, with m_eff the pair's effective mass at the
-	   point along n and share its part of the interaction's contact area. It binds only where a contact drives a small
-	   effective mass (an edge or a corner of a tumbling block); for a block landing flat it is 2.7 times above eq. 13's
-	   critical value at the paper's time step. */
-	auto dashpotCap = [&](const Vector3r& C, const Vector3r& n, Real share) {
-		Real invMass = 0;
-		if (s1.blockedDOFs != State::DOF_ALL) invMass += 1 / s1.mass + (C - x1).cross(n).squaredNorm() / s1.inertia.minCoeff();
-		if (s2.blockedDOFs != State::DOF_ALL) invMass += 1 / s2.mass + (C - x2).cross(n).squaredNorm() / s2.inertia.minCoeff();
-		return invMass > 0 ? share / (invMass * dt) : std::numeric_limits<Real>::infinity();
-	};
 	auto           apply = [&](const Vector3r& F, const Vector3r& C) {
                 f2 += F;
                 t2 += (C - x2).cross(F);
                 t1 -= (C - x1).cross(F);
 	};
-
+	/* Stability caps of a contact dashpot (explicit central differences): a dashpot may at most stop, never reverse, the
+	   relative motion of its point within one step, c ≤ share·m_eff/Δt, with m_eff the pair's effective mass at the
+	   point (1/m_eff = Σ 1/m + |r×e|²/I_min over the free blocks, e the direction of the dashpot) and share its part of
+	   the interaction's contact area. For the shear dashpot, whose direction changes, |r×e|² is bounded by |r|². The caps
+	   bind where a contact drives a small effective mass, at an edge or a corner of a tumbling block; eq. (13) holds
+	   elsewhere (doc/theory.md §3). */
+	auto dashpotCap = [&](const Vector3r& C, const Vector3r& n, Real share) {
+		Real invN = 0, invS = 0;
+		for (const auto& sx : { std::make_pair(&s1, x1), std::make_pair(&s2, x2) }) {
+			if (sx.first->blockedDOFs == State::DOF_ALL) continue;
+			const Vector3r r = C - sx.second;
+			invN += 1 / sx.first->mass + r.cross(n).squaredNorm() / sx.first->inertia.minCoeff();
+			invS += 1 / sx.first->mass + r.squaredNorm() / sx.first->inertia.minCoeff();
+		}
+		const Real inf = std::numeric_limits<Real>::infinity();
+		return Vector2r(invN > 0 ? share / (invN * dt) : inf, invS > 0 ? share / (invS * dt) : inf);
+	};
 	const size_t nSeg = g.nSegments();
 	if (nSeg > 0) {
 		bool       anyIntactOrTouching = false;
@@ -147,7 +154,7 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		}
 	} else {
 		if (g.sampleKey.empty()) return false; // apart: the collider drops the pair once the bounding boxes separate
-		const size_t nKeys = size_t(2 * 6 * (g.samplesPerEdge + 1) * (g.samplesPerEdge + 1));
+		const size_t nKeys = size_t(2 * 6 * (g.samplesPerEdge + 1) * (g.samplesPerEdge + 1) + 1); // face samples, then the edge contact
 		p.sampleShear.resize(nKeys, Vector3r::Zero());
 		std::vector<char> active(nKeys, 0);
 		Real              contactArea = 0;
@@ -156,7 +163,7 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		for (size_t k = 0; k < g.sampleKey.size(); ++k) {
 			const size_t key  = size_t(g.sampleKey[k]);
 			active[key]       = 1;
-			const Real   cMax = dashpotCap(g.samplePoint[k], g.sampleNormal[k], g.sampleArea[k] / contactArea);
+			const Vector2r cMax = dashpotCap(g.samplePoint[k], g.sampleNormal[k], g.sampleArea[k] / contactArea);
 			apply(contactForce(p, g.sampleArea[k], g.sampleDepth[k], g.sampleNormal[k], g.sampleVel[k], dt, cMax, p.sampleShear[key], trackEnergy, e),
 			      g.samplePoint[k]);
 		}

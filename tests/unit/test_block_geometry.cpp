@@ -204,10 +204,13 @@ TEST(BlockGeometry, SampleContactEntersTheFacingFace)
 	ASSERT_TRUE(hit.hit);
 	EXPECT_NEAR(hit.depth, 0.2, 1e-15); // 1 - 0.8, one rounding
 	EXPECT_EQ(hit.normal, -V3::UnitX());
-	// The full half-thickness is allowed (d ≤ h): p at the centre plane, d = 1 exactly.
-	hit = rdem::sampleContact(Y, V3(0.0, 0.5, 0.2), nf);
+	// Deep samples count while the facing face is the nearest one: p 0.05 from the centre plane, d = 0.95.
+	hit = rdem::sampleContact(Y, V3(0.05, 0.5, 0.2), nf);
 	EXPECT_TRUE(hit.hit);
-	EXPECT_EQ(hit.depth, 1.0); // 1 - 0: exact
+	EXPECT_NEAR(hit.depth, 0.95, 1e-15); // one rounding
+	// Past the centre plane the nearest face is the far one (-x), which does not face nf: no hit (the other block's
+	// samples carry such a contact).
+	EXPECT_FALSE(rdem::sampleContact(Y, V3(-0.05, 0.5, 0.2), nf).hit);
 	// nf = +y: only Y's -y face is facing (cosine 1), where d = h_y + q_y = 2.5 > h_y: no hit; the x faces have
 	// cosine 0 and are never candidates even though p is 0.1 inside the +x face.
 	EXPECT_FALSE(rdem::sampleContact(Y, V3(0.9, 0.5, 0.2), V3::UnitY().eval()).hit);

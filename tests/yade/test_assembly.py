@@ -78,6 +78,9 @@ class Assembly(unittest.TestCase):
 	def testEnergyConservedWithoutDamping(self):
 		ids = self.bar(n=4)
 		O.engines[-1].damping = 0
+		# YADE's kinetic energy uses leapfrog half-step velocities while the spring energy is at full steps: their sum
+		# oscillates by O(omega dt) without drifting (measured 1.6 % at safety 0.1, 0.2 % at 0.02): small steps here.
+		rdem.timeStepper().safety = 0.02
 		O.trackEnergy = True
 		O.bodies[ids[-1]].state.vel = Vector3(0.05, 0.02, -0.01)
 		O.bodies[ids[-1]].state.angVel = Vector3(1, -2, 3)
@@ -88,7 +91,7 @@ class Assembly(unittest.TestCase):
 		for k in range(50):
 			O.run(100, True)
 			worst = max(worst, abs(total() - e0) / e0)
-		self.assertLess(worst, 0.01)  # leapfrog at safety 0.8 of a conservative bound: bounded oscillation of ~1e-3
+		self.assertLess(worst, 0.005)  # 0.2 % measured at safety 0.02; a drift would grow past it over the 5000 steps
 		self.assertEqual(O.energy['rdemDashpot'], 0)
 
 	def testSerialEqualsOpenMP(self):
