@@ -86,8 +86,7 @@ def record():
 	history['tension'].append(nT)
 	history['shear'].append(nS)
 	if nT + nS > 0 and not first:
-		broken = [s for s in rdem.segmentTable() if s['state'] != 0]
-		first.update(time=O.time, iter=O.iter, stress=history['stress'][-1], disp=history['disp'][-1], segments=broken)
+		first.update(time=O.time, iter=O.iter, stress=history['stress'][-1], disp=history['disp'][-1], segments=rdem.brokenSegments(cracks.snapshot))
 
 
 progress = dict(wall=time.time(), iter=0)
@@ -169,11 +168,11 @@ ax.set_ylabel('mean compressive stress [MPa]')
 fig.tight_layout()
 fig.savefig(os.path.join(opts.out, 'stress_displacement.png'), dpi=120)
 
-segs = [s for s in rdem.segmentTable() if s['state'] != 0]
+segs = rdem.brokenSegments(cracks.snapshot)
 fig, axes = plt.subplots(1, 2, figsize=(10, 5))
 for ax, (u, v, name) in zip(axes, ((0, 2, 'front view (x-z)'), (0, 1, 'top view (x-y)'))):
-	ax.scatter([s['point'][u] for s in segs], [s['point'][v] for s in segs], s=4, c=['r' if s['state'] == 1 else 'b' for s in segs])
-	ax.set_title('%s: %d broken springs' % (name, len(segs)))
+	ax.scatter([s['point'][u] for s in segs], [s['point'][v] for s in segs], s=4, c=['b' if s['state'] == 2 else 'r' for s in segs])
+	ax.set_title('%s: %d broken springs (red tension, blue shear)' % (name, len(segs)))
 	ax.set_aspect('equal')
 	ax.set_xlabel('xyz'[u] + ' [m]')
 	ax.set_ylabel('xyz'[v] + ' [m]')

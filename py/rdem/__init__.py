@@ -15,10 +15,10 @@ Modules: :mod:`rdem.build` (blocks, bonds, engine lists), :mod:`rdem.measure` (s
 :mod:`rdem.export` (ParaView files of cracks and Poisson elements).
 """
 from rdem.build import block, blockGrid, bond, engines, poissonEngine, timeStepper, law, geomFunctor
-from rdem.measure import segmentTable, breakCounts, apparentPoisson
+from rdem.measure import segmentTable, bondSnapshot, brokenSegments, breakCounts, apparentPoisson
 from rdem.export import CrackExport
 
 __all__ = [
-        'block', 'blockGrid', 'bond', 'engines', 'poissonEngine', 'timeStepper', 'law', 'geomFunctor', 'segmentTable', 'breakCounts',
+        'block', 'blockGrid', 'bond', 'engines', 'poissonEngine', 'timeStepper', 'law', 'geomFunctor', 'segmentTable', 'bondSnapshot', 'brokenSegments', 'breakCounts',
         'apparentPoisson', 'CrackExport'
 ]

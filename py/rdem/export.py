@@ -4,8 +4,8 @@ Blocks themselves are written by YADE's ``VTKRecorder(recorders=['boxes'])``. Fi
 (``.vtu``, ASCII) plus a ``.pvd`` collection per series so ParaView can play them in time."""
 import os
 from yade import O
-from yade.wrapper import RdemGeom, RdemPhys
 import rdem.build
+import rdem.measure
 
 
 def _writeVtu(path, points, cells, cellType, cellData):
@@ -32,7 +32,8 @@ def _writeVtu(path, points, cells, cellType, cellData):
 
 
 class CrackExport:
-	"""Writes ``<prefix>cracks.<iter>.vtu`` (one quad per broken segment, with its state and stresses) and
+	"""Writes ``<prefix>cracks.<iter>.vtu`` (one quad per segment broken since the export was made: state 1 tension, 2 shear,
+	3 released bond) and
 	``<prefix>poisson.<iter>.vtu`` (one hexahedron per Poisson element on the current centroids, with its force scale), plus
 	``.pvd`` collections. Call :meth:`write` from a :yref:`PyRunner`, and :meth:`close` at the end."""
 
@@ -42,6 +43,7 @@ class CrackExport:
 		if d:
 			os.makedirs(d, exist_ok=True)
 		self.series = {'cracks': [], 'poisson': []}
+		self.snapshot = rdem.measure.bondSnapshot()  # the bonds of the scene when the export starts
 
 	def write(self):
 		self._cracks()
@@ -51,26 +53,15 @@ class CrackExport:
 			pass  # no Poisson engine in this scene
 
 	def _cracks(self):
-		points, cells, state, sigma, tau = [], [], [], [], []
-		for I in O.interactions:
-			if not I.isReal or not isinstance(I.geom, RdemGeom) or not isinstance(I.phys, RdemPhys):
-				continue
-			g, p = I.geom, I.phys
-			s1 = O.bodies[I.id1].state
-			t1 = s1.ori * g.segTangent1
-			t2 = (s1.ori * g.segNormal1).cross(t1)
-			h1, h2 = g.segHalfSizes[0], g.segHalfSizes[1]
-			for k, pt in enumerate(g.segPoint1):
-				if p.segState[k] == 0:
-					continue
-				c = s1.pos + s1.ori * pt
-				base = len(points)
-				points += [c - h1 * t1 - h2 * t2, c + h1 * t1 - h2 * t2, c + h1 * t1 + h2 * t2, c - h1 * t1 + h2 * t2]
-				cells.append([base, base + 1, base + 2, base + 3])
-				state.append(p.segState[k])
-				sigma.append(p.segSigma[k])
-				tau.append(p.segTau[k])
-		self._save('cracks', points, cells, 9, {'state': state, 'sigma': sigma, 'tau': tau})
+		points, cells, state = [], [], []
+		for sg in rdem.measure.brokenSegments(self.snapshot):
+			c, t1, t2 = sg['point'], sg['t1'], sg['t2']
+			h1, h2 = sg['halfSizes']
+			base = len(points)
+			points += [c - h1 * t1 - h2 * t2, c + h1 * t1 - h2 * t2, c + h1 * t1 + h2 * t2, c - h1 * t1 + h2 * t2]
+			cells.append([base, base + 1, base + 2, base + 3])
+			state.append(sg['state'])
+		self._save('cracks', points, cells, 9, {'state': state})
 
 	def _poisson(self, eng):
 		nodes = eng.nodes

@@ -19,6 +19,36 @@ def segmentTable():
 	return rows
 
 
+def bondSnapshot():
+	"""Every bonded segment of the scene now, to follow later which ones break (a bond whose springs have all broken
+	and opened is released, and then no longer appears among the interactions): a list of tuples
+	(id1, id2, k, point and normal in body 1's frame, in-plane axis t1 in body 1's frame, half-sizes)."""
+	snap = []
+	for I in O.interactions:
+		if I.isReal and isinstance(I.geom, RdemGeom) and isinstance(I.phys, RdemPhys):
+			g = I.geom
+			for k, pt in enumerate(g.segPoint1):
+				snap.append((I.id1, I.id2, k, pt, g.segNormal1, g.segTangent1, (g.segHalfSizes[0], g.segHalfSizes[1])))
+	return snap
+
+
+def brokenSegments(snapshot):
+	"""The segments of a :func:`bondSnapshot` whose restoring spring has broken since, in global coordinates: dicts with
+	``point``, ``normal``, ``t1``, ``t2``, ``halfSizes`` and ``state`` (1 tension, 2 shear, 3 released bond: all springs broken and
+	open, so the breaking mode is no longer stored)."""
+	out = []
+	for id1, id2, k, pt, n1, t1, half in snapshot:
+		I = O.interactions[id1, id2] if O.interactions.has(id1, id2) else None
+		real = I is not None and I.isReal and isinstance(I.phys, RdemPhys) and len(I.phys.segState) > k
+		state = I.phys.segState[k] if real else 3
+		if state == 0:
+			continue
+		s1 = O.bodies[id1].state
+		n, t = s1.ori * n1, s1.ori * t1
+		out.append(dict(id1=id1, id2=id2, point=s1.pos + s1.ori * pt, normal=n, t1=t, t2=n.cross(t), halfSizes=half, state=state))
+	return out
+
+
 def breakCounts():
 	"""(tension, shear): restoring springs broken so far (eqs. 15, 16)."""
 	law = rdem.build.law()
