@@ -136,7 +136,7 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 				p.segShear[i] = Vector3r::Zero();
 			}
 			// Broken: the contact spring of this segment (eqs. 13, 17), while the material points overlap and face each other.
-			if (un < 0 && us.norm() < maxSlide) {
+			if (touching(i, un, us)) {
 				const Real     share = contactArea > 0 ? A / contactArea : Real(1); // a segment broken in this step joins now
 				const Vector3r F     = contactForce(p, A, -un, n, g.segVel[i], dt, dashpotCap(g.segPoint[i], n, share), p.segShear[i], trackEnergy, e);
 				apply(F, g.segPoint[i]);

@@ -58,40 +58,42 @@ def blockGrid(counts, sizes, material, origin=(0, 0, 0), orientation=Quaternion.
 	return O.bodies.append(bodies)
 
 
-def geomFunctor():
-	"""The :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom` of the current engine list (it makes the bonds)."""
+def _functor(cls, dispatcher, hint):
+	"""The functor of class ``cls`` in the ``dispatcher`` of the InteractionLoop of O.engines; RuntimeError with ``hint``."""
 	for e in O.engines:
 		if isinstance(e, InteractionLoop):
-			for f in e.geomDispatcher.functors:
-				if isinstance(f, Ig2_RdemBlock_RdemBlock_RdemGeom):
+			for f in getattr(e, dispatcher).functors:
+				if isinstance(f, cls):
 					return f
-	raise RuntimeError('no Ig2_RdemBlock_RdemBlock_RdemGeom in O.engines: set O.engines = rdem.engines(...) before bonding')
+	raise RuntimeError('no %s in O.engines%s' % (cls.__name__, hint))
+
+
+def _engine(cls, hint):
+	"""The engine of class ``cls`` in O.engines; RuntimeError with ``hint``."""
+	for e in O.engines:
+		if isinstance(e, cls):
+			return e
+	raise RuntimeError('no %s in O.engines%s' % (cls.__name__, hint))
+
+
+def geomFunctor():
+	"""The :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom` of the current engine list (it makes the bonds)."""
+	return _functor(Ig2_RdemBlock_RdemBlock_RdemGeom, 'geomDispatcher', ': set O.engines = rdem.engines(...) before bonding')
 
 
 def law():
 	"""The :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` of the current engine list."""
-	for e in O.engines:
-		if isinstance(e, InteractionLoop):
-			for f in e.lawDispatcher.functors:
-				if isinstance(f, Law2_RdemGeom_RdemPhys_FaceSprings):
-					return f
-	raise RuntimeError('no Law2_RdemGeom_RdemPhys_FaceSprings in O.engines')
+	return _functor(Law2_RdemGeom_RdemPhys_FaceSprings, 'lawDispatcher', '')
 
 
 def poissonEngine():
 	"""The :yref:`RdemPoissonEngine` of the current engine list."""
-	for e in O.engines:
-		if isinstance(e, RdemPoissonEngine):
-			return e
-	raise RuntimeError('no RdemPoissonEngine in O.engines: make the engines with rdem.engines(poisson="paper" or "consistent")')
+	return _engine(RdemPoissonEngine, ': make the engines with rdem.engines(poisson="paper" or "consistent")')
 
 
 def timeStepper():
 	"""The :yref:`RdemTimeStepper` of the current engine list."""
-	for e in O.engines:
-		if isinstance(e, RdemTimeStepper):
-			return e
-	raise RuntimeError('no RdemTimeStepper in O.engines')
+	return _engine(RdemTimeStepper, '')
 
 
 def _aabb(b):

@@ -91,20 +91,24 @@ class CompressionTest:
 		"""Downward displacement of the loading plate [m]."""
 		return sum(O.bodies[i].state.refPos[2] - O.bodies[i].state.pos[2] for i in self.top) / len(self.top)
 
-	def apparentPoisson(self):
-		"""Apparent Poisson's ratio -ε_lat/ε_ax (paper §5.3.1) from centroid distances: lateral between opposite surface
-		blocks of the mid-height layer(s) along x and y, axial between the bottom and top specimen layers."""
+	def axialPairs(self):
+		"""Pairs of specimen blocks, bottom and top layer of every column: their centroid distance gives the axial strain."""
+		n = self.n
+		return [(self.block(i, j, 0), self.block(i, j, n - 1)) for i in range(n) for j in range(n)]
+
+	def lateralPairs(self):
+		"""Pairs of opposite surface blocks of the mid-height layer(s), along x and along y: the lateral strain."""
 		n, mid = self.n, [self.n // 2] if self.n % 2 else [self.n // 2 - 1, self.n // 2]
-		lateral = [(self.block(0, j, k), self.block(n - 1, j, k)) for j in range(n) for k in mid]
-		lateral += [(self.block(i, 0, k), self.block(i, n - 1, k)) for i in range(n) for k in mid]
-		axial = [(self.block(i, j, 0), self.block(i, j, n - 1)) for i in range(n) for j in range(n)]
-		eAx = sum(measure.pairStrain(a, b) for a, b in axial) / len(axial)
-		eLat = sum(measure.pairStrain(a, b) for a, b in lateral) / len(lateral)
-		return -eLat / eAx if eAx else float('nan')
+		return [(self.block(0, j, k), self.block(n - 1, j, k)) for j in range(n) for k in mid] + \
+		       [(self.block(i, 0, k), self.block(i, n - 1, k)) for i in range(n) for k in mid]
+
+	def apparentPoisson(self):
+		"""Apparent Poisson's ratio -ε_lat/ε_ax (paper §5.3.1) from centroid distances (:meth:`lateralPairs`,
+		:meth:`axialPairs`)."""
+		return measure.apparentPoisson(self.lateralPairs(), self.axialPairs())
 
 	def apparentYoung(self):
 		"""Apparent Young's modulus: mean stress over the axial centroid strain of the specimen [Pa]."""
-		n = self.n
-		axial = [(self.block(i, j, 0), self.block(i, j, n - 1)) for i in range(n) for j in range(n)]
+		axial = self.axialPairs()
 		eAx = sum(measure.pairStrain(a, b) for a, b in axial) / len(axial)
 		return -self.stress() / eAx if eAx else float('nan')

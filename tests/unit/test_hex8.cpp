@@ -76,6 +76,20 @@ V3 centroid(const Nodes& X)
 
 double size(const Nodes& X) { return (X[7] - X[0]).norm(); } // a length scale of the element [m]
 
+// The six rigid-body modes of an element: translation along e_i (first) and infinitesimal rotation ω = e_i about the
+// centroid, u_a = ω × (X_a - X̄) (second), for i = 0, 1, 2.
+std::array<std::pair<V24, V24>, 3> rigidModes(const Nodes& X)
+{
+	const V3                           c = centroid(X);
+	std::array<std::pair<V24, V24>, 3> modes;
+	for (int i = 0; i < 3; ++i)
+		for (int a = 0; a < 8; ++a) {
+			modes[size_t(i)].first.segment<3>(3 * a)  = V3::Unit(i);
+			modes[size_t(i)].second.segment<3>(3 * a) = V3::Unit(i).cross(X[size_t(a)] - c);
+		}
+	return modes;
+}
+
 // ------------------------------------------------------------------------------------------------ references
 
 // 1D linear Lagrange functions on [-1, 1]: L_0 = (1-t)/2, L_1 = (1+t)/2, and their derivatives ∓1/2.
@@ -242,13 +256,10 @@ TEST(Hex8, StiffnessSymmetricAndRigidBodyModesFree)
 			// Six rigid-body modes: translations e_i and infinitesimal rotations ω = e_i about the centroid,
 			// u_a = ω × (X_a - X̄). K·u is a 24-term sum that cancels to zero: round-off ~24·1e-16 of |K||u|;
 			// 1e-13 relative (measured ≤ 8e-16).
-			const V3 c = centroid(X);
+			const auto modes = rigidModes(X);
 			for (int i = 0; i < 3; ++i) {
-				V24 t, r;
-				for (int a = 0; a < 8; ++a) {
-					t.segment<3>(3 * a) = V3::Unit(i);
-					r.segment<3>(3 * a) = V3::Unit(i).cross(X[a] - c);
-				}
+				const V24& t = modes[size_t(i)].first;
+				const V24& r = modes[size_t(i)].second;
 				EXPECT_LE((K * t).norm(), 1e-13 * normK * t.norm()) << "translation " << i;
 				EXPECT_LE((K * r).norm(), 1e-13 * normK * r.norm()) << "rotation " << i;
 			}
@@ -431,13 +442,11 @@ TEST(Hex8, StiffnessWithSkinOfABox)
 		const M24 Ks = rdem::hex8StiffnessWithSkin<double>(X, D, lo, hi);
 		// Symmetric, and rigid-body modes stay free (B·u = 0 at the skin points too); same budgets as for K.
 		EXPECT_LE((Ks - Ks.transpose()).norm(), 1e-14 * Ks.norm());
-		const V3 c = centroid(X);
+		const V3   c     = centroid(X);
+		const auto modes = rigidModes(X);
 		for (int i = 0; i < 3; ++i) {
-			V24 t, r;
-			for (int a = 0; a < 8; ++a) {
-				t.segment<3>(3 * a) = V3::Unit(i);
-				r.segment<3>(3 * a) = V3::Unit(i).cross(X[a] - c);
-			}
+			const V24& t = modes[size_t(i)].first;
+			const V24& r = modes[size_t(i)].second;
 			EXPECT_LE((Ks * t).norm(), 1e-13 * Ks.norm() * t.norm());
 			EXPECT_LE((Ks * r).norm(), 1e-13 * Ks.norm() * r.norm());
 		}
