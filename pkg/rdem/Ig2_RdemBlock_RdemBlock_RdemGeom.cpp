@@ -145,19 +145,17 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 
 	RdemGeom& g = *static_cast<RdemGeom*>(I->geom.get());
 	if (g.nSegments() > 0) {
-		// Bonded: relative displacement and velocity of the two material points of every segment.
+		// Bonded: relative displacement of the two material points of every segment (the law computes velocities
+		// where it needs them, at broken segments only).
 		g.normal           = (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized();
 		const size_t nSeg = g.nSegments();
 		g.segDisp.resize(nSeg);
-		g.segVel.resize(nSeg);
 		g.segPoint.resize(nSeg);
 		for (size_t i = 0; i < nSeg; ++i) {
 			const Vector3r P1 = A.pos + A.rot * g.segPoint1[i];
 			const Vector3r P2 = B.pos + B.rot * g.segPoint2[i];
-			const Vector3r C  = (P1 + P2) / 2;
 			g.segDisp[i]      = P2 - P1;
-			g.segPoint[i]     = C;
-			g.segVel[i]       = pointVelocity(state2, B.pos, C) - pointVelocity(state1, A.pos, C);
+			g.segPoint[i]     = (P1 + P2) / 2;
 		}
 		return true;
 	}

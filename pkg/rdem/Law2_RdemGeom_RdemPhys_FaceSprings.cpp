@@ -5,6 +5,7 @@
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
+#include <core/InteractionLoop.hpp>
 #include <core/Scene.hpp>
 #include <pkg/rdem/math/Failure.hpp>
 #include <limits>
@@ -63,6 +64,20 @@ namespace {
 	}
 }
 
+long Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(const Scene* scene)
+{
+	long n = 0;
+	for (const auto& e : scene->engines) {
+		const auto* loop = dynamic_cast<const InteractionLoop*>(e.get());
+		if (!loop) continue;
+		for (const auto& f : loop->lawDispatcher->functors) {
+			const auto* law = dynamic_cast<const Law2_RdemGeom_RdemPhys_FaceSprings*>(f.get());
+			if (law) n += law->tensionBreaks.get() + law->shearBreaks.get();
+		}
+	}
+	return n;
+}
+
 bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
 	RdemGeom&      g           = *static_cast<RdemGeom*>(ig.get());
@@ -75,11 +90,11 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	const bool     trackEnergy = scene->trackEnergy;
 	const Real     dt          = scene->dt;
 	Energies       e;
-	Vector3r       f2 = Vector3r::Zero(), t1 = Vector3r::Zero(), t2 = Vector3r::Zero();
-	auto           apply = [&](const Vector3r& F, const Vector3r& C) {
+	// Force on body 2 and its moment about x2; the reactions on body 1 follow at the end (one cross product per point).
+	Vector3r f2 = Vector3r::Zero(), t2 = Vector3r::Zero();
+	auto     apply = [&](const Vector3r& F, const Vector3r& C) {
                 f2 += F;
                 t2 += (C - x2).cross(F);
-                t1 -= (C - x1).cross(F);
 	};
 	/* Stability caps of a contact dashpot (explicit central differences): a dashpot may at most stop, never reverse, the
 	   relative motion of its point within one step, c ≤ share·m_eff/Δt, with m_eff the pair's effective mass at the
@@ -118,27 +133,30 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 			if (p.segState[i] == int(rdem::SegmentState::Intact)) {
 				const Real     sigma = p.kn * un;
 				const Vector3r tau   = p.ks * us;
-				const auto     state = rdem::restoringSpringState(sigma, Real(tau.norm()), p.tensileStrength, p.cohesion, p.tanFriction);
-				const Real     energy = A * (p.weightNormal * sigma * sigma / p.kn + p.weightShear * tau.squaredNorm() / p.ks) / 2;
+				const Real     tauNorm = tau.norm();
+				const auto     state   = rdem::restoringSpringState(sigma, tauNorm, p.tensileStrength, p.cohesion, p.tanFriction);
+				auto           energy  = [&]() { return A * (p.weightNormal * sigma * sigma / p.kn + p.weightShear * tau.squaredNorm() / p.ks) / 2; };
 				if (state == rdem::SegmentState::Intact) {
 					apply(-(p.weightNormal * sigma * n + p.weightShear * tau) * A, g.segPoint[i]);
 					p.segSigma[i]       = sigma;
-					p.segTau[i]         = tau.norm();
+					p.segTau[i]         = tauNorm;
 					anyIntactOrTouching = true;
-					e.elastic += energy;
+					if (trackEnergy) e.elastic += energy();
 					continue;
 				}
 				p.segState[i] = int(state);
 				if (state == rdem::SegmentState::BrokenTension) tensionBreaks += 1;
 				else
 					shearBreaks += 1;
-				e.bondBreak += energy;
+				e.bondBreak += energy();
 				p.segShear[i] = Vector3r::Zero();
 			}
 			// Broken: the contact spring of this segment (eqs. 13, 17), while the material points overlap and face each other.
 			if (touching(i, un, us)) {
 				const Real     share = contactArea > 0 ? A / contactArea : Real(1); // a segment broken in this step joins now
-				const Vector3r F     = contactForce(p, A, -un, n, g.segVel[i], dt, dashpotCap(g.segPoint[i], n, share), p.segShear[i], trackEnergy, e);
+				const Vector3r& C    = g.segPoint[i];
+				const Vector3r  v    = s2.vel + s2.angVel.cross(C - x2) - s1.vel - s1.angVel.cross(C - x1); // of body 2 relative to body 1
+				const Vector3r  F    = contactForce(p, A, -un, n, v, dt, dashpotCap(C, n, share), p.segShear[i], trackEnergy, e);
 				apply(F, g.segPoint[i]);
 				p.segSigma[i]       = -F.dot(n) / (p.weightNormal * A);
 				p.segTau[i]         = (F - F.dot(n) * n).norm() / (p.weightShear * A);
@@ -172,10 +190,11 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	}
 
 	p.force = f2;
+	// Body 1 receives -F at every point C: Σ (C - x1) × (-F) = -(t2 + (x2 - x1) × f2).
 	scene->forces.addForce(id2, f2);
 	scene->forces.addForce(id1, -f2);
 	scene->forces.addTorque(id2, t2);
-	scene->forces.addTorque(id1, t1);
+	scene->forces.addTorque(id1, -(t2 + (x2 - x1).cross(f2)));
 	if (trackEnergy) {
 		scene->energy->add(e.elastic, "rdemElastic", elasticIx, /*reset every step*/ true);
 		scene->energy->add(e.dashpot, "rdemDashpot", dashpotIx, false);

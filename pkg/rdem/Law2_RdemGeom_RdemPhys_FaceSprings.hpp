@@ -17,6 +17,8 @@ namespace yade {
 class Law2_RdemGeom_RdemPhys_FaceSprings : public LawFunctor {
 public:
 	bool go(shared_ptr<IGeom>& geom, shared_ptr<IPhys>& phys, Interaction* I) override;
+	/// Restoring springs broken so far (tension + shear) over every instance of this law in the scene's InteractionLoops.
+	static long brokenSprings(const Scene* scene);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(Law2_RdemGeom_RdemPhys_FaceSprings,LawFunctor,R"""(Constitutive law of the refined distinct element method (paper §3, eqs. 13-17).
 

@@ -36,7 +36,6 @@ public:
 		((vector<Real>,segArea,,,"Segment areas [m²]."))
 		((Vector3r,normal,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"Current unit normal of the bonded face, from body 1 to body 2 (global)."))
 		((vector<Vector3r>,segDisp,,(Attr::noSave|Attr::readonly),"Relative displacement $\\mathbf{P}_2-\\mathbf{P}_1$ of each segment's material points (global) [m]."))
-		((vector<Vector3r>,segVel,,(Attr::noSave|Attr::readonly),"Relative velocity of body 2 with respect to body 1 at each segment (global) [m/s]."))
 		((vector<Vector3r>,segPoint,,(Attr::noSave|Attr::readonly),"Current segment points, mid-way between the two material points (global) [m]."))
 		((vector<int>,sampleKey,,(Attr::noSave|Attr::readonly),"Per active contact sample: which sample it is (a stable index, for the shear history)."))
 		((vector<Vector3r>,samplePoint,,(Attr::noSave|Attr::readonly),"Per active contact sample: contact point (global) [m]."))

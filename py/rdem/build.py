@@ -1,12 +1,14 @@
 """Building block assemblies: blocks, bonds between face-adjacent blocks, and the engine list.
 
 Every effect is a separate piece of the engine list, so a scene pays only for what it uses: no collider when no spring
-can break (all strengths infinite) and ``recontact=False``, no Poisson engine when ``poisson=None``.
+can break (all strengths infinite) and ``recontact=False``, a collider kept dead by :yref:`RdemContactGate` until a
+spring breaks, no Poisson engine when ``poisson=None``.
 """
 import math
 from yade import O, utils, Vector3, Quaternion
 from yade.wrapper import (Body, RdemBlock, RdemMat, ForceResetter, InsertionSortCollider, Bo1_Box_Aabb, InteractionLoop, Ig2_RdemBlock_RdemBlock_RdemGeom,
-                          Ip2_RdemMat_RdemMat_RdemPhys, Law2_RdemGeom_RdemPhys_FaceSprings, RdemPoissonEngine, RdemTimeStepper, NewtonIntegrator)
+                          Ip2_RdemMat_RdemMat_RdemPhys, Law2_RdemGeom_RdemPhys_FaceSprings, RdemPoissonEngine, RdemTimeStepper, NewtonIntegrator,
+                          RdemContactGate)
 
 POISSON_MODES = {None: None, 'off': None, 'paper': 0, 'consistent': 1}
 
@@ -165,8 +167,9 @@ def engines(segmentsPerEdge=2, poisson='paper', corotational=False, recontact=Tr
 	:param poisson: ``'paper'`` (springs $E/(1-\\nu^2)$ + $D_p$ elements, as published), ``'consistent'`` (springs $\\lambda+2\\mu$ + $D_p$: the
 	    full isotropic tensor, see doc/theory.md) or ``None`` (refined DEM without the Poisson effect, springs as in the paper).
 	:param corotational: remove rigid rotations of the Poisson elements (needed for large rotations).
-	:param recontact: include the collider, so that separated blocks can touch again anywhere. Without it no new contact
-	    is ever made (cheaper; right when nothing can break or separate).
+	:param recontact: ``True``: the collider, so that separated blocks can touch again anywhere, switched on by
+	    :yref:`RdemContactGate` only once contacts can occur (the first broken spring, a free block, a second assembly);
+	    ``'always'``: the collider runs from the first step; ``False``: no new contact is ever made.
 	:param damping: Cundall's non-viscous damping of :yref:`NewtonIntegrator` (0 = none, as in the paper).
 	:param dt: ``None``: :yref:`RdemTimeStepper` sets ``O.dt = safety·Δt_crit``; a number: fixed ``O.dt`` [s] (the stepper then
 	    only warns if it exceeds the estimate).
@@ -186,6 +189,10 @@ def engines(segmentsPerEdge=2, poisson='paper', corotational=False, recontact=Tr
 	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge)],
 	                       [Ip2_RdemMat_RdemMat_RdemPhys(springModulus=1 if mode == 1 else 0)], [Law2_RdemGeom_RdemPhys_FaceSprings()])
 	eng = [ForceResetter()]
+	if recontact not in (True, False, 'always'):
+		raise ValueError("recontact = %r: must be True, False or 'always'" % (recontact, ))
+	if recontact is True:
+		eng.append(RdemContactGate())
 	if recontact:
 		eng.append(InsertionSortCollider([Bo1_Box_Aabb()], verletDist=verletDist if verletDist is not None else 0.0))
 	eng.append(loop)
