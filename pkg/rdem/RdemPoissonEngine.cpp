@@ -9,6 +9,7 @@
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
+#include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemMat.hpp>
@@ -16,6 +17,7 @@
 #include <pkg/rdem/math/Elasticity.hpp>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <set>
 #include <sstream>
@@ -264,19 +266,45 @@ void RdemPoissonEngine::buildPy(const py::list& ids)
 void RdemPoissonEngine::postLoad(RdemPoissonEngine&)
 {
 	stiffness.clear();
+	stiffnessOf.clear();
 	bonds.clear();
+	scalesBroken = -1;
 }
 
 void RdemPoissonEngine::prepare()
 {
+	/* Elements of the same shape, size, material and skin share one K_p: a regular grid has a handful of distinct
+	   matrices instead of one 4.6 kB matrix per element, and the product K_p·u runs from cache (doc/performance.md).
+	   Shapes are compared on node coordinates relative to node 0, rounded to 1e-10 of the element's diagonal, λ to 1e-12 of the largest. */
 	const size_t nEl = size_t(nElements());
-	stiffness.resize(nEl);
-	bonds.assign(12 * nEl, shared_ptr<Interaction>());
+	stiffness.clear();
+	stiffnessOf.assign(nEl, 0);
+	std::map<vector<long long>, size_t> distinct;
+	const Real lambdaMax = lambda.empty() ? Real(0) : *std::max_element(lambda.begin(), lambda.end());
 	for (size_t e = 0; e < nEl; ++e) {
-		stiffness[e] = elementStiffness(e);
+		const Real        q = 1e-10 * (refPos[8 * e + 7] - refPos[8 * e]).norm();
+		vector<long long> key;
+		for (size_t a = 1; a < 8; ++a)
+			for (int d = 0; d < 3; ++d)
+				key.push_back(std::llround((refPos[8 * e + a][d] - refPos[8 * e][d]) / q));
+		key.push_back(lambdaMax > 0 ? std::llround(lambda[e] / lambdaMax * 1e12) : 0);
+		for (size_t f = 0; f < 6; ++f)
+			key.push_back(std::llround(skin[6 * e + f] * 1e10));
+		const auto it = distinct.find(key);
+		if (it != distinct.end()) {
+			stiffnessOf[e] = it->second;
+			continue;
+		}
+		stiffnessOf[e] = stiffness.size();
+		distinct.emplace(key, stiffness.size());
+		stiffness.push_back(elementStiffness(e));
+	}
+	bonds.assign(12 * nEl, shared_ptr<Interaction>());
+	scalesBroken = -1;
+	for (size_t e = 0; e < nEl; ++e)
 		for (size_t k = 0; k < 12; ++k)
 			bonds[12 * e + k] = scene->interactions->find(nodes[8 * e + size_t(hexEdges[k][0])], nodes[8 * e + size_t(hexEdges[k][1])]);
-	}
+	LOG_DEBUG(nEl << " Poisson elements share " << stiffness.size() << " distinct stiffness matrices");
 }
 
 rdem::Mat24<Real> RdemPoissonEngine::elementStiffness(size_t e) const
@@ -291,7 +319,7 @@ rdem::Mat24<Real> RdemPoissonEngine::elementStiffness(size_t e) const
 vector<Real> RdemPoissonEngine::elementScales()
 {
 	scene = Omega::instance().getScene().get();
-	if (stiffness.size() != size_t(nElements())) prepare();
+	if (!prepared()) prepare();
 	vector<Real> s(size_t(nElements()), 1);
 	if (!releaseOnCrack) return s;
 	for (size_t e = 0; e < s.size(); ++e)
@@ -309,8 +337,15 @@ vector<Real> RdemPoissonEngine::elementScales()
 
 void RdemPoissonEngine::action()
 {
-	if (stiffness.size() != size_t(nElements())) prepare();
-	const vector<Real> scale = elementScales();
+	if (!prepared()) prepare();
+	// The scales change only when a spring breaks or a bond is released or erased: recompute them only then.
+	const long broken = Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(scene), nIntrs = long(scene->interactions->size());
+	if (broken != scalesBroken || nIntrs != scalesIntrs) {
+		scales       = elementScales();
+		scalesBroken = broken;
+		scalesIntrs  = nIntrs;
+	}
+	const vector<Real>& scale = scales;
 	const long         nEl   = long(nElements());
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static)
@@ -326,11 +361,11 @@ void RdemPoissonEngine::action()
 		rdem::Vec24<Real> F;
 		if (corotational) {
 			const Matrix3r R = rdem::hex8Rotation<Real>(X, x);
-			F                = -s * (stiffness[size_t(e)] * rdem::hex8Displacement<Real>(X, x, &R));
+			F                = -s * (stiffness[stiffnessOf[size_t(e)]] * rdem::hex8Displacement<Real>(X, x, &R));
 			for (int a = 0; a < 8; ++a)
 				F.segment<3>(3 * a) = R * F.segment<3>(3 * a).eval();
 		} else {
-			F = -s * (stiffness[size_t(e)] * rdem::hex8Displacement<Real>(X, x, nullptr));
+			F = -s * (stiffness[stiffnessOf[size_t(e)]] * rdem::hex8Displacement<Real>(X, x, nullptr));
 		}
 		for (size_t a = 0; a < 8; ++a)
 			scene->forces.addForce(nodes[8 * size_t(e) + a], F.segment<3>(3 * long(a)));
@@ -342,7 +377,7 @@ vector<Real> RdemPoissonEngine::stiffnessBound() const
 	const Scene* sc = Omega::instance().getScene().get();
 	vector<Real> bound(sc->bodies->size(), 0);
 	for (size_t e = 0; e < size_t(nElements()); ++e) {
-		const rdem::Mat24<Real> K = stiffness.size() == size_t(nElements()) ? stiffness[e] : elementStiffness(e);
+		const rdem::Mat24<Real> K = prepared() ? stiffness[stiffnessOf[e]] : elementStiffness(e);
 		for (size_t a = 0; a < 8; ++a) {
 			Real rowMax = 0;
 			for (int d = 0; d < 3; ++d)

@@ -58,10 +58,15 @@ One virtual 8-node hexahedral finite element is made for every $2\times2\times2$
 	DECLARE_LOGGER;
 
 private:
-	vector<rdem::Mat24<Real>>       stiffness; // K_p of each element, rebuilt from refPos and lambda (not saved)
+	vector<rdem::Mat24<Real>>       stiffness;   // the distinct K_p of the elements, rebuilt from refPos, lambda, skin (not saved)
+	vector<size_t>                  stiffnessOf; // per element, its K_p in stiffness (not saved)
 	vector<shared_ptr<Interaction>> bonds;     // the 12 bonds of each element, looked up once (not saved)
+	vector<Real>                    scales;    // force scale of each element, see elementScales (not saved)
+	long                            scalesBroken = -1; // broken springs in the scene when scales were computed
+	long                            scalesIntrs  = -1; // number of interactions then
 	void                            prepare();
 	rdem::Mat24<Real>               elementStiffness(size_t e) const;
+	bool                            prepared() const { return stiffnessOf.size() == size_t(nElements()); }
 };
 REGISTER_SERIALIZABLE(RdemPoissonEngine);
 
