@@ -33,6 +33,7 @@ parser.add_argument('--springs', type=int, default=2, help='springs per face edg
 parser.add_argument('--nu', type=float, default=0.2, help="Poisson's ratio (default 0.2)")
 parser.add_argument('--formulation', choices=['paper', 'consistent', 'off'], default='paper', help='Poisson formulation (default paper)')
 parser.add_argument('--corotational', action='store_true', help='corotational Poisson elements (default off, as in the paper)')
+parser.add_argument('--plate-young', type=float, default=None, help="Young's modulus of the plates [GPa] (default: the concrete's, 30)")
 parser.add_argument('--rate', type=float, default=1.0, help='loading rate [mm/s] (default 1.0)')
 parser.add_argument('--end', type=float, default=0.25, help='end displacement of the loading plate [mm] (default 0.25)')
 parser.add_argument('--dt', type=float, default=2.0e-6, help='time step [s] (default 2e-6, as in the paper)')
@@ -64,6 +65,7 @@ test = CompressionTest(blocksPerEdge=opts.blocks,
                        poisson=opts.nu,
                        formulation=opts.formulation,
                        corotational=opts.corotational,
+                       plateYoung=opts.plate_young * 1e9 if opts.plate_young is not None else None,
                        rate=opts.rate * 1e-3,
                        dt=opts.dt)
 nSteps = int(round(opts.end * 1e-3 / (opts.rate * 1e-3) / opts.dt))

@@ -121,21 +121,30 @@ def bond(ids, tolerance=1e-6):
 			raise ValueError('bond: body %s is not an RdemBlock' % i)
 		lo, hi = _aabb(b)
 		blocks.append((i, lo, hi, min(b.shape.extents)))
-	# Spatial hashing on a cell as large as the largest block: neighbours are in the 27 surrounding cells.
-	cell = 2 * max(max(b.shape.extents) for b in (O.bodies[i] for i in ids)) * math.sqrt(3)
+	# Spatial hashing on cells of the median block size; each block is entered in every cell its bounding box touches,
+	# so that blocks of very different sizes (a plate over small blocks) do not make every cell crowded.
+	sizes = sorted(2 * max(O.bodies[i].shape.extents) for i in ids)
+	cell = sizes[len(sizes) // 2] if sizes else 1.0
 	grid = {}
-	key = lambda p: tuple(int(math.floor(p[d] / cell)) for d in range(3))
+	margin = 1e-3 * cell  # blocks that touch must share a cell even when round-off puts their common face on a cell border
+	cellRange = lambda lo, hi: [range(int(math.floor((lo[d] - margin) / cell)), int(math.floor((hi[d] + margin) / cell)) + 1) for d in range(3)]
 	for entry in blocks:
-		grid.setdefault(key((entry[1] + entry[2]) / 2), []).append(entry)
+		rx, ry, rz = cellRange(entry[1], entry[2])
+		for cx in rx:
+			for cy in ry:
+				for cz in rz:
+					grid.setdefault((cx, cy, cz), []).append(entry)
 	n = 0
 	for (i, lo, hi, hmin) in blocks:
-		c = key((lo + hi) / 2)
-		for dx in (-1, 0, 1):
-			for dy in (-1, 0, 1):
-				for dz in (-1, 0, 1):
-					for (j, lo2, hi2, hmin2) in grid.get((c[0] + dx, c[1] + dy, c[2] + dz), []):
-						if j <= i:
+		seen = set()
+		rx, ry, rz = cellRange(lo, hi)
+		for cx in rx:
+			for cy in ry:
+				for cz in rz:
+					for (j, lo2, hi2, hmin2) in grid.get((cx, cy, cz), []):
+						if j <= i or j in seen:
 							continue
+						seen.add(j)
 						tol = tolerance * min(hmin, hmin2)
 						overlap = [min(hi[d], hi2[d]) - max(lo[d], lo2[d]) for d in range(3)]
 						if min(overlap) < -tol:

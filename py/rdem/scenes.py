@@ -4,7 +4,8 @@ Specimen: ``blocksPerEdge``³ cubic blocks forming a cube of side ``size``, betw
 plate of ``blocksPerEdge``² blocks, ``plateHeight`` tall, of the same material, all face-bonded (so the Poisson grid
 spans both plates: 10×10×12 blocks give 9×9×11 = 891 elements, as in the paper's §5.2). Plate blocks are rigidly guided
 in z and cannot rotate; they are free in x and y (frictionless platens), so the specimen is in uniaxial stress. The
-top plate moves down at ``rate``.
+top plate moves down at ``rate``. The plates are of the specimen's material unless ``plateYoung`` / ``platePoisson``
+give them their own (joints then combine both materials by eq. 12).
 """
 import math
 from yade import O, Vector3
@@ -30,6 +31,8 @@ class CompressionTest:
 	             dampingConstant=1.0,
 	             formulation='paper',
 	             corotational=False,
+	             plateYoung=None,
+	             platePoisson=None,
 	             rate=1.0e-3,
 	             dt=2.0e-6):
 		if not (isinstance(blocksPerEdge, int) and blocksPerEdge >= 2):
@@ -53,6 +56,19 @@ class CompressionTest:
 		                        dampingShear=dampingConstant,
 		                        label='concrete')
 		O.materials.append(self.material)
+		# Platens: of the specimen's material (the paper's Table 1 lists one material), or of their own (e.g. steel).
+		self.plateMaterial = self.material
+		if plateYoung is not None or platePoisson is not None:
+			self.plateMaterial = RdemMat(young=plateYoung if plateYoung is not None else young,
+			                             poisson=platePoisson if platePoisson is not None else poisson,
+			                             density=density,
+			                             tensileStrength=tensileStrength,
+			                             cohesion=cohesion,
+			                             frictionAngle=math.atan(frictionCoefficient),
+			                             dampingNormal=dampingConstant,
+			                             dampingShear=dampingConstant,
+			                             label='platen')
+			O.materials.append(self.plateMaterial)
 		breakable = tensileStrength < float('inf') or cohesion < float('inf')
 		h = size / blocksPerEdge
 		O.engines = build.engines(segmentsPerEdge=segmentsPerEdge,
@@ -63,9 +79,9 @@ class CompressionTest:
 		                          verletDist=0.05 * h)
 		n = blocksPerEdge
 		grey, red, blue = Vector3(.7, .7, .7), Vector3(.9, .2, .2), Vector3(.5, .7, 1)
-		self.bottom = build.blockGrid((n, n, 1), (h, h, plateHeight), self.material, color=blue)
+		self.bottom = build.blockGrid((n, n, 1), (h, h, plateHeight), self.plateMaterial, color=blue)
 		self.specimen = build.blockGrid((n, n, n), (h, h, h), self.material, origin=(0, 0, plateHeight), color=grey)
-		self.top = build.blockGrid((n, n, 1), (h, h, plateHeight), self.material, origin=(0, 0, plateHeight + size), color=red)
+		self.top = build.blockGrid((n, n, 1), (h, h, plateHeight), self.plateMaterial, origin=(0, 0, plateHeight + size), color=red)
 		self.ids = self.bottom + self.specimen + self.top
 		self.nBonds = build.bond(self.ids)
 		for i in self.bottom + self.top:
