@@ -56,14 +56,15 @@ class CompressionTest:
 		                        dampingShear=dampingConstant,
 		                        label='concrete')
 		O.materials.append(self.material)
-		# Platens: of the specimen's material (the paper's Table 1 lists one material), or of their own (e.g. steel).
+		# Platens: of the specimen's material (the paper's Table 1 lists one material), or of their own (e.g. steel), which
+		# does not crack: joints inside a plate are unbreakable, plate-specimen joints take the specimen's strengths (eq. 15-16).
 		self.plateMaterial = self.material
 		if plateYoung is not None or platePoisson is not None:
 			self.plateMaterial = RdemMat(young=plateYoung if plateYoung is not None else young,
 			                             poisson=platePoisson if platePoisson is not None else poisson,
 			                             density=density,
-			                             tensileStrength=tensileStrength,
-			                             cohesion=cohesion,
+			                             tensileStrength=float('inf'),
+			                             cohesion=float('inf'),
 			                             frictionAngle=math.atan(frictionCoefficient),
 			                             dampingNormal=dampingConstant,
 			                             dampingShear=dampingConstant,
