@@ -312,8 +312,9 @@ void RdemPoissonEngine::action()
 	if (stiffness.size() != size_t(nElements())) prepare();
 	const vector<Real> scale = elementScales();
 	const long         nEl   = long(nElements());
+	Real               energy = 0; // Σ ½ s uᵀK_p u, elastic energy of the elements [J]
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) reduction(+ : energy)
 #endif
 	for (long e = 0; e < nEl; ++e) {
 		const Real s = scale[size_t(e)];
@@ -325,16 +326,21 @@ void RdemPoissonEngine::action()
 		}
 		rdem::Vec24<Real> F;
 		if (corotational) {
-			const Matrix3r R = rdem::hex8Rotation<Real>(X, x);
-			F                = -s * (stiffness[size_t(e)] * rdem::hex8Displacement<Real>(X, x, &R));
+			const Matrix3r          R = rdem::hex8Rotation<Real>(X, x);
+			const rdem::Vec24<Real> u = rdem::hex8Displacement<Real>(X, x, &R);
+			F                         = -s * (stiffness[size_t(e)] * u);
+			energy -= u.dot(F) / 2;
 			for (int a = 0; a < 8; ++a)
 				F.segment<3>(3 * a) = R * F.segment<3>(3 * a).eval();
 		} else {
-			F = -s * (stiffness[size_t(e)] * rdem::hex8Displacement<Real>(X, x, nullptr));
+			const rdem::Vec24<Real> u = rdem::hex8Displacement<Real>(X, x, nullptr);
+			F                         = -s * (stiffness[size_t(e)] * u);
+			energy -= u.dot(F) / 2;
 		}
 		for (size_t a = 0; a < 8; ++a)
 			scene->forces.addForce(nodes[8 * size_t(e) + a], F.segment<3>(3 * long(a)));
 	}
+	if (scene->trackEnergy) scene->energy->add(energy, "rdemPoisson", energyIx, /*reset every step*/ true);
 }
 
 vector<Real> RdemPoissonEngine::stiffnessBound() const

@@ -39,6 +39,8 @@ One virtual 8-node hexahedral finite element is made for every $2\times2\times2$
 
 *Cracks:* an element's forces are scaled by the smallest fraction of intact restoring springs over the 12 bonds between its blocks, so an element bridging an open crack stops pushing its sides apart (a fully broken bond releases it for good).
 
+With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemPoisson``, the elements' elastic energy $\tfrac12 s\,\Delta\mathbf{u}^T K_p\Delta\mathbf{u}$ (current value; rotation removed in the corotational case).
+
 *Topology:* ``build`` refuses blocks with two bonded neighbours on one side (e.g. running-bond masonry), groups that close inconsistently and block sets with no group at all; blocks at edges and surfaces belong to fewer elements or none.)""",
 		((vector<int>,nodes,,Attr::readonly,"Body ids of the element nodes, 8 per element, node $a=i+2j+4k$ at the block $(i,j,k)\\in\\{0,1\\}^3$ of the group."))
 		((vector<Vector3r>,refPos,,Attr::readonly,"Reference positions of the nodes (8 per element) [m]."))
@@ -47,6 +49,7 @@ One virtual 8-node hexahedral finite element is made for every $2\times2\times2$
 		((vector<Real>,skin,,Attr::readonly,"Skin weights of each element (6 per element: $-x,+x,-y,+y,-z,+z$ of its axes), 0 without skin; see :yref:`RdemPoissonEngine::consistent`."))
 		((bool,corotational,false,,"Remove each element's rigid rotation before $K_p$ (see above)."))
 		((bool,releaseOnCrack,true,,"Scale element forces by the intact fraction of their bonds (see above)."))
+		((int,energyIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 		,
 		/* ctor */,
 		.def("build",&RdemPoissonEngine::buildPy,(py::arg("ids")=py::list()),"Make the elements from the bonded blocks ``ids`` (default: all blocks); current positions become the reference. With ``consistent``, block the platens' DOFs first: the skin and spring weights depend on them.")
