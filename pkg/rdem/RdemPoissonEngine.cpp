@@ -184,14 +184,15 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 		std::array<Body::id_t, 8> key = n;
 		std::sort(key.begin(), key.end());
 		if (!seen.insert(key).second) continue;
-		rdem::Nodes8<Real> X;
-		Real               lam = 0;
+		rdem::Nodes8<Real>                X;
+		std::array<std::array<Real, 3>, 8> parts; // volume, E, ν of each node's block
 		for (size_t a = 0; a < 8; ++a) {
 			const Body& body = *Body::byId(n[a], scene);
 			X[a]             = body.state->pos;
 			const auto& m    = *static_cast<RdemMat*>(body.material.get());
-			lam += rdem::lameLambda(m.young, m.poisson) / 8;
+			parts[a]         = { 8 * static_cast<RdemBlock*>(body.shape.get())->extents.prod(), m.young, m.poisson };
 		}
+		const Real lam = rdem::layeredLambda<Real>(parts);
 		if (!rdem::hex8IsValid<Real>(X)) {
 			std::ostringstream msg;
 			msg << "RdemPoissonEngine.build: the centroids of blocks " << n[0] << "," << n[1] << ",...," << n[7] << " form an inverted or flat hexahedron";
