@@ -250,6 +250,7 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 		p->weightNormal = (L + extA + extB) / L * cross;
 		p->weightShear  = cross;
 	}
+	scalePrev.clear(); // the first step takes the current scales
 	LOG_INFO(nElements() << " Poisson elements on " << ids.size() << " blocks (" << incomplete << " groups skipped: a bond missing)");
 	prepare();
 }
@@ -313,35 +314,33 @@ void RdemPoissonEngine::action()
 	if (stiffness.size() != size_t(nElements())) prepare();
 	const vector<Real> scale = elementScales();
 	const long         nEl   = long(nElements());
-	Real               energy = 0; // Σ ½ s uᵀK_p u, elastic energy of the elements [J]
+	if (scalePrev.size() != scale.size()) scalePrev = scale;
+	Real energy = 0, released = 0; // Σ ½ s uᵀK_p u of the elements; ½ (s_prev - s) uᵀK_p u lost to cracks in this step [J]
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static) reduction(+ : energy)
+#pragma omp parallel for schedule(static) reduction(+ : energy, released)
 #endif
 	for (long e = 0; e < nEl; ++e) {
-		const Real s = scale[size_t(e)];
-		if (s <= 0) continue;
+		const Real s = scale[size_t(e)], sPrev = scalePrev[size_t(e)];
+		if (s <= 0 && sPrev <= 0) continue;
 		rdem::Nodes8<Real> X, x;
 		for (size_t a = 0; a < 8; ++a) {
 			X[a] = refPos[8 * size_t(e) + a];
 			x[a] = Body::byId(nodes[8 * size_t(e) + a], scene)->state->pos;
 		}
-		rdem::Vec24<Real> F;
-		if (corotational) {
-			const Matrix3r          R = rdem::hex8Rotation<Real>(X, x);
-			const rdem::Vec24<Real> u = rdem::hex8Displacement<Real>(X, x, &R);
-			F                         = -s * (stiffness[size_t(e)] * u);
-			energy -= u.dot(F) / 2;
-			for (int a = 0; a < 8; ++a)
-				F.segment<3>(3 * a) = R * F.segment<3>(3 * a).eval();
-		} else {
-			const rdem::Vec24<Real> u = rdem::hex8Displacement<Real>(X, x, nullptr);
-			F                         = -s * (stiffness[size_t(e)] * u);
-			energy -= u.dot(F) / 2;
-		}
+		const Matrix3r          R  = corotational ? rdem::hex8Rotation<Real>(X, x) : Matrix3r::Identity();
+		const rdem::Vec24<Real> u  = rdem::hex8Displacement<Real>(X, x, corotational ? &R : nullptr);
+		const rdem::Vec24<Real> Ku = stiffness[size_t(e)] * u;
+		energy += s * u.dot(Ku) / 2;
+		released += (sPrev - s) * u.dot(Ku) / 2;
+		if (s <= 0) continue;
 		for (size_t a = 0; a < 8; ++a)
-			scene->forces.addForce(nodes[8 * size_t(e) + a], F.segment<3>(3 * long(a)));
+			scene->forces.addForce(nodes[8 * size_t(e) + a], Vector3r(-s * (R * Ku.segment<3>(3 * long(a)))));
 	}
-	if (scene->trackEnergy) scene->energy->add(energy, "rdemPoisson", energyIx, /*reset every step*/ true);
+	scalePrev = scale;
+	if (scene->trackEnergy) {
+		scene->energy->add(energy, "rdemPoisson", energyIx, /*reset every step*/ true);
+		scene->energy->add(released, "rdemPoissonRelease", releaseIx, /*reset every step*/ false);
+	}
 }
 
 vector<Real> RdemPoissonEngine::stiffnessBound() const

@@ -39,7 +39,7 @@ One virtual 8-node hexahedral finite element is made for every $2\times2\times2$
 
 *Cracks:* an element's forces are scaled by the smallest fraction of intact restoring springs over the 12 bonds between its blocks, so an element bridging an open crack stops pushing its sides apart (a fully broken bond releases it for good).
 
-With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemPoisson``, the elements' elastic energy $\tfrac12 s\,\Delta\mathbf{u}^T K_p\Delta\mathbf{u}$ (current value; rotation removed in the corotational case).
+With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemPoisson``, the elements' elastic energy $\tfrac12 s\,\Delta\mathbf{u}^T K_p\Delta\mathbf{u}$ (current value; rotation removed in the corotational case), and ``rdemPoissonRelease``, the element energy $\tfrac12(s_{prev}-s)\Delta\mathbf{u}^T K_p\Delta\mathbf{u}$ taken away when cracks lower an element's scale (cumulated; negative when the released element energy was negative, since $D_p$ alone is indefinite: releasing then *adds* energy, up to a few % of the work in the compression test, doc/stability.md).
 
 *Topology:* ``build`` refuses blocks with two bonded neighbours on one side (e.g. running-bond masonry), groups that close inconsistently and block sets with no group at all; blocks at edges and surfaces belong to fewer elements or none.)""",
 		((vector<int>,nodes,,Attr::readonly,"Body ids of the element nodes, 8 per element, node $a=i+2j+4k$ at the block $(i,j,k)\\in\\{0,1\\}^3$ of the group."))
@@ -49,7 +49,9 @@ With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemPoisson``, the elements' el
 		((vector<Real>,skin,,Attr::readonly,"Skin weights of each element (6 per element: $-x,+x,-y,+y,-z,+z$ of its axes), 0 without skin; see :yref:`RdemPoissonEngine::consistent`."))
 		((bool,corotational,false,,"Remove each element's rigid rotation before $K_p$ (see above)."))
 		((bool,releaseOnCrack,true,,"Scale element forces by the intact fraction of their bonds (see above)."))
+		((vector<Real>,scalePrev,,(Attr::hidden|Attr::readonly),"Force scale of each element in the last step (saved: the energy released by cracks in the next step depends on it)."))
 		((int,energyIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
+		((int,releaseIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 		,
 		/* ctor */,
 		.def("build",&RdemPoissonEngine::buildPy,(py::arg("ids")=py::list()),"Make the elements from the bonded blocks ``ids`` (default: all blocks); current positions become the reference. With ``consistent``, block the platens' DOFs first: the skin and spring weights depend on them.")
