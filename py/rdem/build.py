@@ -131,8 +131,7 @@ def bond(ids, tolerance=1e-6):
 	key = lambda p: tuple(int(math.floor(p[d] / cell)) for d in range(3))
 	for entry in blocks:
 		grid.setdefault(key((entry[1] + entry[2]) / 2), []).append(entry)
-	n = 0
-	bonded = set()
+	candidates = []  # face-to-face pairs; all checks come before the first bond is made
 	for (i, lo, hi, hmin) in blocks:
 		c = key((lo + hi) / 2)
 		for dx in (-1, 0, 1):
@@ -150,16 +149,19 @@ def bond(ids, tolerance=1e-6):
 							                 (i, j, sorted(overlap)[0], tol))
 						if sum(1 for o in overlap if o > tol) < 2:
 							continue  # touch along an edge or at a corner only
-						try:
-							utils.createInteraction(i, j)
-							n += 1
-							bonded.update((i, j))
-						except RuntimeError:
-							pass  # parallel faces not aligned or no shared area: not bonded
-	alone = [i for i in ids if i not in bonded]
+						candidates.append((i, j))
+	touching = set(k for pair in candidates for k in pair)
+	alone = [i for i in ids if i not in touching]
 	if len(ids) > 1 and alone:
 		raise ValueError('bond: block %d shares no face with any other of the %d blocks given (ids must be face-adjacent blocks; '
 		                 '%d such blocks: %s)' % (alone[0], len(ids), len(alone), alone[:10]))
+	n = 0
+	for i, j in candidates:
+		try:
+			utils.createInteraction(i, j)
+			n += 1
+		except RuntimeError:
+			pass  # parallel faces not aligned or no shared area: not bonded
 	return n
 
 
