@@ -299,12 +299,14 @@ vector<Real> RdemPoissonEngine::elementScales()
 	for (size_t e = 0; e < s.size(); ++e)
 		for (size_t k = 0; k < 12; ++k) {
 			const auto& I = bonds[12 * e + k];
-			if (!I || !I->isReal()) {
+			// A released bond is gone for good: its interaction is dead, or, when prepare() looked the pair up after the
+			// blocks touched again (e.g. after O.load), it is a sampled contact without segments.
+			const auto* p = I && I->isReal() ? static_cast<RdemPhys*>(I->phys.get()) : nullptr;
+			if (!p || p->segState.empty()) {
 				s[e] = 0;
 				break;
 			}
-			const auto* p = static_cast<RdemPhys*>(I->phys.get());
-			s[e]          = math::min(s[e], Real(p->nIntact()) / Real(p->segState.size()));
+			s[e] = math::min(s[e], Real(p->nIntact()) / Real(p->segState.size()));
 		}
 	return s;
 }
