@@ -7,7 +7,7 @@ import math
 from yade import O, utils, Vector3, Quaternion
 from yade.wrapper import (Body, RdemBlock, RdemMat, ForceResetter, InsertionSortCollider, Bo1_Box_Aabb, InteractionLoop, Ig2_RdemBlock_RdemBlock_RdemGeom,
                           Ip2_RdemMat_RdemMat_RdemPhys, Law2_RdemGeom_RdemPhys_FaceSprings, RdemPoissonEngine, RdemTimeStepper, NewtonIntegrator,
-                          RdemFiniteGuard)
+                          RdemFiniteGuard, RdemForceAssembler)
 
 POISSON_MODES = {None: None, 'off': None, 'paper': 0, 'consistent': 1}
 
@@ -212,11 +212,11 @@ def engines(segmentsPerEdge=2,
 		raise ValueError('gravity = %r: must be 3 finite numbers [m/s2]' % (gravity, ))
 	mode = POISSON_MODES[poisson]
 	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge)],
-	                       [Ip2_RdemMat_RdemMat_RdemPhys(springModulus=1 if mode == 1 else 0)], [Law2_RdemGeom_RdemPhys_FaceSprings()])
+	                       [Ip2_RdemMat_RdemMat_RdemPhys(springModulus=1 if mode == 1 else 0)], [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True)])
 	eng = [ForceResetter()]
 	if recontact:
 		eng.append(InsertionSortCollider([Bo1_Box_Aabb()], verletDist=verletDist if verletDist is not None else 0.0))
-	eng.append(loop)
+	eng += [loop, RdemForceAssembler()]  # forces summed per body in a fixed order: O.load continues bit for bit
 	if mode is not None:
 		eng.append(RdemPoissonEngine(corotational=corotational, consistent=mode == 1))
 	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None)
