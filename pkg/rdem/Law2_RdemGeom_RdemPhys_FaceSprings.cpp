@@ -191,10 +191,17 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 
 	p.force = f2;
 	// Body 1 receives -F at every point C: Σ (C - x1) × (-F) = -(t2 + (x2 - x1) × f2).
-	scene->forces.addForce(id2, f2);
-	scene->forces.addForce(id1, -f2);
-	scene->forces.addTorque(id2, t2);
-	scene->forces.addTorque(id1, -(t2 + (x2 - x1).cross(f2)));
+	const Vector3r t1 = -(t2 + (x2 - x1).cross(f2));
+	if (deferForces) {
+		p.torque1   = t1;
+		p.torque2   = t2;
+		p.forceIter = scene->iter;
+	} else {
+		scene->forces.addForce(id2, f2);
+		scene->forces.addForce(id1, -f2);
+		scene->forces.addTorque(id2, t2);
+		scene->forces.addTorque(id1, t1);
+	}
 	if (trackEnergy) {
 		scene->energy->add(e.elastic, "rdemElastic", elasticIx, /*reset every step*/ true);
 		scene->energy->add(e.dashpot, "rdemDashpot", dashpotIx, false);

@@ -27,6 +27,7 @@ public:
 *Contact springs* (broken segments, and sampled contacts of blocks that are not bonded): compression only, normal force $\max(\bar{k}_n A\delta - c_nA\dot{u}_n,0)$ with $\delta$ the overlap; incremental shear spring $\bar{k}_s A$ limited by Coulomb friction $|F_s|\le\tan\phi\,\bar{k}_nA\delta$ (eq. 17); shear dashpot $c_sA$ while sticking (eq. 13). A broken segment is in contact while its material points overlap and have slid less than the smaller of :yref:`RdemGeom::segHalfSizes`. When every segment of a bond is broken and none is in contact, the interaction is released and later contacts are found by sampling (:yref:`Ig2_RdemBlock_RdemBlock_RdemGeom`).
 
 With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemElastic`` (springs, current value), ``rdemDashpot``, ``rdemFriction`` and ``rdemBondBreak`` (cumulated).)""",
+		((bool,deferForces,false,,"Leave the forces and torques in :yref:`RdemPhys` (``force``, ``torque1``, ``torque2``) for :yref:`RdemForceAssembler`, which sums them per body in a fixed order, instead of adding them to the bodies in the order of the interaction container (which ``O.load`` and the collider change; ``rdem.engines()`` sets it)."))
 		((OpenMPAccumulator<int>,tensionBreaks,,Attr::readonly,"Number of restoring springs broken in tension (eq. 15) so far."))
 		((OpenMPAccumulator<int>,shearBreaks,,Attr::readonly,"Number of restoring springs broken in shear (eq. 16) so far."))
 		((int,elasticIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))

@@ -34,6 +34,9 @@ Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact s
 		((vector<Real>,segTau,,,"Per bonded segment: magnitude of the shear stress of the last step [Pa]."))
 		((vector<Vector3r>,sampleShear,,,"Per contact sample key: elastic shear elongation of its contact spring (global) [m]."))
 		((Vector3r,force,Vector3r::Zero(),,"Total force exerted by body 1 on body 2 in the last step (global) [N]."))
+		((Vector3r,torque1,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"Torque on body 1 about its centroid in the last step (global) [N·m]; kept for :yref:`RdemForceAssembler`."))
+		((Vector3r,torque2,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"Torque on body 2 about its centroid in the last step (global) [N·m]."))
+		((long,forceIter,-1,(Attr::noSave|Attr::readonly),"Iteration whose ``force``, ``torque1``, ``torque2`` wait for :yref:`RdemForceAssembler` (-1: applied by the law itself)."))
 		,
 		/* ctor */ createIndex();
 		,

@@ -186,14 +186,15 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 		std::array<Body::id_t, 8> key = n;
 		std::sort(key.begin(), key.end());
 		if (!seen.insert(key).second) continue;
-		rdem::Nodes8<Real> X;
-		Real               lam = 0;
+		rdem::Nodes8<Real>                X;
+		std::array<std::array<Real, 3>, 8> parts; // volume, E, ν of each node's block
 		for (size_t a = 0; a < 8; ++a) {
 			const Body& body = *Body::byId(n[a], scene);
 			X[a]             = body.state->pos;
 			const auto& m    = *static_cast<RdemMat*>(body.material.get());
-			lam += rdem::lameLambda(m.young, m.poisson) / 8;
+			parts[a]         = { 8 * static_cast<RdemBlock*>(body.shape.get())->extents.prod(), m.young, m.poisson };
 		}
+		const Real lam = rdem::layeredLambda<Real>(parts);
 		if (!rdem::hex8IsValid<Real>(X)) {
 			std::ostringstream msg;
 			msg << "RdemPoissonEngine.build: the centroids of blocks " << n[0] << "," << n[1] << ",...," << n[7] << " form an inverted or flat hexahedron";
@@ -251,6 +252,7 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 		p->weightNormal = (L + extA + extB) / L * cross;
 		p->weightShear  = cross;
 	}
+	scalePrev.clear(); // the first step takes the current scales
 	LOG_INFO(nElements() << " Poisson elements on " << ids.size() << " blocks (" << incomplete << " groups skipped: a bond missing)");
 	prepare();
 }
@@ -325,12 +327,14 @@ vector<Real> RdemPoissonEngine::elementScales()
 	for (size_t e = 0; e < s.size(); ++e)
 		for (size_t k = 0; k < 12; ++k) {
 			const auto& I = bonds[12 * e + k];
-			if (!I || !I->isReal()) {
+			// A released bond is gone for good: its interaction is dead, or, when prepare() looked the pair up after the
+			// blocks touched again (e.g. after O.load), it is a sampled contact without segments.
+			const auto* p = I && I->isReal() ? static_cast<RdemPhys*>(I->phys.get()) : nullptr;
+			if (!p || p->segState.empty()) {
 				s[e] = 0;
 				break;
 			}
-			const auto* p = static_cast<RdemPhys*>(I->phys.get());
-			s[e]          = math::min(s[e], Real(p->nIntact()) / Real(p->segState.size()));
+			s[e] = math::min(s[e], Real(p->nIntact()) / Real(p->segState.size()));
 		}
 	return s;
 }
@@ -347,28 +351,35 @@ void RdemPoissonEngine::action()
 	}
 	const vector<Real>& scale = scales;
 	const long         nEl   = long(nElements());
+	if (scalePrev.size() != scale.size()) scalePrev = scale;
+	const bool trackEnergy = scene->trackEnergy;
+	Real energy = 0, released = 0; // Σ ½ s uᵀK_p u of the elements; ½ (s_prev - s) uᵀK_p u lost to cracks in this step [J]
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) reduction(+ : energy, released)
 #endif
 	for (long e = 0; e < nEl; ++e) {
-		const Real s = scale[size_t(e)];
-		if (s <= 0) continue;
+		const Real s = scale[size_t(e)], sPrev = scalePrev[size_t(e)];
+		if (s <= 0 && sPrev <= 0) continue;
 		rdem::Nodes8<Real> X, x;
 		for (size_t a = 0; a < 8; ++a) {
 			X[a] = refPos[8 * size_t(e) + a];
 			x[a] = Body::byId(nodes[8 * size_t(e) + a], scene)->state->pos;
 		}
-		rdem::Vec24<Real> F;
-		if (corotational) {
-			const Matrix3r R = rdem::hex8Rotation<Real>(X, x);
-			F                = -s * (stiffness[stiffnessOf[size_t(e)]] * rdem::hex8Displacement<Real>(X, x, &R));
-			for (int a = 0; a < 8; ++a)
-				F.segment<3>(3 * a) = R * F.segment<3>(3 * a).eval();
-		} else {
-			F = -s * (stiffness[stiffnessOf[size_t(e)]] * rdem::hex8Displacement<Real>(X, x, nullptr));
+		const Matrix3r          R  = corotational ? rdem::hex8Rotation<Real>(X, x) : Matrix3r::Identity();
+		const rdem::Vec24<Real> u  = rdem::hex8Displacement<Real>(X, x, corotational ? &R : nullptr);
+		const rdem::Vec24<Real> Ku = stiffness[stiffnessOf[size_t(e)]] * u;
+		if (trackEnergy) {
+			energy += s * u.dot(Ku) / 2;
+			released += (sPrev - s) * u.dot(Ku) / 2;
 		}
+		if (s <= 0) continue;
 		for (size_t a = 0; a < 8; ++a)
-			scene->forces.addForce(nodes[8 * size_t(e) + a], F.segment<3>(3 * long(a)));
+			scene->forces.addForce(nodes[8 * size_t(e) + a], Vector3r(-s * (R * Ku.segment<3>(3 * long(a)))));
+	}
+	scalePrev = scale;
+	if (scene->trackEnergy) {
+		scene->energy->add(energy, "rdemPoisson", energyIx, /*reset every step*/ true);
+		scene->energy->add(released, "rdemPoissonRelease", releaseIx, /*reset every step*/ false);
 	}
 }
 

@@ -33,20 +33,25 @@ public:
 
 One virtual 8-node hexahedral finite element is made for every $2\times2\times2$ group of face-bonded blocks; its nodes are the 8 block centroids (call ``build()`` once the bonds exist; a $10\times10\times12$ grid gives $9\times9\times11=891$ elements). Every step each element adds to its 8 blocks the nodal forces $\mathbf{F}=-K_p\,\Delta\mathbf{u}$, $K_p=\int B^T D_p B\,dV$ (trilinear shape functions, $2\times2\times2$ Gauss), $D_p$ the off-diagonal part of the isotropic elasticity tensor (eq. 19) and $\Delta\mathbf{u}$ the centroid displacements from the reference positions. Shortening along $z$ pushes the blocks outward in $x$ and $y$.
 
-*Materials:* an element uses the mean Lamé constant $\lambda$ of its 8 blocks' :yref:`RdemMat`.
+*Materials:* an element of one material uses its Lamé constant $\lambda$; an element of blocks of different :yref:`RdemMat` uses $\lambda_e=\langle\lambda/M\rangle/\langle 1/M\rangle$, $M=\lambda+2\mu$, $\langle\cdot\rangle$ block-volume averages (Backus 1962, the coupling across the layers of a layered medium; the harmonic mean of $\lambda$ for equal $\nu$), so that a soft mortar layer softens the coupling as it softens the springs.
 
 *Corotational* (``corotational=True``): the element's rigid rotation (polar decomposition of the deformation gradient at its centre) is removed before $K_p$ and the forces are rotated back, so rigidly rotating groups of blocks stay force-free (needed when blocks rotate by more than a few degrees, e.g. masonry collapse). Off by default, as in the paper.
 
 *Cracks:* an element's forces are scaled by the smallest fraction of intact restoring springs over the 12 bonds between its blocks, so an element bridging an open crack stops pushing its sides apart (a fully broken bond releases it for good).
 
+With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemPoisson``, the elements' elastic energy $\tfrac12 s\,\Delta\mathbf{u}^T K_p\Delta\mathbf{u}$ (current value; rotation removed in the corotational case), and ``rdemPoissonRelease``, the element energy $\tfrac12(s_{prev}-s)\Delta\mathbf{u}^T K_p\Delta\mathbf{u}$ taken away when cracks lower an element's scale (cumulated; negative when the released element energy was negative, since $D_p$ alone is indefinite: releasing then *adds* energy, up to a few % of the work in the compression test, doc/stability.md).
+
 *Topology:* ``build`` refuses blocks with two bonded neighbours on one side (e.g. running-bond masonry), groups that close inconsistently and block sets with no group at all; blocks at edges and surfaces belong to fewer elements or none.)""",
 		((vector<int>,nodes,,Attr::readonly,"Body ids of the element nodes, 8 per element, node $a=i+2j+4k$ at the block $(i,j,k)\\in\\{0,1\\}^3$ of the group."))
 		((vector<Vector3r>,refPos,,Attr::readonly,"Reference positions of the nodes (8 per element) [m]."))
-		((vector<Real>,lambda,,Attr::readonly,"Lamé constant $\\lambda$ of each element (mean of its blocks) [Pa]."))
+		((vector<Real>,lambda,,Attr::readonly,"Lamé constant $\\lambda$ of each element (see *Materials*) [Pa]."))
 		((bool,consistent,false,,"Consistent formulation (doc/theory.md §5.2): elements also integrate over the half-block skin beyond free faces and ``build`` sets boundary weights of the springs, so that with $\\lambda+2\\mu$ springs (:yref:`Ip2_RdemMat_RdemMat_RdemPhys::springModulus` = 1) a uniform strain is an exact equilibrium and the apparent $E$ and $\\nu$ equal the input. Faces whose blocks have their normal translation prescribed (blocked DOF) are platens: no skin there. Off: the paper's elements on the centroid hull only."))
 		((vector<Real>,skin,,Attr::readonly,"Skin weights of each element (6 per element: $-x,+x,-y,+y,-z,+z$ of its axes), 0 without skin; see :yref:`RdemPoissonEngine::consistent`."))
 		((bool,corotational,false,,"Remove each element's rigid rotation before $K_p$ (see above)."))
 		((bool,releaseOnCrack,true,,"Scale element forces by the intact fraction of their bonds (see above)."))
+		((vector<Real>,scalePrev,,(Attr::hidden|Attr::readonly),"Force scale of each element in the last step (saved: the energy released by cracks in the next step depends on it)."))
+		((int,energyIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
+		((int,releaseIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 		,
 		/* ctor */,
 		.def("build",&RdemPoissonEngine::buildPy,(py::arg("ids")=py::list()),"Make the elements from the bonded blocks ``ids`` (default: all blocks); current positions become the reference. With ``consistent``, block the platens' DOFs first: the skin and spring weights depend on them.")

@@ -69,9 +69,22 @@ Real RdemTimeStepper::estimate(Scene* sc) const
 
 Real RdemTimeStepper::estimatePy() const { return estimate(Omega::instance().getScene().get()); }
 
-void RdemTimeStepper::computeTimeStep(Scene* sc)
+void RdemTimeStepper::postLoad(RdemTimeStepper&)
 {
 	if (!(safety > 0 && safety <= 1)) throw std::invalid_argument("RdemTimeStepper.safety = " + std::to_string(safety) + ": must be in (0, 1]");
+}
+
+bool RdemTimeStepper::isActivated()
+{
+	if (timeStepUpdateInterval < 1) throw std::invalid_argument("RdemTimeStepper.timeStepUpdateInterval = 0: must be an integer >= 1 [steps]");
+	return scene->iter % timeStepUpdateInterval == 0 || !(scene->dt > 0 && std::isfinite(scene->dt));
+}
+
+void RdemTimeStepper::computeTimeStep(Scene* sc)
+{
+	if (!active && !(sc->dt > 0 && std::isfinite(sc->dt)))
+		throw std::invalid_argument(
+		        "O.dt = " + std::to_string(sc->dt) + ": the time step must be finite and > 0 [s] (or O.dt = -1 to let RdemTimeStepper choose it)");
 	criticalDt = estimate(sc);
 	if (!std::isfinite(criticalDt)) return;
 	if (active) sc->dt = safety * criticalDt;

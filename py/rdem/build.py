@@ -8,7 +8,7 @@ import math
 from yade import O, utils, Vector3, Quaternion
 from yade.wrapper import (Body, RdemBlock, RdemMat, ForceResetter, InsertionSortCollider, Bo1_Box_Aabb, InteractionLoop, Ig2_RdemBlock_RdemBlock_RdemGeom,
                           Ip2_RdemMat_RdemMat_RdemPhys, Law2_RdemGeom_RdemPhys_FaceSprings, RdemPoissonEngine, RdemTimeStepper, NewtonIntegrator,
-                          RdemContactGate)
+                          RdemContactGate, RdemFiniteGuard, RdemForceAssembler)
 
 POISSON_MODES = {None: None, 'off': None, 'paper': 0, 'consistent': 1}
 
@@ -23,6 +23,8 @@ def block(center, halfExtents, material, orientation=Quaternion.Identity, fixed=
 	mat = material if not isinstance(material, int) else O.materials[material]
 	if not isinstance(mat, RdemMat):
 		raise ValueError('material must be an RdemMat (or its index in O.materials), not %s' % type(mat).__name__)
+	if not (math.isfinite(mat.density) and mat.density > 0):
+		raise ValueError('RdemMat.density = %r: must be finite and > 0 [kg/m3] (it gives the block mass)' % (mat.density, ))
 	shape = RdemBlock(extents=Vector3(a, b, c), color=color if color is not None else Vector3(0.7, 0.7, 0.7))
 	V = 8 * a * b * c
 	body = Body()
@@ -110,9 +112,12 @@ def bond(ids, tolerance=1e-6):
 	"""Bond every pair of face-adjacent blocks among ``ids`` with restoring springs (through ``utils.createInteraction``,
 	so ``O.engines`` must come from :func:`engines` first). Returns the number of bonds.
 
-	Raises ValueError if two blocks overlap by more than ``tolerance`` times the smaller half-extent, or if ``ids``
-	contains a body that is not a block."""
+	Raises ValueError if two blocks overlap by more than ``tolerance`` times the smaller half-extent, if ``ids``
+	contains a body that is not a block, or if a block of ``ids`` shares no face with any other (not adjacent: nothing
+	would hold it)."""
 	ids = list(ids)
+	if not tolerance >= 0:
+		raise ValueError('tolerance = %r: must be >= 0 (relative to the smaller half-extent)' % (tolerance, ))
 	geomFunctor()  # fail early and clearly if the engines are not there
 	blocks = []
 	for i in ids:
@@ -134,7 +139,7 @@ def bond(ids, tolerance=1e-6):
 			for cy in ry:
 				for cz in rz:
 					grid.setdefault((cx, cy, cz), []).append(entry)
-	n = 0
+	candidates = []  # face-to-face pairs; all checks come before the first bond is made
 	for (i, lo, hi, hmin) in blocks:
 		seen = set()
 		rx, ry, rz = cellRange(lo, hi)
@@ -154,11 +159,19 @@ def bond(ids, tolerance=1e-6):
 							                 (i, j, sorted(overlap)[0], tol))
 						if sum(1 for o in overlap if o > tol) < 2:
 							continue  # touch along an edge or at a corner only
-						try:
-							utils.createInteraction(i, j)
-							n += 1
-						except RuntimeError:
-							pass  # parallel faces not aligned or no shared area: not bonded
+						candidates.append((i, j))
+	touching = set(k for pair in candidates for k in pair)
+	alone = [i for i in ids if i not in touching]
+	if len(ids) > 1 and alone:
+		raise ValueError('bond: block %d shares no face with any other of the %d blocks given (ids must be face-adjacent blocks; '
+		                 '%d such blocks: %s)' % (alone[0], len(ids), len(alone), alone[:10]))
+	n = 0
+	for i, j in candidates:
+		try:
+			utils.createInteraction(i, j)
+			n += 1
+		except RuntimeError:
+			pass  # parallel faces not aligned or no shared area: not bonded
 	return n
 
 
@@ -168,8 +181,16 @@ def _aligned(a, b):
 	return all(min(abs(abs(R[i, j]) - 1), abs(R[i, j])) < 1e-9 for i in range(3) for j in range(3))
 
 
-def engines(segmentsPerEdge=2, poisson='paper', corotational=False, recontact=True, damping=0.0, gravity=(0, 0, 0), dt=None, safety=0.8,
-            verletDist=None):
+def engines(segmentsPerEdge=2,
+            poisson='paper',
+            corotational=False,
+            recontact=True,
+            damping=0.0,
+            gravity=(0, 0, 0),
+            dt=None,
+            safety=0.8,
+            verletDist=None,
+            finiteGuard=True):
 	"""The engine list of a refined-DEM scene.
 
 	:param segmentsPerEdge: $n$, each bonded face carries $n\\times n$ springs (paper: 2).
@@ -183,7 +204,9 @@ def engines(segmentsPerEdge=2, poisson='paper', corotational=False, recontact=Tr
 	:param dt: ``None``: :yref:`RdemTimeStepper` sets ``O.dt = safety·Δt_crit``; a number: fixed ``O.dt`` [s] (the stepper then
 	    only warns if it exceeds the estimate).
 	:param verletDist: collider sweep distance [m] (default: none, the collider runs every step; set it to about 5 % of the
-	    block size for speed)."""
+	    block size for speed).
+	:param finiteGuard: append :yref:`RdemFiniteGuard` after the integrator: the run stops at the first NaN or infinite
+	    position, velocity or force, naming the body and interactions (costs < 1 % of a step)."""
 	if poisson not in POISSON_MODES:
 		raise ValueError('poisson = %r: must be one of %s' % (poisson, sorted(k for k in POISSON_MODES if k)))
 	if not (isinstance(segmentsPerEdge, int) and segmentsPerEdge >= 1):
@@ -194,9 +217,13 @@ def engines(segmentsPerEdge=2, poisson='paper', corotational=False, recontact=Tr
 		raise ValueError('dt = %r: must be > 0 [s] (or None for the automatic time step)' % (dt, ))
 	if not (0 < safety <= 1):
 		raise ValueError('safety = %r: must be in (0, 1]' % (safety, ))
+	if verletDist is not None and not (math.isfinite(verletDist) and verletDist >= 0):
+		raise ValueError('verletDist = %r: must be finite and >= 0 [m] (or None)' % (verletDist, ))
+	if len(gravity) != 3 or not all(math.isfinite(g) for g in gravity):
+		raise ValueError('gravity = %r: must be 3 finite numbers [m/s2]' % (gravity, ))
 	mode = POISSON_MODES[poisson]
 	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge)],
-	                       [Ip2_RdemMat_RdemMat_RdemPhys(springModulus=1 if mode == 1 else 0)], [Law2_RdemGeom_RdemPhys_FaceSprings()])
+	                       [Ip2_RdemMat_RdemMat_RdemPhys(springModulus=1 if mode == 1 else 0)], [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True)])
 	eng = [ForceResetter()]
 	if recontact not in (True, False, 'always'):
 		raise ValueError("recontact = %r: must be True, False or 'always'" % (recontact, ))
@@ -204,11 +231,13 @@ def engines(segmentsPerEdge=2, poisson='paper', corotational=False, recontact=Tr
 		eng.append(RdemContactGate())
 	if recontact:
 		eng.append(InsertionSortCollider([Bo1_Box_Aabb()], verletDist=verletDist if verletDist is not None else 0.0))
-	eng.append(loop)
+	eng += [loop, RdemForceAssembler()]  # forces summed per body in a fixed order: O.load continues bit for bit
 	if mode is not None:
 		eng.append(RdemPoissonEngine(corotational=corotational, consistent=mode == 1))
 	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None)
 	eng += [stepper, NewtonIntegrator(damping=damping, gravity=Vector3(gravity))]
+	if finiteGuard:
+		eng.append(RdemFiniteGuard())
 	if dt is not None:
 		O.dt = dt
 	return eng

@@ -12,7 +12,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
+#include <array>
 #include <cmath>
+#include <vector>
 
 namespace {
 
@@ -206,6 +208,41 @@ TEST(Elasticity, InverseOfEq18IsComplianceOfEq4)
 	EXPECT_NEAR(C(0, 0), 1 / E, 1e-14 / E);
 	EXPECT_NEAR(C(0, 1), -nu / E, 1e-14 / E);
 	EXPECT_NEAR(C(5, 5), 8e-11, 1e-14 * 8e-11);
+}
+
+TEST(Elasticity, LayeredLambdaOfOneMaterialIsLambda)
+{
+	// Four blocks of 8 cm³ and four of 1 cm³, one material: λ = 8.333e9 Pa, whatever the volumes.
+	std::vector<std::array<double, 3>> parts;
+	for (int a = 0; a < 8; ++a)
+		parts.push_back({ a < 4 ? 8e-6 : 1e-6, E, nu });
+	EXPECT_NEAR(rdem::layeredLambda<double>(parts), rdem::lameLambda(E, nu), 1e-15 * rdem::lameLambda(E, nu));
+}
+
+TEST(Elasticity, LayeredLambdaOfEqualNuIsHarmonicMean)
+{
+	// Brick (E, volume 16 cm³) and mortar (E/100, 3.2 cm³), both ν = 0.2: λ/M = 1/4 for both, so
+	// <λ/M>/<1/M> = 1/<1/λ> (volume-weighted): λ_b = 8.333e9, λ_m = 8.333e7 Pa,
+	// λ_e = (4·16 + 4·3.2) / (4·16/λ_b + 4·3.2/λ_m) = 76.8 / (64 + 1280) λ_b = 0.057143 λ_b = 4.7619e8 Pa.
+	const double                       lb = rdem::lameLambda(E, nu);
+	std::vector<std::array<double, 3>> parts;
+	for (int a = 0; a < 4; ++a) {
+		parts.push_back({ 16e-6, E, nu });
+		parts.push_back({ 3.2e-6, E / 100, nu });
+	}
+	EXPECT_NEAR(rdem::layeredLambda<double>(parts), 76.8 / 1344 * lb, 1e-14 * lb);
+}
+
+TEST(Elasticity, LayeredLambdaIsBackusC13)
+{
+	// Two equal layers, E = 30 GPa ν = 0.2 (λ = 8.333e9, M = 33.333e9) and E = 30 GPa ν = 0.4 (λ = 42.857e9,
+	// M = 64.286e9): <λ/M> = (0.25 + 0.66667)/2 = 0.45833, <1/M> = (3e-11 + 1.5556e-11)/2 = 2.2778e-11,
+	// λ_e = 2.0122e10 Pa (between the two λ, not their mean 2.5595e10).
+	const std::vector<std::array<double, 3>> parts { { 1, E, 0.2 }, { 1, E, 0.4 } };
+	const double                             l1 = rdem::lameLambda(E, 0.2), l2 = rdem::lameLambda(E, 0.4);
+	const double                             M1 = l1 + 2 * rdem::shearModulus(E, 0.2), M2 = l2 + 2 * rdem::shearModulus(E, 0.4);
+	EXPECT_NEAR(rdem::layeredLambda<double>(parts), (l1 / M1 + l2 / M2) / (1 / M1 + 1 / M2), 1e-14 * l2);
+	EXPECT_NEAR(rdem::layeredLambda<double>(parts), 2.0122e10, 1e6);
 }
 
 } // namespace

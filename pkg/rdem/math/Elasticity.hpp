@@ -35,6 +35,23 @@ namespace rdem {
 	/// Shear modulus μ = G = E/(2(1+ν)) [Pa].
 	template <class S> S shearModulus(S E, S nu) { return E / (2 * (1 + nu)); }
 
+	/* Lamé λ of a Poisson element whose nodes are blocks of different materials [Pa]: the coupling of a finely layered
+	   medium across its layers, λ_e = <λ/M>/<1/M> with M = λ+2μ and <·> volume averages (Backus 1962, "Long-wave elastic
+	   anisotropy produced by horizontal layering", J. Geophys. Res. 67(11):4427-4440: the C13 of the layered medium).
+	   One material: λ. Equal ν: the volume-weighted harmonic mean of λ, so a soft layer (mortar) softens the coupling as it
+	   softens the series springs (eq. 12); the arithmetic mean would pair a stiff λ with soft springs, an indefinite
+	   element. parts: (volume [m³], E [Pa], ν) of each block. */
+	template <class S, class Parts> S layeredLambda(const Parts& parts)
+	{
+		S lambdaOverM = 0, complianceM = 0;
+		for (const auto& p : parts) {
+			const S lam = lameLambda(p[1], p[2]), M = lam + 2 * shearModulus(p[1], p[2]);
+			lambdaOverM += p[0] * lam / M;
+			complianceM += p[0] / M;
+		}
+		return lambdaOverM / complianceM;
+	}
+
 	/// Normal modulus of a face spring [Pa], see SpringModulus.
 	template <class S> S springNormalModulus(S E, S nu, SpringModulus m)
 	{

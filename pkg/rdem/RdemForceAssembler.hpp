@@ -1,0 +1,25 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+#pragma once
+
+#include <core/GlobalEngine.hpp>
+
+namespace yade {
+
+/// Sums the interaction forces of Law2_RdemGeom_RdemPhys_FaceSprings per body, in the order of the other body's id.
+class RdemForceAssembler : public GlobalEngine {
+public:
+	void action() override;
+	// clang-format off
+	YADE_CLASS_BASE_DOC(RdemForceAssembler,GlobalEngine,R"""(Applies the forces and torques that :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` left in :yref:`RdemPhys` (with :yref:`Law2_RdemGeom_RdemPhys_FaceSprings::deferForces`), summing them body by body in the order of the other body's id.
+
+Floating-point sums depend on their order. The law alone adds its forces in the order of the interaction container, which ``O.load`` changes (interactions without geometry, e.g. released bonds, are not saved and come back at the end of the container when the collider finds the pair again); the sum of a body's forces then differs in the last bits and a reloaded run drifts from the uninterrupted one. Summed here in a fixed order, it continues bit for bit (tests/yade/test_save_load.py), and the result no longer depends on the number of threads. Place it right after the :yref:`InteractionLoop` (``rdem.engines()`` does).)""");
+	// clang-format on
+};
+REGISTER_SERIALIZABLE(RdemForceAssembler);
+
+} // namespace yade
