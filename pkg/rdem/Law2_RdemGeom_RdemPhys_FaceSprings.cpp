@@ -78,6 +78,22 @@ long Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(const Scene* scene)
 	return n;
 }
 
+bool Law2_RdemGeom_RdemPhys_FaceSprings::takeActiveSetChanged(const Scene* scene)
+{
+	bool changed = false;
+	for (const auto& e : scene->engines) {
+		const auto* loop = dynamic_cast<const InteractionLoop*>(e.get());
+		if (!loop) continue;
+		for (const auto& f : loop->lawDispatcher->functors) {
+			auto* law = dynamic_cast<Law2_RdemGeom_RdemPhys_FaceSprings*>(f.get());
+			if (!law || law->activeSetChanges.get() == 0) continue;
+			changed = true;
+			law->activeSetChanges.reset();
+		}
+	}
+	return changed;
+}
+
 bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
 	RdemGeom&      g           = *static_cast<RdemGeom*>(ig.get());
@@ -168,10 +184,14 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		}
 		if (!anyIntactOrTouching) {
 			// Fully broken and apart: release the bond (the interaction is reset); the collider and contact sampling take over.
+			if (deferForces) activeSetChanges += 1;
 			return false;
 		}
 	} else {
-		if (g.sampleKey.empty()) return false; // apart: the collider drops the pair once the bounding boxes separate
+		if (g.sampleKey.empty()) { // apart: the collider drops the pair once the bounding boxes separate
+			if (deferForces) activeSetChanges += 1;
+			return false;
+		}
 		const size_t nKeys = size_t(2 * 6 * (g.samplesPerEdge + 1) * (g.samplesPerEdge + 1) + 1); // face samples, then the edge contact
 		p.sampleShear.resize(nKeys, Vector3r::Zero());
 		std::vector<char> active(nKeys, 0);
@@ -193,6 +213,7 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	// Body 1 receives -F at every point C: Σ (C - x1) × (-F) = -(t2 + (x2 - x1) × f2).
 	const Vector3r t1 = -(t2 + (x2 - x1).cross(f2));
 	if (deferForces) {
+		if (p.forceIter != scene->iter - 1) activeSetChanges += 1; // new, or back after a pause: not in the assembler's lists
 		p.torque1   = t1;
 		p.torque2   = t2;
 		p.forceIter = scene->iter;

@@ -19,6 +19,11 @@ public:
 	bool go(shared_ptr<IGeom>& geom, shared_ptr<IPhys>& phys, Interaction* I) override;
 	/// Restoring springs broken so far (tension + shear) over every instance of this law in the scene's InteractionLoops.
 	static long brokenSprings(const Scene* scene);
+	/// Whether, since the last call, an interaction started or stopped leaving deferred forces (over every instance of
+	/// this law in the scene); resets the record. Lets RdemForceAssembler keep its per-body lists between such events.
+	static bool takeActiveSetChanged(const Scene* scene);
+	/// Number of interactions that started or stopped leaving deferred forces since the last takeActiveSetChanged.
+	OpenMPAccumulator<int> activeSetChanges;
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(Law2_RdemGeom_RdemPhys_FaceSprings,LawFunctor,R"""(Constitutive law of the refined distinct element method (paper §3, eqs. 13-17).
 

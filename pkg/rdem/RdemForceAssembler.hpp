@@ -7,6 +7,7 @@
 #pragma once
 
 #include <core/GlobalEngine.hpp>
+#include <core/Interaction.hpp>
 
 namespace yade {
 
@@ -17,8 +18,21 @@ public:
 	// clang-format off
 	YADE_CLASS_BASE_DOC(RdemForceAssembler,GlobalEngine,R"""(Applies the forces and torques that :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` left in :yref:`RdemPhys` (with :yref:`Law2_RdemGeom_RdemPhys_FaceSprings::deferForces`), summing them body by body in the order of the other body's id.
 
-Floating-point sums depend on their order. The law alone adds its forces in the order of the interaction container, which ``O.load`` changes (interactions without geometry, e.g. released bonds, are not saved and come back at the end of the container when the collider finds the pair again); the sum of a body's forces then differs in the last bits and a reloaded run drifts from the uninterrupted one. Summed here in a fixed order, it continues bit for bit (tests/yade/test_save_load.py), and the result no longer depends on the number of threads. Place it right after the :yref:`InteractionLoop` (``rdem.engines()`` does).)""");
+Floating-point sums depend on their order. The law alone adds its forces in the order of the interaction container, which ``O.load`` changes (interactions without geometry, e.g. released bonds, are not saved and come back at the end of the container when the collider finds the pair again); the sum of a body's forces then differs in the last bits and a reloaded run drifts from the uninterrupted one. Summed here in a fixed order, it continues bit for bit (tests/yade/test_save_load.py), and the result no longer depends on the number of threads. Place it right after the :yref:`InteractionLoop` (``rdem.engines()`` does).
+
+The per-body lists, sorted by the other body's id, are kept from step to step and rebuilt only when the law reports that an interaction started or stopped leaving forces, or when the number of bodies or interactions changed: a step costs one pass over the lists (doc/performance.md).)""");
 	// clang-format on
+
+private:
+	/// One side of an interaction in a body's list: the interaction, and whether the body is its second body.
+	struct Side {
+		shared_ptr<Interaction> interaction;
+		bool                    second;
+	};
+	vector<size_t> first;       // the list of body b is sides[first[b] .. first[b+1]) (not saved: rebuilt after O.load)
+	vector<Side>   sides;       // all lists, bodies in id order, each sorted by the other body's id
+	long           builtIter = -1, builtBodies = -1, builtInteractions = -1;
+	void           rebuild();
 };
 REGISTER_SERIALIZABLE(RdemForceAssembler);
 
