@@ -40,6 +40,7 @@ class Stability(unittest.TestCase):
 		self.assertLess(err, tol, label)
 		self.assertLess(sc.deepestPenetration(ids), PENETRATION_TOL, label)
 		self.assertLess(time.time() - t0, wallLimit, label)  # a stable run of this size takes ~1 s
+		print('%s: worst energy error %.3g, deepest penetration %.3g, %.1f s' % (label, err, sc.deepestPenetration(ids), time.time() - t0))
 		return err
 
 	def testNearlyIncompressibleConsistent(self):
@@ -125,6 +126,7 @@ class Stability(unittest.TestCase):
 
 	def testRigidMotionCorotational(self):
 		sigma, poisson, breaks, centrifugal, ids = self.rigidMotion(True)
+		print('rigid motion: largest spring stress %.4g Pa (bound %.4g), |rdemPoisson| %.3g J' % (sigma, centrifugal, poisson))
 		self.assertTrue(sc.stateIsFinite())
 		self.assertEqual(breaks, 0)
 		# Only the centripetal load stresses the springs: a spinning body carries ~rho Omega^2 R^2 / 2 at most,
@@ -135,6 +137,7 @@ class Stability(unittest.TestCase):
 		self.assertLess(poisson, centrifugal**2 / sc.E * (6 * sc.H)**3)
 		# the control: without the corotational frame the same motion is torn apart (the test can fail)
 		sigmaNo, poissonNo, breaksNo, _, _ = self.rigidMotion(False)
+		print('rigid motion without corotational frame: stress %.4g Pa, %d breaks, finite %s' % (sigmaNo, breaksNo, sc.stateIsFinite()))
 		self.assertTrue(breaksNo > 0 or not sc.stateIsFinite() or sigmaNo > 10 * centrifugal)
 
 	def testLongUndampedVibration(self):
