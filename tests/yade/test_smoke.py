@@ -6,7 +6,7 @@ from yade import O
 import rdem
 
 CLASSES = ('RdemMat', 'RdemBlock', 'RdemGeom', 'RdemPhys', 'Ig2_RdemBlock_RdemBlock_RdemGeom', 'Ip2_RdemMat_RdemMat_RdemPhys',
-           'Law2_RdemGeom_RdemPhys_FaceSprings', 'RdemPoissonEngine', 'RdemTimeStepper')
+           'Law2_RdemGeom_RdemPhys_FaceSprings', 'RdemPoissonEngine', 'RdemTimeStepper', 'RdemForceAssembler', 'RdemFiniteGuard')
 
 
 class Smoke(unittest.TestCase):

@@ -40,6 +40,7 @@ class Stability(unittest.TestCase):
 		self.assertLess(err, tol, label)
 		self.assertLess(sc.deepestPenetration(ids), PENETRATION_TOL, label)
 		self.assertLess(time.time() - t0, wallLimit, label)  # a stable run of this size takes ~1 s
+		print('%s: worst energy error %.3g, deepest penetration %.3g, %.1f s' % (label, err, sc.deepestPenetration(ids), time.time() - t0))
 		return err
 
 	def testNearlyIncompressibleConsistent(self):
@@ -101,7 +102,7 @@ class Stability(unittest.TestCase):
 
 	def rigidMotion(self, corotational):
 		"""A bonded 3x3x3 concrete cube (finite strengths) translating at 100 m/s and spinning at 300 rad/s for 2 rad.
-		Returns (largest spring stress [Pa], largest |rdemPoisson| [J], breaks, rho*Omega^2*R^2 [Pa])."""
+		Returns (largest spring stress [Pa], largest |rdemPoisson| [J], breaks, rho*Omega^2*a^2 [Pa], ids)."""
 		ids = sc.grid(0.2, 'consistent', corotational=corotational, tensileStrength=4.5e6, cohesion=9e6)
 		V, W = Vector3(1, 2, 3).normalized() * 100, Vector3(1, -1, 2).normalized() * 300
 		c = sum((O.bodies[i].state.pos for i in ids), Vector3.Zero) / len(ids)
@@ -119,22 +120,26 @@ class Stability(unittest.TestCase):
 			for I in O.interactions:
 				sigma = max([sigma] + [abs(x) for x in I.phys.segSigma] + list(I.phys.segTau))
 			poisson = max(poisson, abs(dict(O.energy.items()).get('rdemPoisson', 0)))
-		R = 3 * math.sqrt(3) * sc.H  # half-diagonal of the cube
+		a = 3 * sc.H  # half-width of the cube
 		rho = O.bodies[ids[0]].material.density
-		return sigma, poisson, sum(rdem.breakCounts()), rho * W.norm()**2 * R**2, ids
+		return sigma, poisson, sum(rdem.breakCounts()), rho * W.norm()**2 * a**2, ids
 
 	def testRigidMotionCorotational(self):
 		sigma, poisson, breaks, centrifugal, ids = self.rigidMotion(True)
+		print('rigid motion: largest spring stress %.4g Pa (bound %.4g), |rdemPoisson| %.3g J' % (sigma, centrifugal, poisson))
 		self.assertTrue(sc.stateIsFinite())
 		self.assertEqual(breaks, 0)
-		# Only the centripetal load stresses the springs: a spinning body carries ~rho Omega^2 R^2 / 2 at most,
-		# doubled by the sudden start (dynamic factor 2): bound rho Omega^2 R^2 = 0.56 MPa (measured: see doc).
+		# Only the centripetal load stresses the springs. A rod of half-length a spinning about its middle carries
+		# rho Omega^2 a^2 / 2 at the middle (the largest); the cube's material beside the axis only shares it. The
+		# motion starts unstressed, so the stress overshoots up to twice the static one: bound rho Omega^2 a^2 =
+		# 0.19 MPa for a = 3 cm. Measured 0.052 MPa; without the corotational frame 0.87 MPa and 62 broken springs.
 		self.assertLess(sigma, centrifugal)
 		self.assertLess(sc.deepestPenetration(ids), PENETRATION_TOL)
 		# the elements see no rotation: their energy is that of the centripetal strain, sigma^2/E per volume
 		self.assertLess(poisson, centrifugal**2 / sc.E * (6 * sc.H)**3)
 		# the control: without the corotational frame the same motion is torn apart (the test can fail)
 		sigmaNo, poissonNo, breaksNo, _, _ = self.rigidMotion(False)
+		print('rigid motion without corotational frame: stress %.4g Pa, %d breaks, finite %s' % (sigmaNo, breaksNo, sc.stateIsFinite()))
 		self.assertTrue(breaksNo > 0 or not sc.stateIsFinite() or sigmaNo > 10 * centrifugal)
 
 	def testLongUndampedVibration(self):
@@ -179,9 +184,10 @@ class Stability(unittest.TestCase):
 		worst /= PLATEN['work']
 		self.assertGreater(sum(rdem.breakCounts()), 0)  # it did crack
 		# energy balance, kinetic + elastic + dissipated (dashpots, friction, broken springs, Poisson elements
-		# released by cracks) - W: measured worst 0.8 % (0.4 % before the first crack), from the half-step kinetic
-		# energy and the rectangle rule of W; without the rdemPoissonRelease term it is 4.9 %: bound 2 %
-		self.assertLess(worst, 0.02)
+		# released by cracks) - W, largest over the run relative to the final W: measured 0.094 %, from the half-step
+		# kinetic energy and the rectangle rule of W. Without the rdemPoissonRelease term it was 4.9 %, with released
+		# elements revived by re-contact 0.8 %: bound 0.5 %
+		self.assertLess(worst, 0.005)
 		self.assertLess(sc.deepestPenetration(test.ids), 0.01)  # cracks open, blocks do not pass through
 		self.assertLess(time.time() - t0, 60)
 		print('fast compression: energy balance worst %.3g, %d steps, %.1f s' % (worst, O.iter, time.time() - t0))
