@@ -43,7 +43,9 @@ namespace {
 			for (int side = 0; side < 2; ++side) {
 				const Real     s    = side ? 1 : -1;
 				const Vector3r nf   = s * X.rot.col(k);
-				const auto     pts  = rdem::faceSamplePoints<Real>(X.pos + X.half[k] * nf, X.rot.col(k1), X.rot.col(k2), X.half[k1], X.half[k2], n);
+				const Vector3r fc   = X.pos + X.half[k] * nf;
+				if (!rdem::faceMayEnter<Real>(Y, fc, X.rot.col(k1), X.rot.col(k2), X.half[k1], X.half[k2])) continue;
+				const auto pts = rdem::faceSamplePoints<Real>(fc, X.rot.col(k1), X.rot.col(k2), X.half[k1], X.half[k2], n);
 				const int      face = 2 * k + side;
 				for (int p = 0; p < perFace; ++p) {
 					const auto hit = rdem::sampleContact<Real>(Y, pts[size_t(p)].pos, nf);

@@ -301,6 +301,48 @@ TEST(BlockGeometry, SampleContactIsCovariantUnderARigidMotion)
 	}
 }
 
+// ------------------------------------------------------------------------------------------------ faceMayEnter
+
+TEST(BlockGeometry, FaceMayEnterCullsOnlyFacesOutsideTheSlabs)
+{
+	const Block Y { V3(0, 0, 0), M3::Identity(), V3(1, 2, 3) };
+	// A unit square face in the plane x = 1.5, fully beyond Y's x slab: culled; in x = 0.9: kept.
+	EXPECT_FALSE(rdem::faceMayEnter(Y, V3(1.5, 0, 0), V3(0, 1, 0), V3(0, 0, 1), 0.5, 0.5));
+	EXPECT_TRUE(rdem::faceMayEnter(Y, V3(0.9, 0, 0), V3(0, 1, 0), V3(0, 0, 1), 0.5, 0.5));
+	// Touching Y's face plane x = 1 exactly (round-off margin): kept, as sampleContact counts points on the face.
+	EXPECT_TRUE(rdem::faceMayEnter(Y, V3(1.0, 0, 0), V3(0, 1, 0), V3(0, 0, 1), 0.5, 0.5));
+	// A face tilted by 45° about z whose centre is beyond the slab but whose corner reaches into it: kept.
+	const V3 t1 = V3(1, 1, 0).normalized();
+	EXPECT_TRUE(rdem::faceMayEnter(Y, V3(1.5, 0, 0), t1, V3(0, 0, 1), 1.0, 0.5)); // reach along x: 0.707 > 0.5
+	EXPECT_FALSE(rdem::faceMayEnter(Y, V3(1.8, 0, 0), t1, V3(0, 0, 1), 1.0, 0.5)); // 1.8 - 0.707 > 1
+}
+
+TEST(BlockGeometry, FaceMayEnterNeverCullsAFaceWithAHit)
+{
+	// Random blocks and faces: whenever a sample point of the face hits Y (sampleContact), the face is not culled.
+	std::mt19937                           rng(7);
+	std::uniform_real_distribution<double> u(-1, 1);
+	int                                    hits = 0;
+	for (int trial = 0; trial < 20000; ++trial) {
+		const M3    Q = Eigen::AngleAxisd(3 * u(rng), V3(u(rng), u(rng), u(rng)).normalized()).toRotationMatrix();
+		const Block Y { V3(0, 0, 0), Q, V3(1 + 0.5 * u(rng), 1 + 0.5 * u(rng), 1 + 0.5 * u(rng)) };
+		const M3    R = Eigen::AngleAxisd(3 * u(rng), V3(u(rng), u(rng), u(rng)).normalized()).toRotationMatrix();
+		const V3    c = 2.5 * V3(u(rng), u(rng), u(rng));
+		const double h1 = 0.6 + 0.4 * u(rng), h2 = 0.6 + 0.4 * u(rng);
+		const bool  kept = rdem::faceMayEnter(Y, c, V3(R.col(0)), V3(R.col(1)), h1, h2);
+		for (int i = -2; i <= 2; ++i)
+			for (int j = -2; j <= 2; ++j) {
+				const V3 p = c + R.col(0) * (h1 * i / 2.0) + R.col(1) * (h2 * j / 2.0);
+				for (const V3& nf : { V3(R.col(2)), V3(-R.col(2)) })
+					if (rdem::sampleContact(Y, p, nf).hit) {
+						++hits;
+						ASSERT_TRUE(kept) << "trial " << trial;
+					}
+			}
+	}
+	EXPECT_GT(hits, 1000); // the trials do exercise hits
+}
+
 // ------------------------------------------------------------------------------------------------ blocksOverlap
 
 // Independent separating-axis check from the 8 vertices of each block: the overlap of the vertex projections onto

@@ -132,6 +132,29 @@ namespace rdem {
 		return best;
 	}
 
+	/* Whether a rectangular face (centre c, unit in-plane axes t1, t2, half-sizes h1, h2 [m]) can have a point inside
+	   block Y in the sense of sampleContact: false only if, along one of Y's axes k, the face's extent
+	   |t1_k| h1 + |t2_k| h2 around c lies entirely beyond Y's slab |q_k| ≤ h_k (1 + tol), with the margin 1e-9·h_k for
+	   round-off. A cheap cull before the (n+1)² sample points of the face are made and tested. */
+	template <class S>
+	bool faceMayEnter(
+	        const OrientedBlock<S>&       Y,
+	        const Eigen::Matrix<S, 3, 1>& c,
+	        const Eigen::Matrix<S, 3, 1>& t1,
+	        const Eigen::Matrix<S, 3, 1>& t2,
+	        S                             h1,
+	        S                             h2,
+	        S                             tol = S(1e-9))
+	{
+		using std::abs;
+		const Eigen::Matrix<S, 3, 1> q = Y.rot.transpose() * (c - Y.pos);
+		for (int k = 0; k < 3; ++k) {
+			const S reach = abs(Y.rot.col(k).dot(t1)) * h1 + abs(Y.rot.col(k).dot(t2)) * h2;
+			if (abs(q[k]) - reach > Y.half[k] * (1 + tol + S(1e-9))) return false;
+		}
+		return true;
+	}
+
 	/* Separating-axis test of two oriented blocks (Gottschalk, Lin & Manocha, SIGGRAPH 1996): true if their projections
 	   overlap by more than tol [m] on all 15 candidate axes (3 + 3 face normals, 9 edge cross products). Blocks that are
 	   apart or only touch (grid neighbours along an edge) return false, usually at the first face axis. */
