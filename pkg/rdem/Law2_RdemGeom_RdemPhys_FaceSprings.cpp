@@ -22,8 +22,16 @@ namespace {
 
 	/* Contact spring and dashpot of one point (paper eqs. 13, 17). delta > 0 is the overlap [m], n the unit normal from
 	   body 1 to body 2, v the velocity of body 2 relative to body 1 at the point, shear the elastic shear elongation
-	   (updated here), cMax the stability caps of the normal and shear dashpot coefficients [N·s/m]. Returns the force on
-	   body 2 [N]. */
+	   (updated here), cMax the stability caps of the normal and shear dashpot coefficients [N·s/m], dashpot the dashpot
+	   force of the previous step (zero if the point was not in contact; replaced by this step's) [N]. Returns the force on
+	   body 2 [N].
+
+	   Energy: v is the mid-step velocity v_{n-1/2} (leapfrog), so the work of this step's dashpot force F_n over the
+	   step, -F_n·(v_{n-1/2} + v_{n+1/2})/2·Δt, is booked half now and half at the next step with that step's velocity
+	   (trapezoid rule). The dissipation then matches the kinetic energy lost even where a dashpot stops a point within a
+	   step or two (stability cap); booking -F_n·v_{n-1/2}·Δt overstates it by F_n·(v_{n-1/2} - v_{n+1/2})Δt/2, up to
+	   half of it. The second half of a point's last step is dropped when it leaves contact, where its dashpot force is
+	   clipped to -k_nAδ → 0. */
 	Vector3r contactForce(
 	        const RdemPhys& p,
 	        Real            area,
@@ -33,6 +41,7 @@ namespace {
 	        Real            dt,
 	        const Vector2r& cMax,
 	        Vector3r&       shear,
+	        Vector3r&       dashpot,
 	        bool            trackEnergy,
 	        Energies&       e)
 	{
@@ -54,12 +63,14 @@ namespace {
 			slip  = true;
 			if (trackEnergy) e.friction += ((trial - fS) / ks).dot(fS); // plastic slip times the sliding force, >= 0
 		}
-		if (!slip) fS -= cs * vt;
+		const Vector3r fDs = slip ? Vector3r::Zero() : Vector3r(-cs * vt); // shear dashpot, while sticking
+		const Vector3r fD  = (fN - fElast) * n + fDs;                      // dashpot part of the force
 		if (trackEnergy) {
-			e.elastic += fElast * delta / 2 + fS.squaredNorm() / (2 * ks);
-			e.dashpot += ((fN - fElast) * -vn + (slip ? Real(0) : cs * vt.squaredNorm())) * dt;
+			e.elastic += fElast * delta / 2 + ks * shear.squaredNorm() / 2;
+			e.dashpot -= (fD + dashpot).dot(v) * dt / 2;
 		}
-		return fN * n + fS;
+		dashpot = fD;
+		return fN * n + fS + fDs;
 	}
 }
 
@@ -100,6 +111,7 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	};
 	const size_t nSeg = g.nSegments();
 	if (nSeg > 0) {
+		p.segDashpot.resize(nSeg, Vector3r::Zero());
 		bool       anyIntactOrTouching = false;
 		const Real maxSlide            = g.segHalfSizes.minCoeff();
 		auto       touching            = [&](size_t i, Real un, const Vector3r& us) {
@@ -138,13 +150,14 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 			// Broken: the contact spring of this segment (eqs. 13, 17), while the material points overlap and face each other.
 			if (touching(i, un, us)) {
 				const Real     share = contactArea > 0 ? A / contactArea : Real(1); // a segment broken in this step joins now
-				const Vector3r F     = contactForce(p, A, -un, n, g.segVel[i], dt, dashpotCap(g.segPoint[i], n, share), p.segShear[i], trackEnergy, e);
+				const Vector3r F     = contactForce(
+                                        p, A, -un, n, g.segVel[i], dt, dashpotCap(g.segPoint[i], n, share), p.segShear[i], p.segDashpot[i], trackEnergy, e);
 				apply(F, g.segPoint[i]);
 				p.segSigma[i]       = -F.dot(n) / (p.weightNormal * A);
 				p.segTau[i]         = (F - F.dot(n) * n).norm() / (p.weightShear * A);
 				anyIntactOrTouching = true;
 			} else {
-				p.segShear[i] = Vector3r::Zero();
+				p.segShear[i] = p.segDashpot[i] = Vector3r::Zero();
 				p.segSigma[i] = p.segTau[i] = 0;
 			}
 		}
@@ -156,6 +169,7 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		if (g.sampleKey.empty()) return false; // apart: the collider drops the pair once the bounding boxes separate
 		const size_t nKeys = size_t(2 * 6 * (g.samplesPerEdge + 1) * (g.samplesPerEdge + 1) + 1); // face samples, then the edge contact
 		p.sampleShear.resize(nKeys, Vector3r::Zero());
+		p.sampleDashpot.resize(nKeys, Vector3r::Zero());
 		std::vector<char> active(nKeys, 0);
 		Real              contactArea = 0;
 		for (Real a : g.sampleArea)
@@ -164,11 +178,22 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 			const size_t key  = size_t(g.sampleKey[k]);
 			active[key]       = 1;
 			const Vector2r cMax = dashpotCap(g.samplePoint[k], g.sampleNormal[k], g.sampleArea[k] / contactArea);
-			apply(contactForce(p, g.sampleArea[k], g.sampleDepth[k], g.sampleNormal[k], g.sampleVel[k], dt, cMax, p.sampleShear[key], trackEnergy, e),
+			apply(contactForce(
+			              p,
+			              g.sampleArea[k],
+			              g.sampleDepth[k],
+			              g.sampleNormal[k],
+			              g.sampleVel[k],
+			              dt,
+			              cMax,
+			              p.sampleShear[key],
+			              p.sampleDashpot[key],
+			              trackEnergy,
+			              e),
 			      g.samplePoint[k]);
 		}
 		for (size_t key = 0; key < nKeys; ++key)
-			if (!active[key]) p.sampleShear[key] = Vector3r::Zero();
+			if (!active[key]) p.sampleShear[key] = p.sampleDashpot[key] = Vector3r::Zero();
 	}
 
 	p.force = f2;

@@ -32,7 +32,9 @@ Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact s
 		((vector<Vector3r>,segShear,,,"Per bonded segment: elastic shear elongation of the contact spring after breakage (global) [m]."))
 		((vector<Real>,segSigma,,,"Per bonded segment: normal stress of the last step, positive in tension [Pa]."))
 		((vector<Real>,segTau,,,"Per bonded segment: magnitude of the shear stress of the last step [Pa]."))
+		((vector<Vector3r>,segDashpot,,,"Per bonded segment: dashpot force of its contact spring in the last step, on body 2 (global) [N]; for the energy balance."))
 		((vector<Vector3r>,sampleShear,,,"Per contact sample key: elastic shear elongation of its contact spring (global) [m]."))
+		((vector<Vector3r>,sampleDashpot,,,"Per contact sample key: dashpot force of the last step, on body 2 (global) [N]; for the energy balance."))
 		((Vector3r,force,Vector3r::Zero(),,"Total force exerted by body 1 on body 2 in the last step (global) [N]."))
 		,
 		/* ctor */ createIndex();
