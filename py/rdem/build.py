@@ -191,7 +191,7 @@ def engines(segmentsPerEdge=2, poisson='paper', corotational=False, recontact=Tr
 	eng.append(loop)
 	if mode is not None:
 		eng.append(RdemPoissonEngine(corotational=corotational, consistent=mode == 1))
-	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None)
+	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None, contactBound=recontact)
 	eng += [stepper, NewtonIntegrator(damping=damping, gravity=Vector3(gravity))]
 	if dt is not None:
 		O.dt = dt
