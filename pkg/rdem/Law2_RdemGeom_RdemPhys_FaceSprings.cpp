@@ -170,18 +170,25 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		const size_t nKeys = size_t(2 * 6 * (g.samplesPerEdge + 1) * (g.samplesPerEdge + 1) + 1); // face samples, then the edge contact
 		p.sampleShear.resize(nKeys, Vector3r::Zero());
 		p.sampleDashpot.resize(nKeys, Vector3r::Zero());
+		p.sampleOffset.resize(nKeys, 0);
+		p.sampleActive.resize(nKeys, 0);
 		std::vector<char> active(nKeys, 0);
 		Real              contactArea = 0;
 		for (Real a : g.sampleArea)
 			contactArea += a;
+		/* A point that starts its contact already δ₀ deep entered through a gap of the sampling (a region of overlap that
+		   held no sample point, or a change of the pair's normal), not by the motion of one step: its spring counts
+		   from δ₀, lowered whenever the depth is (δ₀ = min over the contact of δ), so that it never releases energy it
+		   did not store. */
 		for (size_t k = 0; k < g.sampleKey.size(); ++k) {
-			const size_t key  = size_t(g.sampleKey[k]);
-			active[key]       = 1;
+			const size_t key    = size_t(g.sampleKey[k]);
+			p.sampleOffset[key] = p.sampleActive[key] ? math::min(p.sampleOffset[key], g.sampleDepth[k]) : g.sampleDepth[k];
+			active[key]         = 1;
 			const Vector2r cMax = dashpotCap(g.samplePoint[k], g.sampleNormal[k], g.sampleArea[k] / contactArea);
 			apply(contactForce(
 			              p,
 			              g.sampleArea[k],
-			              g.sampleDepth[k],
+			              g.sampleDepth[k] - p.sampleOffset[key],
 			              g.sampleNormal[k],
 			              g.sampleVel[k],
 			              dt,
@@ -194,6 +201,7 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		}
 		for (size_t key = 0; key < nKeys; ++key)
 			if (!active[key]) p.sampleShear[key] = p.sampleDashpot[key] = Vector3r::Zero();
+		p.sampleActive.assign(active.begin(), active.end());
 	}
 
 	p.force = f2;

@@ -35,6 +35,8 @@ Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact s
 		((vector<Vector3r>,segDashpot,,,"Per bonded segment: dashpot force of its contact spring in the last step, on body 2 (global) [N]; for the energy balance."))
 		((vector<Vector3r>,sampleShear,,,"Per contact sample key: elastic shear elongation of its contact spring (global) [m]."))
 		((vector<Vector3r>,sampleDashpot,,,"Per contact sample key: dashpot force of the last step, on body 2 (global) [N]; for the energy balance."))
+		((vector<Real>,sampleOffset,,,"Per contact sample key: depth from which its normal spring counts, the least depth since its contact began (the depth at which it entered, if it entered deep) [m]."))
+		((vector<int>,sampleActive,,,"Per contact sample key: 1 if it was in contact in the last step."))
 		((Vector3r,force,Vector3r::Zero(),,"Total force exerted by body 1 on body 2 in the last step (global) [N]."))
 		,
 		/* ctor */ createIndex();
