@@ -33,36 +33,40 @@ namespace {
 	/// Overlaps below this are touching, not contact: grid neighbours along an edge or a corner overlap by round-off [m].
 	Real touchTolerance(const Block& A, const Block& B) { return 1e-9 * math::min(A.half.minCoeff(), B.half.minCoeff()); }
 
-	/* Sample points of block X (which = 0 for body 1, 1 for body 2) that entered block Y (rdem::sampleContact), appended to geom. Sample
-	   keys are ((which·6 + face)·(n+1)² + point), stable from step to step for the shear history. */
-	void sampleInside(const Block& X, const State& sx, const Block& Y, const State& sy, int which, int n, RdemGeom& g)
+	/* Sample points of block X (which = 0 for body 1, 1 for body 2) that entered block Y, appended to geom. normal is the
+	   pair's contact normal from body 1 to body 2 (rdem::contactFaceAxis); X separates from Y along u = -normal (body 1)
+	   or +normal (body 2), and a sample's depth is its distance to Y's surface along u (rdem::sampleDepth). Only the faces
+	   of X that face Y take part (cosine c = -n_f·u > 0). Sample keys are ((which·6 + face)·(n+1)² + point), stable from
+	   step to step for the shear history. */
+	void sampleInside(const Block& X, const State& sx, const Block& Y, const State& sy, int which, int n, const Vector3r& normal, RdemGeom& g)
 	{
-		const int perFace = (n + 1) * (n + 1);
+		const int      perFace = (n + 1) * (n + 1);
+		const Vector3r u       = which == 0 ? Vector3r(-normal) : normal;
 		for (int k = 0; k < 3; ++k) {
 			const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
 			for (int side = 0; side < 2; ++side) {
-				const Real     s    = side ? 1 : -1;
-				const Vector3r nf   = s * X.rot.col(k);
-				const Vector3r fc   = X.pos + X.half[k] * nf;
+				const Real     s      = side ? 1 : -1;
+				const Vector3r nf     = s * X.rot.col(k);
+				const Real     cosine = -nf.dot(u);
+				if (!(cosine > 0)) continue;
+				const Vector3r fc = X.pos + X.half[k] * nf;
 				if (!rdem::faceMayEnter<Real>(Y, fc, X.rot.col(k1), X.rot.col(k2), X.half[k1], X.half[k2])) continue;
-				const auto pts = rdem::faceSamplePoints<Real>(fc, X.rot.col(k1), X.rot.col(k2), X.half[k1], X.half[k2], n);
-				const int      face = 2 * k + side;
+				const auto pts  = rdem::faceSamplePoints<Real>(fc, X.rot.col(k1), X.rot.col(k2), X.half[k1], X.half[k2], n);
+				const int  face = 2 * k + side;
 				for (int p = 0; p < perFace; ++p) {
-					const auto hit = rdem::sampleContact<Real>(Y, pts[size_t(p)].pos, nf);
+					const auto hit = rdem::sampleDepth<Real>(Y, pts[size_t(p)].pos, u);
 					if (!hit.hit) continue;
-					// Normal from body 1 to body 2: Y's outward normal if Y is body 1, its opposite otherwise.
-					const Vector3r normal = which == 1 ? hit.normal : Vector3r(-hit.normal);
-					const Vector3r point  = pts[size_t(p)].pos + (hit.depth / 2) * hit.normal;
-					const State&   s1     = which == 0 ? sx : sy;
-					const State&   s2     = which == 0 ? sy : sx;
-					const Vector3r x1     = which == 0 ? X.pos : Y.pos;
-					const Vector3r x2     = which == 0 ? Y.pos : X.pos;
+					const Vector3r point = pts[size_t(p)].pos + (hit.depth / 2) * u;
+					const State&   s1    = which == 0 ? sx : sy;
+					const State&   s2    = which == 0 ? sy : sx;
+					const Vector3r x1    = which == 0 ? X.pos : Y.pos;
+					const Vector3r x2    = which == 0 ? Y.pos : X.pos;
 					g.sampleKey.push_back((which * 6 + face) * perFace + p);
 					g.samplePoint.push_back(point);
 					g.sampleNormal.push_back(normal);
 					g.sampleVel.push_back(pointVelocity(s2, x2, point) - pointVelocity(s1, x1, point));
 					g.sampleDepth.push_back(hit.depth);
-					g.sampleArea.push_back(pts[size_t(p)].weight * hit.cosine / 2); // both blocks are sampled: half each
+					g.sampleArea.push_back(pts[size_t(p)].weight * cosine / 2); // both blocks are sampled: half each
 				}
 			}
 		}
@@ -85,6 +89,15 @@ namespace {
 		g.sampleVel.push_back(pointVelocity(s2, B.pos, hit.point) - pointVelocity(s1, A.pos, hit.point));
 		g.sampleDepth.push_back(hit.depth);
 		g.sampleArea.push_back(segArea / 4);
+	}
+
+	/// Face samples of both blocks inside each other along the pair's contact normal, then the edge-to-edge contact.
+	void sampleContacts(const Block& A, const State& s1, const Block& B, const State& s2, Real tol, int n, RdemGeom& g)
+	{
+		const Vector3r normal = rdem::contactFaceAxis<Real>(A, B).normal;
+		sampleInside(A, s1, B, s2, 0, n, normal, g);
+		sampleInside(B, s2, A, s1, 1, n, normal, g);
+		edgeInside(A, s1, B, s2, tol, n, g);
 	}
 }
 
@@ -133,9 +146,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 			if (!rdem::blocksOverlap<Real>(A, B, touchTolerance(A, B))) return false;
 			RdemGeom probe;
 			probe.samplesPerEdge = segmentsPerEdge;
-			sampleInside(A, state1, B, state2, 0, segmentsPerEdge, probe);
-			sampleInside(B, state2, A, state1, 1, segmentsPerEdge, probe);
-			edgeInside(A, state1, B, state2, touchTolerance(A, B), segmentsPerEdge, probe);
+			sampleContacts(A, state1, B, state2, touchTolerance(A, B), segmentsPerEdge, probe);
 			if (probe.sampleKey.empty()) return false;
 			auto g            = shared_ptr<RdemGeom>(new RdemGeom(probe));
 			g->ell1           = faceDistance(A, probe.sampleNormal[0]);
@@ -162,11 +173,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 		return true;
 	}
 	g.clearSamples();
-	if (rdem::blocksOverlap<Real>(A, B, touchTolerance(A, B))) {
-		sampleInside(A, state1, B, state2, 0, g.samplesPerEdge, g);
-		sampleInside(B, state2, A, state1, 1, g.samplesPerEdge, g);
-		edgeInside(A, state1, B, state2, touchTolerance(A, B), g.samplesPerEdge, g);
-	}
+	if (rdem::blocksOverlap<Real>(A, B, touchTolerance(A, B))) sampleContacts(A, state1, B, state2, touchTolerance(A, B), g.samplesPerEdge, g);
 	return true; // a real interaction stays; the law erases it when no sample is in contact
 }
 

@@ -23,8 +23,16 @@ namespace {
 
 	/* Contact spring and dashpot of one point (paper eqs. 13, 17). delta > 0 is the overlap [m], n the unit normal from
 	   body 1 to body 2, v the velocity of body 2 relative to body 1 at the point, shear the elastic shear elongation
-	   (updated here), cMax the stability caps of the normal and shear dashpot coefficients [N·s/m]. Returns the force on
-	   body 2 [N]. */
+	   (updated here), cMax the stability caps of the normal and shear dashpot coefficients [N·s/m], dashpot the dashpot
+	   force of the previous step (zero if the point was not in contact; replaced by this step's) [N]. Returns the force on
+	   body 2 [N].
+
+	   Energy: v is the mid-step velocity v_{n-1/2} (leapfrog), so the work of this step's dashpot force F_n over the
+	   step, -F_n·(v_{n-1/2} + v_{n+1/2})/2·Δt, is booked half now and half at the next step with that step's velocity
+	   (trapezoid rule). The dissipation then matches the kinetic energy lost even where a dashpot stops a point within a
+	   step or two (stability cap); booking -F_n·v_{n-1/2}·Δt overstates it by F_n·(v_{n-1/2} - v_{n+1/2})Δt/2, up to
+	   half of it. The second half of a point's last step is dropped when it leaves contact, where its dashpot force is
+	   clipped to -k_nAδ → 0. */
 	Vector3r contactForce(
 	        const RdemPhys& p,
 	        Real            area,
@@ -34,6 +42,7 @@ namespace {
 	        Real            dt,
 	        const Vector2r& cMax,
 	        Vector3r&       shear,
+	        Vector3r&       dashpot,
 	        bool            trackEnergy,
 	        Energies&       e)
 	{
@@ -55,12 +64,14 @@ namespace {
 			slip  = true;
 			if (trackEnergy) e.friction += ((trial - fS) / ks).dot(fS); // plastic slip times the sliding force, >= 0
 		}
-		if (!slip) fS -= cs * vt;
+		const Vector3r fDs = slip ? Vector3r::Zero() : Vector3r(-cs * vt); // shear dashpot, while sticking
+		const Vector3r fD  = (fN - fElast) * n + fDs;                      // dashpot part of the force
 		if (trackEnergy) {
-			e.elastic += fElast * delta / 2 + fS.squaredNorm() / (2 * ks);
-			e.dashpot += ((fN - fElast) * -vn + (slip ? Real(0) : cs * vt.squaredNorm())) * dt;
+			e.elastic += fElast * delta / 2 + ks * shear.squaredNorm() / 2;
+			e.dashpot -= (fD + dashpot).dot(v) * dt / 2;
 		}
-		return fN * n + fS;
+		dashpot = fD;
+		return fN * n + fS + fDs;
 	}
 }
 
@@ -131,6 +142,7 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	};
 	const size_t nSeg = g.nSegments();
 	if (nSeg > 0) {
+		p.segDashpot.resize(nSeg, Vector3r::Zero());
 		bool       anyIntactOrTouching = false;
 		const Real maxSlide            = g.segHalfSizes.minCoeff();
 		auto       touching            = [&](size_t i, Real un, const Vector3r& us) {
@@ -172,13 +184,13 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 				const Real     share = contactArea > 0 ? A / contactArea : Real(1); // a segment broken in this step joins now
 				const Vector3r& C    = g.segPoint[i];
 				const Vector3r  v    = s2.vel + s2.angVel.cross(C - x2) - s1.vel - s1.angVel.cross(C - x1); // of body 2 relative to body 1
-				const Vector3r  F    = contactForce(p, A, -un, n, v, dt, dashpotCap(C, n, share), p.segShear[i], trackEnergy, e);
+				const Vector3r  F    = contactForce(p, A, -un, n, v, dt, dashpotCap(C, n, share), p.segShear[i], p.segDashpot[i], trackEnergy, e);
 				apply(F, g.segPoint[i]);
 				p.segSigma[i]       = -F.dot(n) / (p.weightNormal * A);
 				p.segTau[i]         = (F - F.dot(n) * n).norm() / (p.weightShear * A);
 				anyIntactOrTouching = true;
 			} else {
-				p.segShear[i] = Vector3r::Zero();
+				p.segShear[i] = p.segDashpot[i] = Vector3r::Zero();
 				p.segSigma[i] = p.segTau[i] = 0;
 			}
 		}
@@ -194,19 +206,39 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		}
 		const size_t nKeys = size_t(2 * 6 * (g.samplesPerEdge + 1) * (g.samplesPerEdge + 1) + 1); // face samples, then the edge contact
 		p.sampleShear.resize(nKeys, Vector3r::Zero());
+		p.sampleDashpot.resize(nKeys, Vector3r::Zero());
+		p.sampleOffset.resize(nKeys, 0);
+		p.sampleActive.resize(nKeys, 0);
 		std::vector<char> active(nKeys, 0);
 		Real              contactArea = 0;
 		for (Real a : g.sampleArea)
 			contactArea += a;
+		/* A point that starts its contact already δ₀ deep entered through a gap of the sampling (a region of overlap that
+		   held no sample point, or a change of the pair's normal), not by the motion of one step: its spring counts
+		   from δ₀, lowered whenever the depth is (δ₀ = min over the contact of δ), so that it never releases energy it
+		   did not store. */
 		for (size_t k = 0; k < g.sampleKey.size(); ++k) {
-			const size_t key  = size_t(g.sampleKey[k]);
-			active[key]       = 1;
+			const size_t key    = size_t(g.sampleKey[k]);
+			p.sampleOffset[key] = p.sampleActive[key] ? math::min(p.sampleOffset[key], g.sampleDepth[k]) : g.sampleDepth[k];
+			active[key]         = 1;
 			const Vector2r cMax = dashpotCap(g.samplePoint[k], g.sampleNormal[k], g.sampleArea[k] / contactArea);
-			apply(contactForce(p, g.sampleArea[k], g.sampleDepth[k], g.sampleNormal[k], g.sampleVel[k], dt, cMax, p.sampleShear[key], trackEnergy, e),
+			apply(contactForce(
+			              p,
+			              g.sampleArea[k],
+			              g.sampleDepth[k] - p.sampleOffset[key],
+			              g.sampleNormal[k],
+			              g.sampleVel[k],
+			              dt,
+			              cMax,
+			              p.sampleShear[key],
+			              p.sampleDashpot[key],
+			              trackEnergy,
+			              e),
 			      g.samplePoint[k]);
 		}
 		for (size_t key = 0; key < nKeys; ++key)
-			if (!active[key]) p.sampleShear[key] = Vector3r::Zero();
+			if (!active[key]) p.sampleShear[key] = p.sampleDashpot[key] = Vector3r::Zero();
+		p.sampleActive.assign(active.begin(), active.end());
 	}
 
 	p.force = f2;

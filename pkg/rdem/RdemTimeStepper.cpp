@@ -5,11 +5,18 @@
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
 #include <pkg/rdem/RdemTimeStepper.hpp>
+#include <core/InteractionLoop.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
+#include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
+#include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
+#include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
+#include <pkg/rdem/RdemMat.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
 #include <pkg/rdem/RdemPoissonEngine.hpp>
+#include <pkg/rdem/math/ContactBound.hpp>
+#include <pkg/rdem/math/Elasticity.hpp>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -26,17 +33,60 @@ namespace {
 	void addPoint(vector<Real>& omega2, const State& s, Body::id_t id, const Vector3r& point, const Vector3r& n, Real area, const RdemPhys& p)
 	{
 		if (s.blockedDOFs == State::DOF_ALL) return;
-		const Vector3r r  = point - s.pos;
-		const Real     kn = p.weightNormal * p.kn, ks = p.weightShear * p.ks;
-		const Real     kt = math::max(kn, ks) * area;
-		const Real     kr = area * (kn * r.cross(n).squaredNorm() + ks * (r.squaredNorm() + math::pow(r.dot(n), 2)));
-		omega2[size_t(id)] += 2 * (kt / s.mass + kr / s.inertia.minCoeff());
+		omega2[size_t(id)]
+		        += rdem::pointSpringOmega2<Real>(point - s.pos, n, area, p.weightNormal * p.kn, p.weightShear * p.ks, s.mass, s.inertia.minCoeff());
+	}
+
+	/// How contacts are made: spring modulus (Ip2) and sample grid (Ig2) of the InteractionLoop; the stiffer modulus and
+	/// the default grid if these functors are not found.
+	struct ContactSetup {
+		rdem::SpringModulus modulus        = rdem::SpringModulus::Consistent;
+		int                 samplesPerEdge = 2;
+	};
+
+	ContactSetup contactSetup(Scene* sc)
+	{
+		ContactSetup c;
+		for (const auto& e : sc->engines) {
+			const auto* loop = dynamic_cast<InteractionLoop*>(e.get());
+			if (!loop) continue;
+			for (const auto& f : loop->physDispatcher->functors)
+				if (const auto* ip2 = dynamic_cast<Ip2_RdemMat_RdemMat_RdemPhys*>(f.get()))
+					c.modulus = static_cast<rdem::SpringModulus>(ip2->springModulus);
+			for (const auto& f : loop->geomDispatcher->functors)
+				if (const auto* ig2 = dynamic_cast<Ig2_RdemBlock_RdemBlock_RdemGeom*>(f.get())) c.samplesPerEdge = ig2->segmentsPerEdge;
+		}
+		return c;
+	}
+
+	/* Adds to every free block that carries no bond the Gershgorin terms of a flush contact on each of its six faces
+	   (rdem::faceContactOmega2), at the block's own stiffness per area for its smallest half-extent ℓ (eq. 11; a contact
+	   spring, in series with the other block's (eq. 12), is softer): the contacts the collider has not made yet, which the
+	   step must allow for between two updates; a loose block may have none yet (then the step would be unbounded). A
+	   bonded block already carries the terms of its bonds, of the same order as those of contacts on its free faces
+	   (the estimate bounds ω² by about twice its largest eigenvalue), and a bonded specimen keeps its step. */
+	void addContactBound(vector<Real>& omega2, const vector<char>& bonded, Scene* sc)
+	{
+		const ContactSetup setup = contactSetup(sc);
+		for (const auto& b : *sc->bodies) {
+			if (!b || b->state->blockedDOFs == State::DOF_ALL || bonded[size_t(b->id)]) continue;
+			const auto* shape = dynamic_cast<RdemBlock*>(b->shape.get());
+			const auto* mat   = dynamic_cast<RdemMat*>(b->material.get());
+			if (!shape || !mat) continue;
+			const Real ell = shape->extents.minCoeff();
+			const Real kn  = rdem::normalStiffnessPerArea(mat->young, mat->poisson, ell, setup.modulus);
+			const Real ks  = rdem::shearStiffnessPerArea(mat->young, mat->poisson, ell);
+			for (int face = 0; face < 6; ++face)
+				omega2[size_t(b->id)] += rdem::faceContactOmega2<Real>(
+				        shape->extents, face / 2, setup.samplesPerEdge, kn, ks, b->state->mass, b->state->inertia.minCoeff());
+		}
 	}
 }
 
 Real RdemTimeStepper::estimate(Scene* sc) const
 {
 	vector<Real> omega2(sc->bodies->size(), 0);
+	vector<char> bonded(sc->bodies->size(), 0);
 	for (const auto& I : *sc->interactions) {
 		if (!I->isReal()) continue;
 		const auto* g = dynamic_cast<RdemGeom*>(I->geom.get());
@@ -44,6 +94,7 @@ Real RdemTimeStepper::estimate(Scene* sc) const
 		if (!g || !p) continue;
 		const State& s1 = *Body::byId(I->getId1(), sc)->state;
 		const State& s2 = *Body::byId(I->getId2(), sc)->state;
+		if (g->nSegments() > 0) bonded[size_t(I->getId1())] = bonded[size_t(I->getId2())] = 1;
 		for (size_t i = 0; i < g->nSegments(); ++i) {
 			const Vector3r point = s1.pos + s1.ori * g->segPoint1[i];
 			addPoint(omega2, s1, I->getId1(), point, g->normal.squaredNorm() > 0 ? g->normal : Vector3r(s1.ori * g->segNormal1), g->segArea[i], *p);
@@ -54,6 +105,7 @@ Real RdemTimeStepper::estimate(Scene* sc) const
 			addPoint(omega2, s2, I->getId2(), g->samplePoint[k], g->sampleNormal[k], g->sampleArea[k], *p);
 		}
 	}
+	if (contactBound) addContactBound(omega2, bonded, sc);
 	for (const auto& e : sc->engines) {
 		const auto* poisson = dynamic_cast<RdemPoissonEngine*>(e.get());
 		if (!poisson || poisson->dead) continue;

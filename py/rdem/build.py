@@ -234,7 +234,7 @@ def engines(segmentsPerEdge=2,
 	eng += [loop, RdemForceAssembler()]  # forces summed per body in a fixed order: O.load continues bit for bit
 	if mode is not None:
 		eng.append(RdemPoissonEngine(corotational=corotational, consistent=mode == 1))
-	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None)
+	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None, contactBound=bool(recontact))
 	eng += [stepper, NewtonIntegrator(damping=damping, gravity=Vector3(gravity))]
 	if finiteGuard:
 		eng.append(RdemFiniteGuard())

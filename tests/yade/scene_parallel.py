@@ -4,5 +4,5 @@ from yade import O
 from rdem.scenes import CompressionTest
 
 CompressionTest(blocksPerEdge=4, tensileStrength=2e6, rate=0.5, dt=2e-6)
-O.run(300, True)
+O.run(60, True)
 print('POSITIONS ' + json.dumps([list(b.state.pos) for b in O.bodies]))

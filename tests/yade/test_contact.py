@@ -67,36 +67,53 @@ class Contact(unittest.TestCase):
 		O.run(2000, True)
 		self.assertLess(abs(O.bodies[b].state.vel[0]), 1e-4)  # only the elastic shear spring moves (um/s)
 
-	@unittest.skip('open defect (issue 3 note): a tumbling block can be driven unstable by edge and corner contacts; '
-	               'the blocks stay apart in the first 0.2 s but the run does not always come to rest')
 	def testObliqueDropComesToRest(self):
-		# A cube tilted 30 degrees about two axes falls corner first on a 5x5 layer of fixed cubes (a fractured floor:
-		# cubes touching, not bonded, so it lands across their joints); it must bounce, tumble and come to rest on top
-		# without sinking in: face, edge, corner and edge-to-edge contacts all take part.
-		mat, base = self.scene(h=1.0, gravity=(0, 0, -9.81), dt=2e-6)
+		# Issue 3: a cube tilted 30 degrees about two axes falls corner first, at 0.5 m/s, on a 5x5 layer of fixed cubes (a
+		# fractured floor: cubes touching, not bonded, so it lands across their joints); it bounces, tumbles over corners
+		# and edges and must come to rest on top without sinking in or gaining energy. Time step from RdemTimeStepper,
+		# which allows for the face contacts the block has not made yet (contactBound).
+		mat, base = self.scene(h=1.0, gravity=(0, 0, -9.81), dt=None)
 		layer = rdem.blockGrid((5, 5, 1), (2 * H, ) * 3, mat, origin=(-5 * H, -5 * H, 2 * H))
 		for i in layer:
 			O.bodies[i].state.blockedDOFs = 'xyzXYZ'
 		q = Quaternion(Vector3(1, 0, 0), math.radians(30)) * Quaternion(Vector3(0, 1, 0), math.radians(30))
-		b = O.bodies.append(rdem.block((0.3 * H, 0.2 * H, 4 * H + 2 * H * math.sqrt(3)), (H, H, H), mat, orientation=q))
-		O.bodies[b].state.vel = Vector3(0, 0, -0.5)
-		top = 4 * H  # top face of the layer
-		lowest = []
-		for _ in range(200):  # 0.4 s at most
-			O.run(1000, True)
-			s = O.bodies[b].state
-			R = s.ori.toRotationMatrix()
-			corners = [s.pos + R * Vector3(sx * H, sy * H, sz * H) for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)]
-			lowest.append(min(c[2] for c in corners))
-			if s.vel.norm() < 1e-3 and s.angVel.norm() < 0.05:
-				break
+		z0 = 4 * H + 2 * H * math.sqrt(3)
+		b = O.bodies.append(rdem.block((0.3 * H, 0.2 * H, z0), (H, H, H), mat, orientation=q))
 		s = O.bodies[b].state
-		self.assertLess(s.vel.norm(), 1e-3)  # at rest [m/s]
-		self.assertLess(s.angVel.norm(), 0.05)  # [rad/s]
-		# never sank in: deepest corner below the layer's top by less than 1 % of the block size at any sampled time
-		self.assertGreater(min(lowest), top - 0.02 * H)
-		# it rests flat on a face: its lowest corners on the layer (within the static overlap m g / k, nanometres)
-		self.assertAlmostEqual(lowest[-1], top, delta=0.01 * H)
+		s.vel = Vector3(0, 0, -0.5)
+		O.trackEnergy = True
+		O.step()  # sets the time step
+		top = 4 * H  # top face of the layer
+		# energy brought in: the kinetic energy plus the fall of the centroid to its height when resting on a face
+		inflow = 0.5 * s.mass * 0.5**2 + s.mass * 9.81 * (z0 - (top + H))
+		balance = harness.EnergyBalance()
+		lowest, restTime = [], None
+		while O.time < 0.4:
+			balance.run(500)
+			R = s.ori.toRotationMatrix()
+			lowest.append(min((s.pos + R * Vector3(sx * H, sy * H, sz * H))[2] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)))
+			kinetic = 0.5 * s.mass * s.vel.squaredNorm() + 0.5 * s.inertia[0] * s.angVel.squaredNorm()  # cube: isotropic inertia
+			if kinetic < 1e-9 * inflow:
+				restTime = restTime or O.time
+				if O.time > restTime + 0.02:
+					break  # stayed at rest for 20 ms
+			else:
+				restTime = None
+		print('oblique drop: dt %.3g s, rest at %.3f s, energy growth %.3g J = %.3g of the inflow %.3g J, deepest corner %.3g m below the top' %
+		      (O.dt, restTime or float('nan'), balance.growth, balance.growth / inflow, inflow, top - min(lowest)))
+		# at rest: kinetic energy below 1e-9 of the inflow (velocity ~3e-5 of the impact speed) within the 0.4 s, and
+		# staying there for 20 ms (about 8 bounce periods of a resting cube on its contact springs, whose period is 5 us)
+		self.assertIsNotNone(restTime)
+		# never sank in: deepest corner below the layer's top by less than 0.1 % of the block size at the sampled times
+		# (overlap of the 0.7 m/s corner impact, v/omega with omega = sqrt(k/m_eff) ~ 1.2e5 rad/s: ~6 um = 0.06 %;
+		# measured 1.6 um)
+		self.assertGreater(min(lowest), top - 1e-3 * H)
+		# it rests flat on a face: its lowest corners on the layer within the static overlap m g / k (nanometres)
+		self.assertAlmostEqual(lowest[-1], top, delta=1e-4 * H)
+		# no energy created: E never rises above an earlier value by more than 0.1 % of the inflow (measured 0.011 %:
+		# the kinetic energy of the rotation pairs ω_{n-1/2} and ω_{n+1/2} only approximately, and contact points come
+		# and go; the defect fixed here created 1e5 times the inflow in one step)
+		self.assertLess(balance.growth, 1e-3 * inflow)
 
 
 if __name__ == '__main__':
