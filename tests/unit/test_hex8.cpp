@@ -633,4 +633,23 @@ TEST(Hex8, CorotationalDisplacementOfStretchPlusRotationIsTheStretch)
 	}
 }
 
+TEST(Hex8, PolarRotationOfStretchedRotationsAndItsFallback)
+{
+	// F = R U, U symmetric positive definite with stretches up to ±40 %, and large rotations: the scaled Newton iteration
+	// returns R to 1e-12 (an O(1) well-conditioned 3×3; it stops when R changes by < 1e-14). A reflection (det F < 0)
+	// takes the SVD route and still returns a proper rotation.
+	for (int k = 0; k < 20; ++k) {
+		const M3 R = rotation(0.3 * k, V3(std::sin(k + 1.0), std::cos(2.0 * k), 0.5));
+		const M3 Q = rotation(0.7 * k + 0.2, V3(1.0, 0.3 * k, -0.5));
+		const V3 stretch(1 + 0.4 * std::sin(3.0 * k), 1 + 0.3 * std::cos(5.0 * k), 1 - 0.35 * std::sin(7.0 * k));
+		const M3 U = Q * stretch.asDiagonal() * Q.transpose();
+		EXPECT_LE((rdem::polarRotation<double>(R * U) - R).cwiseAbs().maxCoeff(), 1e-12) << "case " << k;
+	}
+	M3 reflect = M3::Identity();
+	reflect(2, 2) = -1;
+	const M3 Rr = rdem::polarRotation<double>(reflect * rotation(0.4, V3(0, 1, 1)));
+	EXPECT_NEAR(Rr.determinant(), 1.0, 1e-12);
+	EXPECT_LE((Rr.transpose() * Rr - M3::Identity()).cwiseAbs().maxCoeff(), 1e-12);
+}
+
 } // namespace
