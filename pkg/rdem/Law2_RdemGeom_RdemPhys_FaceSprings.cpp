@@ -73,35 +73,34 @@ namespace {
 		dashpot = fD;
 		return fN * n + fS + fDs;
 	}
+
+	/// Calls f(law) for every Law2_RdemGeom_RdemPhys_FaceSprings in the InteractionLoops of the scene.
+	template <class F> void forEachLaw(const Scene* scene, F f)
+	{
+		for (const auto& e : scene->engines) {
+			const auto* loop = dynamic_cast<const InteractionLoop*>(e.get());
+			if (!loop) continue;
+			for (const auto& functor : loop->lawDispatcher->functors)
+				if (auto* law = dynamic_cast<Law2_RdemGeom_RdemPhys_FaceSprings*>(functor.get())) f(*law);
+		}
+	}
 }
 
 long Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(const Scene* scene)
 {
 	long n = 0;
-	for (const auto& e : scene->engines) {
-		const auto* loop = dynamic_cast<const InteractionLoop*>(e.get());
-		if (!loop) continue;
-		for (const auto& f : loop->lawDispatcher->functors) {
-			const auto* law = dynamic_cast<const Law2_RdemGeom_RdemPhys_FaceSprings*>(f.get());
-			if (law) n += law->tensionBreaks.get() + law->shearBreaks.get();
-		}
-	}
+	forEachLaw(scene, [&](const Law2_RdemGeom_RdemPhys_FaceSprings& law) { n += law.tensionBreaks.get() + law.shearBreaks.get(); });
 	return n;
 }
 
 bool Law2_RdemGeom_RdemPhys_FaceSprings::takeActiveSetChanged(const Scene* scene)
 {
 	bool changed = false;
-	for (const auto& e : scene->engines) {
-		const auto* loop = dynamic_cast<const InteractionLoop*>(e.get());
-		if (!loop) continue;
-		for (const auto& f : loop->lawDispatcher->functors) {
-			auto* law = dynamic_cast<Law2_RdemGeom_RdemPhys_FaceSprings*>(f.get());
-			if (!law || law->activeSetChanges.get() == 0) continue;
-			changed = true;
-			law->activeSetChanges.reset();
-		}
-	}
+	forEachLaw(scene, [&](Law2_RdemGeom_RdemPhys_FaceSprings& law) {
+		if (law.activeSetChanges.get() == 0) return;
+		changed = true;
+		law.activeSetChanges.reset();
+	});
 	return changed;
 }
 
