@@ -374,7 +374,7 @@ void RdemPoissonEngine::action()
 #endif
 	for (long e = 0; e < nEl; ++e) {
 		const Real s = scale[size_t(e)], sPrev = scalePrev[size_t(e)];
-		if (s <= 0 && sPrev <= 0) continue;
+		if (s <= 0 && (sPrev <= 0 || !trackEnergy)) continue; // released, and no release energy to book
 		rdem::Nodes8<Real> X, x;
 		for (size_t a = 0; a < 8; ++a) {
 			X[a] = refPos[8 * size_t(e) + a];
@@ -392,7 +392,7 @@ void RdemPoissonEngine::action()
 			scene->forces.addForce(nodes[8 * size_t(e) + a], Vector3r(-s * (R * Ku.segment<3>(3 * long(a)))));
 	}
 	scalePrev = scale;
-	if (scene->trackEnergy) {
+	if (trackEnergy) {
 		scene->energy->add(energy, "rdemPoisson", energyIx, /*reset every step*/ true);
 		scene->energy->add(released, "rdemPoissonRelease", releaseIx, /*reset every step*/ false);
 	}
