@@ -33,6 +33,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(sys.argv[0])))
 sys.path.insert(0, os.path.join(ROOT, 'tests', 'yade'))
 import stability_cases as sc
 import rdem
+import rdem.measure
 from rdem.scenes import CompressionTest
 
 parser = argparse.ArgumentParser(prog='yade scripts/stability_sweep.py', description=__doc__.split('\n\n')[0])
@@ -164,17 +165,7 @@ if cli.guard_cost:
 	O.reset()
 	CompressionTest(blocksPerEdge=10, rate=1e-3)
 	O.run(5, True)
-	shares = []
-	for k in range(3):
-		for e in O.engines:
-			e.execTime = 0
-		O.timingEnabled = True
-		O.run(100, True)
-		O.timingEnabled = False
-		guard = next(e for e in O.engines if isinstance(e, RdemFiniteGuard)).execTime
-		total = sum(e.execTime for e in O.engines)
-		shares.append((guard / total, guard / 100 / 1e3, total / 100 / 1e3))
-	share, guardUs, stepUs = min(shares)
+	share, guardUs, stepUs = rdem.measure.engineShare(RdemFiniteGuard, 100)
 	results['guard cost, 1200 blocks'] = dict(share=share, guardMicroseconds=guardUs, stepMicroseconds=stepUs)
 	print('guard: %.2f %% of the step (%.1f us of %.0f us), 1200-block paper scene' % (100 * share, guardUs, stepUs), flush=True)
 

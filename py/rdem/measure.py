@@ -68,3 +68,21 @@ def apparentPoisson(lateralPairs, axialPairs):
 	eAx = sum(pairStrain(i, j) for i, j in axialPairs) / len(axialPairs)
 	eLat = sum(pairStrain(i, j) for i, j in lateralPairs) / len(lateralPairs)
 	return -eLat / eAx if eAx else float('nan')
+
+
+def engineShare(engineClass, steps, repeats=3):
+	"""Share of the step time spent in the engine of class ``engineClass`` of O.engines, from YADE's per-engine timing
+	(:yref:`O.timingEnabled<Omega.timingEnabled>`) over ``repeats`` runs of ``steps`` steps; the run with the smallest
+	share counts (execTime is wall time: other processes on the machine inflate single runs). Returns (share, engine
+	time per step, total engine time per step) [-, µs, µs]."""
+	shares = []
+	for k in range(repeats):
+		for e in O.engines:
+			e.execTime = 0
+		O.timingEnabled = True
+		O.run(steps, True)
+		O.timingEnabled = False
+		engine = next(e for e in O.engines if isinstance(e, engineClass)).execTime
+		total = sum(e.execTime for e in O.engines)
+		shares.append((engine / total, engine / steps / 1e3, total / steps / 1e3))
+	return min(shares)
