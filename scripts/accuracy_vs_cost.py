@@ -21,9 +21,9 @@ import argparse
 import json
 import os
 import resource
-import subprocess
 import sys
 import time
+import rdem.batch
 
 parser = argparse.ArgumentParser(prog='yade scripts/accuracy_vs_cost.py', description=__doc__.split('\n\n')[0])
 parser.add_argument('--quick', action='store_true', help='coarse sweeps (about 3 minutes)')
@@ -33,8 +33,6 @@ parser.add_argument('--replot', default=None, help='re-make the report and plot 
 parser.add_argument('--child', default=None, help=argparse.SUPPRESS)  # internal: run one point in this process
 opts = parser.parse_args(sys.argv[1:])
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(sys.argv[0])))  # YADE runs the script as sys.argv[0]
-LAUNCHER = os.path.join(REPO, 'build', 'bin', 'yade')
 E, NU, RATE, MAX_DISP = 30e9, 0.2, 10e-3, 0.4e-3  # input modulus [Pa] and ratio, loading rate [m/s], give-up displacement [m]
 BASE = dict(blocks=10, springs=2, formulation='consistent', corotational=False, safety=0.8)
 
@@ -85,7 +83,7 @@ def runPoint(point):
 
 
 if opts.child is not None:
-	print('ACCURACY-RESULT ' + json.dumps(runPoint(json.loads(opts.child))))
+	rdem.batch.reportChild(runPoint(json.loads(opts.child)))
 	sys.exit(0)
 
 # Sweeps: knob -> list of (label, changes to BASE); the first point of each list is its finest (reference) setting.
@@ -121,15 +119,7 @@ for knob, points in ([] if opts.replot else SWEEPS.items()):
 		key = json.dumps(point, sort_keys=True)
 		if key not in cache:
 			print('accuracy %d/%d: %s = %s ...' % (k, nPoints, knob, label), flush=True)
-			proc = subprocess.run([LAUNCHER, '-j1', '-n', '-x', sys.argv[0], '--child', json.dumps(point)],
-			                      env=dict(os.environ, OMP_NUM_THREADS='1'),
-			                      stdout=subprocess.PIPE,
-			                      stderr=subprocess.STDOUT,
-			                      universal_newlines=True)
-			found = [l for l in proc.stdout.splitlines() if l.startswith('ACCURACY-RESULT ')]
-			if not found:
-				raise RuntimeError('point %s failed:\n%s' % (point, proc.stdout[-3000:]))
-			cache[key] = json.loads(found[0][len('ACCURACY-RESULT '):])
+			cache[key] = rdem.batch.runChild(point, threads=1)
 			r = cache[key]
 			print('    nu %+.2f %%, E %+.2f %%, crack %s MPa, %.1f s (%.0f s so far)' %
 			      (100 * r['nuError'], 100 * r['eError'], '%.2f' % r['crackStressMPa'] if r['crackStressMPa'] else '-', r['wall'], time.time() - start),

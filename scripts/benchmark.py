@@ -29,9 +29,9 @@ import argparse
 import json
 import os
 import resource
-import subprocess
 import sys
 import time
+import rdem.batch
 
 parser = argparse.ArgumentParser(prog='yade scripts/benchmark.py', description=__doc__.split('\n\n')[0])
 parser.add_argument('--cases', nargs='+', default=['paper', 'cpm', 'effects', 'scaling'], help='cases to run (default: all)')
@@ -42,8 +42,6 @@ parser.add_argument('--out', default='doc/benchmark.md', help='markdown table to
 parser.add_argument('--child', default=None, help=argparse.SUPPRESS)  # internal: run one case in this process
 opts = parser.parse_args(sys.argv[1:])
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(sys.argv[0])))  # YADE runs the script as sys.argv[0]
-LAUNCHER = os.path.join(REPO, 'build', 'bin', 'yade')
 
 # Effects added one at a time to the paper's geometry: (label, CompressionTest / engine options).
 EFFECTS = [
@@ -88,7 +86,7 @@ def runRdem(spec):
 	t0 = time.time()
 	test = CompressionTest(blocksPerEdge=spec.get('blocks', 10), **options)
 	if recontact == 'always':
-		rdem.build._engine(rdem.build.RdemContactGate, '').open = True
+		rdem.build.contactGate().open = True
 	O.trackEnergy = trackEnergy
 	setup = time.time() - t0
 	n = len(O.bodies)
@@ -137,18 +135,7 @@ def runCpm(spec):
 def child(spec):
 	res = runCpm(spec) if spec['kind'] == 'cpm' else runRdem(spec)
 	res['threads'] = int(os.environ.get('OMP_NUM_THREADS', '1'))
-	print('BENCHMARK-RESULT ' + json.dumps(res))
-
-
-def spawn(spec, threads):
-	"""Run one case in a fresh YADE with `threads` OpenMP threads; returns its figures."""
-	env = dict(os.environ, OMP_NUM_THREADS=str(threads))
-	cmd = [LAUNCHER, '-j%d' % threads, '-n', '-x', sys.argv[0], '--child', json.dumps(spec)]
-	proc = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
-	for line in proc.stdout.splitlines():
-		if line.startswith('BENCHMARK-RESULT '):
-			return json.loads(line[len('BENCHMARK-RESULT '):])
-	raise RuntimeError('benchmark case %s failed:\n%s' % (spec, proc.stdout[-3000:]))
+	rdem.batch.reportChild(res)
 
 
 if opts.child is not None:
@@ -177,7 +164,7 @@ results = []
 start = time.time()
 for k, (section, label, spec, th) in enumerate(plan):
 	print('benchmark %d/%d: %s, %d thread(s) ...' % (k + 1, len(plan), label, th), flush=True)
-	res = spawn(spec, th)
+	res = rdem.batch.runChild(spec, th)
 	res.update(section=section, label=label)
 	results.append(res)
 	print('    %.0f steps/s, %.3f us per body-step (%.0f s so far)' % (res['stepsPerSecond'], res['usPerBodyStep'], time.time() - start), flush=True)

@@ -12,13 +12,14 @@ Typical use inside a YADE script (``yade script.py`` with the launcher made by t
     O.dt = 0.8 * rdem.timeStepper().estimate()
 
 Modules: :mod:`rdem.build` (blocks, bonds, engine lists), :mod:`rdem.measure` (stresses, apparent moduli, cracks),
-:mod:`rdem.export` (ParaView files of cracks and Poisson elements).
+:mod:`rdem.export` (ParaView files of cracks and Poisson elements), :mod:`rdem.scenes` (the paper's compression test),
+:mod:`rdem.batch` (cases of a study in fresh YADE processes).
 """
-from rdem.build import block, blockGrid, bond, engines, poissonEngine, timeStepper, law, geomFunctor
+from rdem.build import block, blockGrid, bond, engines, poissonEngine, timeStepper, law, geomFunctor, contactGate
 from rdem.measure import segmentTable, bondSnapshot, brokenSegments, breakCounts, apparentPoisson
 from rdem.export import CrackExport
 
 __all__ = [
-        'block', 'blockGrid', 'bond', 'engines', 'poissonEngine', 'timeStepper', 'law', 'geomFunctor', 'segmentTable', 'bondSnapshot', 'brokenSegments', 'breakCounts',
+        'block', 'blockGrid', 'bond', 'engines', 'poissonEngine', 'timeStepper', 'law', 'geomFunctor', 'contactGate', 'segmentTable', 'bondSnapshot', 'brokenSegments', 'breakCounts',
         'apparentPoisson', 'CrackExport'
 ]

@@ -95,6 +95,11 @@ def poissonEngine():
 	return _engine(RdemPoissonEngine, ': make the engines with rdem.engines(poisson="paper" or "consistent")')
 
 
+def contactGate():
+	"""The :yref:`RdemContactGate` of the current engine list (set ``open=True`` to run the collider from the start)."""
+	return _engine(RdemContactGate, ': make the engines with rdem.engines(recontact=True)')
+
+
 def timeStepper():
 	"""The :yref:`RdemTimeStepper` of the current engine list."""
 	return _engine(RdemTimeStepper, '')

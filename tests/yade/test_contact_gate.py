@@ -18,7 +18,7 @@ class ContactGate(unittest.TestCase):
 		return mat
 
 	def gate(self):
-		return next(e for e in O.engines if isinstance(e, RdemContactGate))
+		return rdem.build.contactGate()
 
 	def collider(self):
 		return next(e for e in O.engines if isinstance(e, InsertionSortCollider))
