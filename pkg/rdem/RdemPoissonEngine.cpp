@@ -400,16 +400,24 @@ void RdemPoissonEngine::action()
 
 vector<Real> RdemPoissonEngine::stiffnessBound() const
 {
+	// Per node of an element: the largest absolute row sum of its 3 rows of K_p [N/m].
+	auto nodeBounds = [](const rdem::Mat24<Real>& K) {
+		std::array<Real, 8> rows {};
+		for (long a = 0; a < 8; ++a)
+			for (long d = 0; d < 3; ++d)
+				rows[size_t(a)] = math::max(rows[size_t(a)], Real(K.row(3 * a + d).cwiseAbs().sum()));
+		return rows;
+	};
+	vector<std::array<Real, 8>> distinct; // of the distinct matrices, once each (prepared engines)
+	if (prepared())
+		for (const auto& K : stiffness)
+			distinct.push_back(nodeBounds(K));
 	const Scene* sc = Omega::instance().getScene().get();
 	vector<Real> bound(sc->bodies->size(), 0);
 	for (size_t e = 0; e < size_t(nElements()); ++e) {
-		const rdem::Mat24<Real> K = prepared() ? stiffness[stiffnessOf[e]] : elementStiffness(e);
-		for (size_t a = 0; a < 8; ++a) {
-			Real rowMax = 0;
-			for (int d = 0; d < 3; ++d)
-				rowMax = math::max(rowMax, Real(K.row(3 * long(a) + d).cwiseAbs().sum()));
-			bound[size_t(nodes[8 * e + a])] += rowMax;
-		}
+		const std::array<Real, 8> rows = prepared() ? distinct[stiffnessOf[e]] : nodeBounds(elementStiffness(e));
+		for (size_t a = 0; a < 8; ++a)
+			bound[size_t(nodes[8 * e + a])] += rows[a];
 	}
 	return bound;
 }
