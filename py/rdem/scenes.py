@@ -40,6 +40,10 @@ class CompressionTest:
 		for name, value in (('size', size), ('plateHeight', plateHeight), ('rate', rate)):
 			if not value > 0:
 				raise ValueError('%s = %r: must be > 0' % (name, value))
+		if plateYoung is not None and not (math.isfinite(plateYoung) and plateYoung > 0):
+			raise ValueError('plateYoung = %r: must be finite and > 0 [Pa] (or None: the specimen\'s material)' % (plateYoung, ))
+		if platePoisson is not None and not (-1 < platePoisson < 0.5):
+			raise ValueError('platePoisson = %r: must be in (-1, 0.5) (or None: the specimen\'s)' % (platePoisson, ))
 		if not frictionCoefficient >= 0:
 			raise ValueError('frictionCoefficient = %r: must be >= 0' % (frictionCoefficient, ))
 		if len(O.bodies) or len(O.interactions):

@@ -61,6 +61,16 @@ class InputValidation(unittest.TestCase):
 		self.refused(r'verletDist = -0.1.*>= 0', rdem.engines, verletDist=-0.1)
 		self.refused(r'gravity = .*finite', rdem.engines, gravity=(0, 0, NAN))
 
+	def testCompressionSceneArguments(self):
+		from rdem.scenes import CompressionTest
+		for kw, pattern in ((dict(blocksPerEdge=1), r'blocksPerEdge = 1.*>= 2'), (dict(rate=0), r'rate = 0.*> 0'),
+		                    (dict(plateYoung=0.0), r'plateYoung = 0.0.*> 0'), (dict(plateYoung=NAN), r'plateYoung = nan.*finite'),
+		                    (dict(platePoisson=0.5), r'platePoisson = 0.5.*\(-1, 0.5\)'), (dict(frictionCoefficient=-1), r'frictionCoefficient = -1.*>= 0')):
+			harness.freshScene()
+			self.refused(pattern, CompressionTest, **kw)
+		harness.freshScene()
+		self.refused(r"recontact = 'sometimes'", rdem.engines, recontact='sometimes')
+
 	def testGeometryArguments(self):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat())
