@@ -158,18 +158,13 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 
 	RdemGeom& g = *static_cast<RdemGeom*>(I->geom.get());
 	if (g.nSegments() > 0) {
-		// Bonded: relative displacement of the two material points of every segment (the law computes velocities
-		// where it needs them, at broken segments only).
-		g.normal           = (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized();
-		const size_t nSeg = g.nSegments();
-		g.segDisp.resize(nSeg);
-		g.segPoint.resize(nSeg);
-		for (size_t i = 0; i < nSeg; ++i) {
-			const Vector3r P1 = A.pos + A.rot * g.segPoint1[i];
-			const Vector3r P2 = B.pos + B.rot * g.segPoint2[i];
-			g.segDisp[i]      = P2 - P1;
-			g.segPoint[i]     = (P1 + P2) / 2;
-		}
+		// Bonded: the pair's current frame; the law takes the segments' relative displacements from it
+		// (RdemGeom::segmentKinematics) where it uses them, with no per-segment array written and read back.
+		g.pos1   = A.pos;
+		g.pos2   = B.pos;
+		g.rot1   = A.rot;
+		g.rot2   = B.rot;
+		g.normal = (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized();
 		return true;
 	}
 	g.clearSamples();

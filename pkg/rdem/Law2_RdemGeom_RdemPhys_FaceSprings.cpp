@@ -106,21 +106,36 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::takeActiveSetChanged(const Scene* scene
 
 bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
-	RdemGeom&      g           = *static_cast<RdemGeom*>(ig.get());
-	RdemPhys&      p           = *static_cast<RdemPhys*>(ip.get());
-	const Body::id_t id1 = I->getId1(), id2 = I->getId2();
-	const State&   s1          = *Body::byId(id1, scene)->state;
-	const State&   s2          = *Body::byId(id2, scene)->state;
-	const Vector3r x1          = s1.pos;
-	const Vector3r x2          = scene->isPeriodic ? Vector3r(s2.pos + scene->cell->hSize * I->cellDist.cast<Real>()) : s2.pos;
+	RdemGeom&    g    = *static_cast<RdemGeom*>(ig.get());
+	RdemPhys&    p    = *static_cast<RdemPhys*>(ip.get());
+	const size_t nSeg = g.nSegments();
+	// The bodies' states are needed only by contact springs (velocities, dashpot caps): looked up on first use. The
+	// centroids of a bonded pair come from its frame, set by the Ig2 in this step (periodic shift included).
+	const State* s1    = nullptr;
+	const State* s2    = nullptr;
+	auto         state = [&]() {
+                if (!s1) {
+                        s1 = Body::byId(I->getId1(), scene)->state.get();
+                        s2 = Body::byId(I->getId2(), scene)->state.get();
+                }
+	};
+	if (nSeg == 0) state();
+	const Vector3r x1 = nSeg > 0 ? g.pos1 : s1->pos;
+	const Vector3r x2 = nSeg > 0 ? g.pos2
+	                             : scene->isPeriodic ? Vector3r(s2->pos + scene->cell->hSize * I->cellDist.cast<Real>()) : s2->pos;
 	const bool     trackEnergy = scene->trackEnergy;
 	const Real     dt          = scene->dt;
 	Energies       e;
 	// Force on body 2 and its moment about x2; the reactions on body 1 follow at the end (one cross product per point).
 	Vector3r f2 = Vector3r::Zero(), t2 = Vector3r::Zero();
-	auto     apply = [&](const Vector3r& F, const Vector3r& C) {
+	auto     apply = [&](const Vector3r& F, const Vector3r& r2) { // r2: point of application minus x2
                 f2 += F;
-                t2 += (C - x2).cross(F);
+                t2 += r2.cross(F);
+	};
+	/// Velocity of body 2 relative to body 1 at the point x2 + r2 [m/s].
+	auto relativeVelocity = [&](const Vector3r& r2) {
+		state();
+		return Vector3r(s2->vel + s2->angVel.cross(r2) - s1->vel - s1->angVel.cross(r2 + x2 - x1));
 	};
 	/* Stability caps of a contact dashpot (explicit central differences): a dashpot may at most stop, never reverse, the
 	   relative motion of its point within one step, c ≤ share·m_eff/Δt, with m_eff the pair's effective mass at the
@@ -129,8 +144,9 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	   bind where a contact drives a small effective mass, at an edge or a corner of a tumbling block; eq. (13) holds
 	   elsewhere (doc/theory.md §3). */
 	auto dashpotCap = [&](const Vector3r& C, const Vector3r& n, Real share) {
+		state();
 		Real invN = 0, invS = 0;
-		for (const auto& sx : { std::make_pair(&s1, x1), std::make_pair(&s2, x2) }) {
+		for (const auto& sx : { std::make_pair(s1, x1), std::make_pair(s2, x2) }) {
 			if (sx.first->blockedDOFs == State::DOF_ALL) continue;
 			const Vector3r r = C - sx.second;
 			invN += 1 / sx.first->mass + r.cross(n).squaredNorm() / sx.first->inertia.minCoeff();
@@ -139,32 +155,39 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		const Real inf = std::numeric_limits<Real>::infinity();
 		return Vector2r(invN > 0 ? share / (invN * dt) : inf, invS > 0 ? share / (invS * dt) : inf);
 	};
-	const size_t nSeg = g.nSegments();
 	if (nSeg > 0) {
 		p.segDashpot.resize(nSeg, Vector3r::Zero());
 		bool       anyIntactOrTouching = false;
 		const Real maxSlide            = g.segHalfSizes.minCoeff();
-		auto       touching            = [&](size_t i, Real un, const Vector3r& us) {
-                        return p.segState[i] != int(rdem::SegmentState::Intact) && un < 0 && us.norm() < maxSlide;
-		};
-		Real contactArea = 0;
+		// A broken segment is in contact while its material points overlap and face each other.
+		auto           touching    = [&](Real un, const Vector3r& us) { return un < 0 && us.norm() < maxSlide; };
+		const Vector3r n           = g.normal;
+		Vector3r       d, r2;        // of a segment: P₂ - P₁ and C - x₂ (RdemGeom::segmentKinematics)
+		Real           contactArea = 0; // of the broken segments in contact: shares of the dashpot caps
 		for (size_t i = 0; i < nSeg; ++i) {
-			const Real un = g.segDisp[i].dot(g.normal);
-			if (touching(i, un, g.segDisp[i] - un * g.normal)) contactArea += g.segArea[i];
+			if (p.segState[i] == int(rdem::SegmentState::Intact)) continue;
+			g.segmentKinematics(i, d, r2);
+			const Real un = d.dot(n);
+			if (touching(un, d - un * n)) contactArea += g.segArea[i];
 		}
+		// Loop invariants in locals: the stores to the per-segment arrays below could alias them (all doubles).
+		const Matrix3r R1 = g.rot1, R2 = g.rot2;
+		const Vector3r dx = x2 - x1;
+		const Real     kn = p.kn, ks = p.ks, wn = p.weightNormal, ws = p.weightShear;
+		const Real     ft = p.tensileStrength, cohesion = p.cohesion, tanPhi = p.tanFriction;
 		for (size_t i = 0; i < nSeg; ++i) {
+			RdemGeom::segmentKinematics(R1, R2, dx, g.segPoint1[i], g.segPoint2[i], d, r2);
 			const Real     A  = g.segArea[i];
-			const Vector3r n  = g.normal;
-			const Real     un = g.segDisp[i].dot(n); // eq. (14): opening positive
-			const Vector3r us = g.segDisp[i] - un * n;
+			const Real     un = d.dot(n); // eq. (14): opening positive
+			const Vector3r us = d - un * n;
 			if (p.segState[i] == int(rdem::SegmentState::Intact)) {
-				const Real     sigma = p.kn * un;
-				const Vector3r tau   = p.ks * us;
+				const Real     sigma   = kn * un;
+				const Vector3r tau     = ks * us;
 				const Real     tauNorm = tau.norm();
-				const auto     state   = rdem::restoringSpringState(sigma, tauNorm, p.tensileStrength, p.cohesion, p.tanFriction);
-				auto           energy  = [&]() { return A * (p.weightNormal * sigma * sigma / p.kn + p.weightShear * tau.squaredNorm() / p.ks) / 2; };
+				const auto     state   = rdem::restoringSpringState(sigma, tauNorm, ft, cohesion, tanPhi);
+				auto           energy  = [&]() { return A * (wn * sigma * sigma / kn + ws * tau.squaredNorm() / ks) / 2; };
 				if (state == rdem::SegmentState::Intact) {
-					apply(-(p.weightNormal * sigma * n + p.weightShear * tau) * A, g.segPoint[i]);
+					apply(-(wn * sigma * n + ws * tau) * A, r2);
 					p.segSigma[i]       = sigma;
 					p.segTau[i]         = tauNorm;
 					anyIntactOrTouching = true;
@@ -178,13 +201,12 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 				e.bondBreak += energy();
 				p.segShear[i] = Vector3r::Zero();
 			}
-			// Broken: the contact spring of this segment (eqs. 13, 17), while the material points overlap and face each other.
-			if (touching(i, un, us)) {
+			// Broken: the contact spring of this segment (eqs. 13, 17).
+			if (touching(un, us)) {
 				const Real     share = contactArea > 0 ? A / contactArea : Real(1); // a segment broken in this step joins now
-				const Vector3r& C    = g.segPoint[i];
-				const Vector3r  v    = s2.vel + s2.angVel.cross(C - x2) - s1.vel - s1.angVel.cross(C - x1); // of body 2 relative to body 1
-				const Vector3r  F    = contactForce(p, A, -un, n, v, dt, dashpotCap(C, n, share), p.segShear[i], p.segDashpot[i], trackEnergy, e);
-				apply(F, g.segPoint[i]);
+				const Vector3r v     = relativeVelocity(r2);
+				const Vector3r F     = contactForce(p, A, -un, n, v, dt, dashpotCap(x2 + r2, n, share), p.segShear[i], p.segDashpot[i], trackEnergy, e);
+				apply(F, r2);
 				p.segSigma[i]       = -F.dot(n) / (p.weightNormal * A);
 				p.segTau[i]         = (F - F.dot(n) * n).norm() / (p.weightShear * A);
 				anyIntactOrTouching = true;
@@ -233,7 +255,7 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 			              p.sampleDashpot[key],
 			              trackEnergy,
 			              e),
-			      g.samplePoint[k]);
+			      g.samplePoint[k] - x2);
 		}
 		for (size_t key = 0; key < nKeys; ++key)
 			if (!active[key]) p.sampleShear[key] = p.sampleDashpot[key] = Vector3r::Zero();
@@ -249,10 +271,10 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		p.torque2   = t2;
 		p.forceIter = scene->iter;
 	} else {
-		scene->forces.addForce(id2, f2);
-		scene->forces.addForce(id1, -f2);
-		scene->forces.addTorque(id2, t2);
-		scene->forces.addTorque(id1, t1);
+		scene->forces.addForce(I->getId2(), f2);
+		scene->forces.addForce(I->getId1(), -f2);
+		scene->forces.addTorque(I->getId2(), t2);
+		scene->forces.addTorque(I->getId1(), t1);
 	}
 	if (trackEnergy) {
 		scene->energy->add(e.elastic, "rdemElastic", elasticIx, /*reset every step*/ true);

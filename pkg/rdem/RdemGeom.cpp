@@ -10,6 +10,15 @@ namespace yade {
 
 YADE_PLUGIN((RdemGeom));
 
+vector<Vector3r> RdemGeom::segDispPy() const
+{
+	vector<Vector3r> out(nSegments());
+	Vector3r         r2;
+	for (size_t i = 0; i < out.size(); ++i)
+		segmentKinematics(i, out[i], r2);
+	return out;
+}
+
 void RdemGeom::clearSamples()
 {
 	sampleKey.clear();
