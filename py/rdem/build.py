@@ -16,7 +16,9 @@ POISSON_MODES = {None: None, 'off': None, 'paper': 0, 'consistent': 1}
 def block(center, halfExtents, material, orientation=Quaternion.Identity, fixed=False, color=None):
 	"""A rigid block (:yref:`RdemBlock`) as a :yref:`Body`, not yet in the scene (``O.bodies.append`` it).
 
-	Mass $8\\rho abc$ and principal inertia $m(b^2+c^2)/3$, ... for half-extents $(a, b, c)$ [m]; :yref:`Body::aspherical` set."""
+	Mass $8\\rho abc$ and principal inertia $m(b^2+c^2)/3$, ... for half-extents $(a, b, c)$ [m]. :yref:`Body::aspherical` is set
+	unless the block is a cube: a cube's inertia is isotropic, Euler's equations then have no gyroscopic term, and
+	NewtonIntegrator's spherical update is exact for it and cheaper than the aspherical one (doc/performance.md)."""
 	a, b, c = (float(h) for h in halfExtents)
 	if min(a, b, c) <= 0:
 		raise ValueError('halfExtents = %s: every half-extent must be > 0 [m]' % (tuple(halfExtents), ))
@@ -35,7 +37,7 @@ def block(center, halfExtents, material, orientation=Quaternion.Identity, fixed=
 	body.state.inertia = Vector3(b * b + c * c, a * a + c * c, a * a + b * b) * (body.state.mass / 3.0)
 	body.state.pos = body.state.refPos = Vector3(center)
 	body.state.ori = body.state.refOri = orientation
-	body.aspherical = True
+	body.aspherical = max(a, b, c) - min(a, b, c) > 1e-12 * max(a, b, c)
 	body.bounded = True
 	if fixed:
 		body.state.blockedDOFs = 'xyzXYZ'
