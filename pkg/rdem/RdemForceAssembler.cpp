@@ -16,24 +16,29 @@ YADE_PLUGIN((RdemForceAssembler));
 
 void RdemForceAssembler::rebuild()
 {
-	const size_t nBodies = scene->bodies->size();
-	vector<std::pair<Body::id_t, Side>> all; // (body, side), ordered below by body, then by the other body's id
+	/* Counting sort by body id (one pass to count each body's sides, one to place them), then each body's short list
+	   sorted by the other body's id: O(sides) plus a few comparisons per side, instead of one sort of all sides (the
+	   rebuild runs at nearly every step once contacts come and go, doc/performance.md). */
+	const size_t               nBodies = scene->bodies->size();
+	vector<const shared_ptr<Interaction>*> intrs; // the real interactions of the law, in container order
+	first.assign(nBodies + 1, 0);
 	for (const auto& I : *scene->interactions) {
 		if (!I->isReal() || !dynamic_cast<const RdemPhys*>(I->phys.get())) continue;
-		all.push_back({ I->getId1(), Side { I, false } });
-		all.push_back({ I->getId2(), Side { I, true } });
-	}
-	auto other = [](const std::pair<Body::id_t, Side>& e) { return e.second.second ? e.second.interaction->getId1() : e.second.interaction->getId2(); };
-	std::sort(all.begin(), all.end(), [&](const auto& a, const auto& b) { return a.first != b.first ? a.first < b.first : other(a) < other(b); });
-	first.assign(nBodies + 1, 0);
-	sides.clear();
-	sides.reserve(all.size());
-	for (const auto& e : all) {
-		++first[size_t(e.first) + 1];
-		sides.push_back(e.second);
+		intrs.push_back(&I);
+		++first[size_t(I->getId1()) + 1];
+		++first[size_t(I->getId2()) + 1];
 	}
 	for (size_t b = 0; b < nBodies; ++b)
 		first[b + 1] += first[b];
+	sides.assign(first[nBodies], Side { nullptr, false });
+	vector<size_t> fill(first.begin(), first.end() - 1);
+	for (const shared_ptr<Interaction>* I : intrs) {
+		sides[fill[size_t((*I)->getId1())]++] = Side { *I, false };
+		sides[fill[size_t((*I)->getId2())]++] = Side { *I, true };
+	}
+	auto other = [](const Side& s) { return s.second ? s.interaction->getId1() : s.interaction->getId2(); };
+	for (size_t b = 0; b < nBodies; ++b)
+		std::sort(sides.begin() + long(first[b]), sides.begin() + long(first[b + 1]), [&](const Side& x, const Side& y) { return other(x) < other(y); });
 	builtBodies       = long(nBodies);
 	builtInteractions = long(scene->interactions->size());
 }
