@@ -37,8 +37,9 @@ namespace {
 	   pair's contact normal from body 1 to body 2 (rdem::contactFaceAxis); X separates from Y along u = -normal (body 1)
 	   or +normal (body 2), and a sample's depth is its distance to Y's surface along u (rdem::sampleDepth). Only the faces
 	   of X that face Y take part (cosine c = -n_f·u > 0). Sample keys are ((which·6 + face)·(n+1)² + point), stable from
-	   step to step for the shear history. */
-	void sampleInside(const Block& X, const State& sx, const Block& Y, const State& sy, int which, int n, const Vector3r& normal, RdemGeom& g)
+	   step to step for the shear history. pts is a scratch buffer for one face's sample points. */
+	void sampleInside(
+	        const Block& X, const State& sx, const Block& Y, const State& sy, int which, int n, const Vector3r& normal, vector<rdem::SurfacePoint<Real>>& pts, RdemGeom& g)
 	{
 		const int      perFace = (n + 1) * (n + 1);
 		const Vector3r u       = which == 0 ? Vector3r(-normal) : normal;
@@ -51,8 +52,8 @@ namespace {
 				if (!(cosine > 0)) continue;
 				const Vector3r fc = X.pos + X.half[k] * nf;
 				if (!rdem::faceMayEnter<Real>(Y, fc, X.rot.col(k1), X.rot.col(k2), X.half[k1], X.half[k2])) continue;
-				const auto pts  = rdem::faceSamplePoints<Real>(fc, X.rot.col(k1), X.rot.col(k2), X.half[k1], X.half[k2], n);
-				const int  face = 2 * k + side;
+				rdem::faceSamplePoints<Real>(fc, X.rot.col(k1), X.rot.col(k2), X.half[k1], X.half[k2], n, pts);
+				const int face = 2 * k + side;
 				for (int p = 0; p < perFace; ++p) {
 					const auto hit = rdem::sampleDepth<Real>(Y, pts[size_t(p)].pos, u);
 					if (!hit.hit) continue;
@@ -94,9 +95,11 @@ namespace {
 	/// Face samples of both blocks inside each other along the pair's contact normal, then the edge-to-edge contact.
 	void sampleContacts(const Block& A, const State& s1, const Block& B, const State& s2, Real tol, int n, RdemGeom& g)
 	{
-		const Vector3r normal = rdem::contactFaceAxis<Real>(A, B).normal;
-		sampleInside(A, s1, B, s2, 0, n, normal, g);
-		sampleInside(B, s2, A, s1, 1, n, normal, g);
+		const Vector3r                   normal = rdem::contactFaceAxis<Real>(A, B).normal;
+		vector<rdem::SurfacePoint<Real>> pts; // sample points of one face, one buffer for all faces of the pair
+		pts.reserve(size_t((n + 1) * (n + 1)));
+		sampleInside(A, s1, B, s2, 0, n, normal, pts, g);
+		sampleInside(B, s2, A, s1, 1, n, normal, pts, g);
 		edgeInside(A, s1, B, s2, tol, n, g);
 	}
 }

@@ -146,3 +146,19 @@ TEST(SegmentGrid, TrapezoidRuleIntegratesLinearAndBilinearExactly)
 }
 
 } // namespace
+
+TEST(SegmentGrid, FaceSamplePointsIntoAReusedBufferEqualsTheReturnedOnes)
+{
+	// The buffer version clears what the buffer held (here the points of a larger face) and writes the same points and
+	// weights, to the last bit, as the version that returns a new vector.
+	std::vector<rdem::SurfacePoint<double>> buffer = rdem::faceSamplePoints<double>(V3(1, 2, 3), V3::UnitX(), V3::UnitZ(), 2.0, 3.0, 4);
+	const V3                                c(0.1, -0.2, 0.3), t1 = V3(1, 1, 0).normalized(), t2 = V3(-1, 1, 0).normalized();
+	rdem::faceSamplePoints<double>(c, t1, t2, 0.01, 0.02, 2, buffer);
+	const auto fresh = rdem::faceSamplePoints<double>(c, t1, t2, 0.01, 0.02, 2);
+	ASSERT_EQ(buffer.size(), size_t(9));
+	ASSERT_EQ(buffer.size(), fresh.size());
+	for (size_t i = 0; i < fresh.size(); ++i) {
+		EXPECT_EQ(buffer[i].pos, fresh[i].pos);
+		EXPECT_EQ(buffer[i].weight, fresh[i].weight);
+	}
+}

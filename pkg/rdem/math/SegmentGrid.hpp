@@ -41,13 +41,19 @@ namespace rdem {
 	}
 
 	/// Trapezoid-rule sample points of the same rectangle: an (n+1)×(n+1) grid including edges and corners; weights
-	/// sum to the rectangle's area (corner ¼, edge ½, interior 1 times the segment area).
+	/// sum to the rectangle's area (corner ¼, edge ½, interior 1 times the segment area). Written into pts (cleared
+	/// first), so that a caller sampling many faces reuses one buffer instead of allocating one per face.
 	template <class S>
-	std::vector<SurfacePoint<S>>
-	faceSamplePoints(const Eigen::Matrix<S, 3, 1>& c, const Eigen::Matrix<S, 3, 1>& t1, const Eigen::Matrix<S, 3, 1>& t2, S h1, S h2, int n)
+	void faceSamplePoints(
+	        const Eigen::Matrix<S, 3, 1>& c,
+	        const Eigen::Matrix<S, 3, 1>& t1,
+	        const Eigen::Matrix<S, 3, 1>& t2,
+	        S                             h1,
+	        S                             h2,
+	        int                           n,
+	        std::vector<SurfacePoint<S>>& pts)
 	{
-		std::vector<SurfacePoint<S>> pts;
-		pts.reserve(size_t((n + 1) * (n + 1)));
+		pts.clear();
 		const S area = 4 * h1 * h2 / S(n * n);
 		for (int i = 0; i <= n; ++i)
 			for (int j = 0; j <= n; ++j) {
@@ -55,6 +61,16 @@ namespace rdem {
 				const S w = area * ((i == 0 || i == n) ? S(0.5) : S(1)) * ((j == 0 || j == n) ? S(0.5) : S(1));
 				pts.push_back({ c + s * t1 + r * t2, w });
 			}
+	}
+
+	/// The same, returned as a new vector.
+	template <class S>
+	std::vector<SurfacePoint<S>>
+	faceSamplePoints(const Eigen::Matrix<S, 3, 1>& c, const Eigen::Matrix<S, 3, 1>& t1, const Eigen::Matrix<S, 3, 1>& t2, S h1, S h2, int n)
+	{
+		std::vector<SurfacePoint<S>> pts;
+		pts.reserve(size_t((n + 1) * (n + 1)));
+		faceSamplePoints(c, t1, t2, h1, h2, n, pts);
 		return pts;
 	}
 
