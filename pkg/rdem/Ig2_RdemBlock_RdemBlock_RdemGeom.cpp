@@ -39,7 +39,15 @@ namespace {
 	   of X that face Y take part (cosine c = -n_f·u > 0). Sample keys are ((which·6 + face)·(n+1)² + point), stable from
 	   step to step for the shear history. pts is a scratch buffer for one face's sample points. */
 	void sampleInside(
-	        const Block& X, const State& sx, const Block& Y, const State& sy, int which, int n, const Vector3r& normal, vector<rdem::SurfacePoint<Real>>& pts, RdemGeom& g)
+	        const Block&                      X,
+	        const State&                      sx,
+	        const Block&                      Y,
+	        const State&                      sy,
+	        int                               which,
+	        int                               n,
+	        const Vector3r&                   normal,
+	        vector<rdem::SurfacePoint<Real>>& pts,
+	        RdemGeom&                         g)
 	{
 		const int      perFace = (n + 1) * (n + 1);
 		const Vector3r u       = which == 0 ? Vector3r(-normal) : normal;

@@ -120,9 +120,8 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
                 }
 	};
 	if (nSeg == 0) state();
-	const Vector3r x1 = nSeg > 0 ? g.pos1 : s1->pos;
-	const Vector3r x2 = nSeg > 0 ? g.pos2
-	                             : scene->isPeriodic ? Vector3r(s2->pos + scene->cell->hSize * I->cellDist.cast<Real>()) : s2->pos;
+	const Vector3r x1          = nSeg > 0 ? g.pos1 : s1->pos;
+	const Vector3r x2          = nSeg > 0 ? g.pos2 : scene->isPeriodic ? Vector3r(s2->pos + scene->cell->hSize * I->cellDist.cast<Real>()) : s2->pos;
 	const bool     trackEnergy = scene->trackEnergy;
 	const Real     dt          = scene->dt;
 	Energies       e;
@@ -160,9 +159,9 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		bool       anyIntactOrTouching = false;
 		const Real maxSlide            = g.segHalfSizes.minCoeff();
 		// A broken segment is in contact while its material points overlap and face each other.
-		auto           touching    = [&](Real un, const Vector3r& us) { return un < 0 && us.norm() < maxSlide; };
-		const Vector3r n           = g.normal;
-		Vector3r       d, r2;        // of a segment: P₂ - P₁ and C - x₂ (RdemGeom::segmentKinematics)
+		auto           touching = [&](Real un, const Vector3r& us) { return un < 0 && us.norm() < maxSlide; };
+		const Vector3r n        = g.normal;
+		Vector3r       d, r2;           // of a segment: P₂ - P₁ and C - x₂ (RdemGeom::segmentKinematics)
 		Real           contactArea = 0; // of the broken segments in contact: shares of the dashpot caps
 		for (size_t i = 0; i < nSeg; ++i) {
 			if (p.segState[i] == int(rdem::SegmentState::Intact)) continue;
@@ -205,7 +204,8 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 			if (touching(un, us)) {
 				const Real     share = contactArea > 0 ? A / contactArea : Real(1); // a segment broken in this step joins now
 				const Vector3r v     = relativeVelocity(r2);
-				const Vector3r F     = contactForce(p, A, -un, n, v, dt, dashpotCap(x2 + r2, n, share), p.segShear[i], p.segDashpot[i], trackEnergy, e);
+				const Vector3r F
+				        = contactForce(p, A, -un, n, v, dt, dashpotCap(x2 + r2, n, share), p.segShear[i], p.segDashpot[i], trackEnergy, e);
 				apply(F, r2);
 				p.segSigma[i]       = -F.dot(n) / (p.weightNormal * A);
 				p.segTau[i]         = (F - F.dot(n) * n).norm() / (p.weightShear * A);

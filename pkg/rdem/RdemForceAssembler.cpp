@@ -19,7 +19,7 @@ void RdemForceAssembler::rebuild()
 	/* Counting sort by body id (one pass to count each body's sides, one to place them), then each body's short list
 	   sorted by the other body's id: O(sides) plus a few comparisons per side, instead of one sort of all sides (the
 	   rebuild runs at nearly every step once contacts come and go, doc/performance.md). */
-	const size_t               nBodies = scene->bodies->size();
+	const size_t                           nBodies = scene->bodies->size();
 	vector<const shared_ptr<Interaction>*> intrs; // the real interactions of the law, in container order
 	first.assign(nBodies + 1, 0);
 	for (const auto& I : *scene->interactions) {
@@ -38,7 +38,8 @@ void RdemForceAssembler::rebuild()
 	}
 	auto other = [](const Side& s) { return s.second ? s.interaction->getId1() : s.interaction->getId2(); };
 	for (size_t b = 0; b < nBodies; ++b)
-		std::sort(sides.begin() + long(first[b]), sides.begin() + long(first[b + 1]), [&](const Side& x, const Side& y) { return other(x) < other(y); });
+		std::sort(
+		        sides.begin() + long(first[b]), sides.begin() + long(first[b + 1]), [&](const Side& x, const Side& y) { return other(x) < other(y); });
 	builtBodies       = long(nBodies);
 	builtInteractions = long(scene->interactions->size());
 }

@@ -21,12 +21,12 @@ public:
 	/// A bonded segment whose material points are p1, p2 (body frames) in the frame (R1, R2, dx = x₂ - x₁) of its pair:
 	/// d = P₂ - P₁, the relative displacement of the two points (paper eq. 14), and r₂ = C - x₂, the offset of the
 	/// segment's current point C = (P₁ + P₂)/2 from body 2's centroid [m].
-	static void segmentKinematics(
-	        const Matrix3r& R1, const Matrix3r& R2, const Vector3r& dx, const Vector3r& p1, const Vector3r& p2, Vector3r& d, Vector3r& r2)
+	static void
+	segmentKinematics(const Matrix3r& R1, const Matrix3r& R2, const Vector3r& dx, const Vector3r& p1, const Vector3r& p2, Vector3r& d, Vector3r& r2)
 	{
 		const Vector3r a = R1 * p1, b = R2 * p2; // P₁ - x₁, P₂ - x₂
-		d                = dx + b - a;
-		r2               = b - d / 2;
+		d  = dx + b - a;
+		r2 = b - d / 2;
 	}
 	/// Segment i in the pair's current frame (pos1, pos2, rot1, rot2), see the static version.
 	void segmentKinematics(size_t i, Vector3r& d, Vector3r& r2) const { segmentKinematics(rot1, rot2, pos2 - pos1, segPoint1[i], segPoint2[i], d, r2); }
