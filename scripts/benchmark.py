@@ -172,7 +172,7 @@ def runCount(spec):
 	"""The paper scene, built and stepped spec['steps'] times under callgrind (see countInstructions)."""
 	from yade import O
 	from rdem.scenes import CompressionTest
-	CompressionTest(**spec.get('options', {}))
+	CompressionTest()
 	O.run(spec['steps'], True)
 	return dict(bodies=len(O.bodies), steps=spec['steps'])
 

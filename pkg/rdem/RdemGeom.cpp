@@ -12,6 +12,7 @@ YADE_PLUGIN((RdemGeom));
 
 vector<Vector3r> RdemGeom::segDispPy() const
 {
+	if (normal.squaredNorm() == 0) return {}; // no frame yet (e.g. after O.load, before the next step's Ig2)
 	vector<Vector3r> out(nSegments());
 	Vector3r         r2;
 	for (size_t i = 0; i < out.size(); ++i)

@@ -30,7 +30,7 @@ public:
 	}
 	/// Segment i in the pair's current frame (pos1, pos2, rot1, rot2), see the static version.
 	void segmentKinematics(size_t i, Vector3r& d, Vector3r& r2) const { segmentKinematics(rot1, rot2, pos2 - pos1, segPoint1[i], segPoint2[i], d, r2); }
-	/// Python: d = P₂ - P₁ of every bonded segment in the current frame [m].
+	/// Python: d = P₂ - P₁ of every bonded segment in the current frame [m]; empty while the Ig2 has set no frame.
 	vector<Vector3r> segDispPy() const;
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemGeom,IGeom,R"""(Geometry of a pair of :yref:`RdemBlock` (built by :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom`).
@@ -62,7 +62,7 @@ public:
 		,
 		/* ctor */ createIndex();
 		,
-		.add_property("segDisp",&RdemGeom::segDispPy,"Relative displacement $\\mathbf{P}_2-\\mathbf{P}_1$ of each bonded segment's material points in the current frame (global) [m].")
+		.add_property("segDisp",&RdemGeom::segDispPy,"Relative displacement $\\mathbf{P}_2-\\mathbf{P}_1$ of each bonded segment's material points in the current frame (global) [m]; empty until the geometry functor has set the frame (after ``O.load``, until the next step).")
 	);
 	// clang-format on
 	REGISTER_CLASS_INDEX(RdemGeom, IGeom);

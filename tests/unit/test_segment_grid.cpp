@@ -145,8 +145,6 @@ TEST(SegmentGrid, TrapezoidRuleIntegratesLinearAndBilinearExactly)
 	}
 }
 
-} // namespace
-
 TEST(SegmentGrid, FaceSamplePointsIntoAReusedBufferEqualsTheReturnedOnes)
 {
 	// The buffer version clears what the buffer held (here the points of a larger face) and writes the same points and
@@ -162,3 +160,5 @@ TEST(SegmentGrid, FaceSamplePointsIntoAReusedBufferEqualsTheReturnedOnes)
 		EXPECT_EQ(buffer[i].weight, fresh[i].weight);
 	}
 }
+
+} // namespace
