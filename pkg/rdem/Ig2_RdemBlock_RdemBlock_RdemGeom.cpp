@@ -129,6 +129,8 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
         const bool&                    force,
         const shared_ptr<Interaction>& I)
 {
+	if (I->geom && static_cast<RdemGeom*>(I->geom.get())->bonded)
+		return true; // bonded: the law takes the segments' kinematics from the blocks' states (RdemGeom::kinematics)
 	const Block A { state1.pos, state1.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape1.get())->extents };
 	const Block B { state2.pos + shift2, state2.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape2.get())->extents };
 
@@ -138,21 +140,23 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 			const Real tol  = bondGapTolerance * math::min(A.half.minCoeff(), B.half.minCoeff());
 			const auto face = rdem::findSharedFace<Real>(A, B, tol, Real(1e-6));
 			if (!face.found) return false;
-			auto       g = shared_ptr<RdemGeom>(new RdemGeom);
-			const auto segs = rdem::segmentCentres<Real>(face.centre, face.t1, face.t2, face.h1, face.h2, segmentsPerEdge);
+			auto g            = shared_ptr<RdemGeom>(new RdemGeom);
 			g->samplesPerEdge = segmentsPerEdge;
+			g->bonded         = true;
 			g->ell1           = A.half[face.axisA];
 			g->ell2           = B.half[face.axisB];
 			g->segNormal1     = A.rot.transpose() * face.normal;
 			g->segNormal2     = -(B.rot.transpose() * face.normal);
-			g->segTangent1    = A.rot.transpose() * face.t1;
-			g->segHalfSizes   = Vector2r(face.h1, face.h2) / segmentsPerEdge;
-			for (const auto& sp : segs) {
-				g->segPoint1.push_back(A.rot.transpose() * (sp.pos - A.pos));
-				g->segPoint2.push_back(B.rot.transpose() * (sp.pos - B.pos));
-				g->segArea.push_back(sp.weight);
-			}
-			I->geom = g;
+			g->faceCentre1    = A.rot.transpose() * (face.centre - A.pos);
+			g->faceCentre2    = B.rot.transpose() * (face.centre - B.pos);
+			// Segment half-size vectors along t₁ and t₂ = n × t₁ (n: body 1's outward normal), in both body frames.
+			const Vector3r u = face.h1 / segmentsPerEdge * face.t1, v = face.h2 / segmentsPerEdge * face.normal.cross(face.t1);
+			g->segHalf1u = A.rot.transpose() * u;
+			g->segHalf1v = A.rot.transpose() * v;
+			g->segHalf2u = B.rot.transpose() * u;
+			g->segHalf2v = B.rot.transpose() * v;
+			I->geom      = g;
+			return true;
 		} else {
 			if (!rdem::blocksOverlap<Real>(A, B, touchTolerance(A, B))) return false;
 			RdemGeom probe;
@@ -168,16 +172,6 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	}
 
 	RdemGeom& g = *static_cast<RdemGeom*>(I->geom.get());
-	if (g.nSegments() > 0) {
-		// Bonded: the pair's current frame; the law takes the segments' relative displacements from it
-		// (RdemGeom::segmentKinematics) where it uses them, with no per-segment array written and read back.
-		g.pos1   = A.pos;
-		g.pos2   = B.pos;
-		g.rot1   = A.rot;
-		g.rot2   = B.rot;
-		g.normal = (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized();
-		return true;
-	}
 	g.clearSamples();
 	if (rdem::blocksOverlap<Real>(A, B, touchTolerance(A, B))) sampleContacts(A, state1, B, state2, touchTolerance(A, B), g.samplesPerEdge, g);
 	return true; // a real interaction stays; the law erases it when no sample is in contact

@@ -27,7 +27,7 @@ public:
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(Ig2_RdemBlock_RdemBlock_RdemGeom,IGeomFunctor,R"""(Geometry functor of two :yref:`RdemBlock`, producing :yref:`RdemGeom`.
 
-*Bonding.* Called through ``utils.createInteraction`` (``force=True``) on two blocks whose faces are parallel, aligned and within ``bondGapTolerance``, it cuts the shared rectangle into ``segmentsPerEdge``² segments and fixes their centres as material points of both blocks (paper §3.1, Fig. 2a). Blocks that share no face make ``createInteraction`` fail.
+*Bonding.* Called through ``utils.createInteraction`` (``force=True``) on two blocks whose faces are parallel, aligned and within ``bondGapTolerance``, it cuts the shared rectangle into ``segmentsPerEdge``² segments and fixes their centres as material points of both blocks (paper §3.1, Fig. 2a): the face is stored in both body frames (:yref:`RdemGeom`). Blocks that share no face make ``createInteraction`` fail. Afterwards a bonded pair costs this functor nothing: :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` takes the segments' kinematics from the blocks' states.
 
 *Contact.* For pairs found by the collider (not bonded), a separating-axis test first discards blocks that are apart or only touch; otherwise the pair's normal is the face axis of least overlap (blended within 1 %), and the trapezoid sample grid of each block's faces that face the other is tested against it (depth: distance to travel along the normal to leave the other block; doc/theory.md §4). Bonded pairs are never sampled: their broken segments are the paper's contact springs. A bond whose segments are all broken and whose blocks have slid apart is turned into a sampled contact by :yref:`Law2_RdemGeom_RdemPhys_FaceSprings`.
 

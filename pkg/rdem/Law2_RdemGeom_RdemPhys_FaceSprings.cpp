@@ -109,19 +109,10 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	RdemGeom&    g    = *static_cast<RdemGeom*>(ig.get());
 	RdemPhys&    p    = *static_cast<RdemPhys*>(ip.get());
 	const size_t nSeg = g.nSegments();
-	// The bodies' states are needed only by contact springs (velocities, dashpot caps): looked up on first use. The
-	// centroids of a bonded pair come from its frame, set by the Ig2 in this step (periodic shift included).
-	const State* s1    = nullptr;
-	const State* s2    = nullptr;
-	auto         state = [&]() {
-                if (!s1) {
-                        s1 = Body::byId(I->getId1(), scene)->state.get();
-                        s2 = Body::byId(I->getId2(), scene)->state.get();
-                }
-	};
-	if (nSeg == 0) state();
-	const Vector3r x1          = nSeg > 0 ? g.pos1 : s1->pos;
-	const Vector3r x2          = nSeg > 0 ? g.pos2 : scene->isPeriodic ? Vector3r(s2->pos + scene->cell->hSize * I->cellDist.cast<Real>()) : s2->pos;
+	const State&   s1          = *Body::byId(I->getId1(), scene)->state;
+	const State&   s2          = *Body::byId(I->getId2(), scene)->state;
+	const Vector3r x1          = s1.pos;
+	const Vector3r x2          = scene->isPeriodic ? Vector3r(s2.pos + scene->cell->hSize * I->cellDist.cast<Real>()) : s2.pos;
 	const bool     trackEnergy = scene->trackEnergy;
 	const Real     dt          = scene->dt;
 	Energies       e;
@@ -132,10 +123,7 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
                 t2 += r2.cross(F);
 	};
 	/// Velocity of body 2 relative to body 1 at the point x2 + r2 [m/s].
-	auto relativeVelocity = [&](const Vector3r& r2) {
-		state();
-		return Vector3r(s2->vel + s2->angVel.cross(r2) - s1->vel - s1->angVel.cross(r2 + x2 - x1));
-	};
+	auto relativeVelocity = [&](const Vector3r& r2) { return Vector3r(s2.vel + s2.angVel.cross(r2) - s1.vel - s1.angVel.cross(r2 + x2 - x1)); };
 	/* Stability caps of a contact dashpot (explicit central differences): a dashpot may at most stop, never reverse, the
 	   relative motion of its point within one step, c ≤ share·m_eff/Δt, with m_eff the pair's effective mass at the
 	   point (1/m_eff = Σ 1/m + |r×e|²/I_min over the free blocks, e the direction of the dashpot) and share its part of
@@ -143,9 +131,8 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	   bind where a contact drives a small effective mass, at an edge or a corner of a tumbling block; eq. (13) holds
 	   elsewhere (doc/theory.md §3). */
 	auto dashpotCap = [&](const Vector3r& C, const Vector3r& n, Real share) {
-		state();
 		Real invN = 0, invS = 0;
-		for (const auto& sx : { std::make_pair(s1, x1), std::make_pair(s2, x2) }) {
+		for (const auto& sx : { std::make_pair(&s1, x1), std::make_pair(&s2, x2) }) {
 			if (sx.first->blockedDOFs == State::DOF_ALL) continue;
 			const Vector3r r = C - sx.second;
 			invN += 1 / sx.first->mass + r.cross(n).squaredNorm() / sx.first->inertia.minCoeff();
@@ -157,26 +144,46 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	if (nSeg > 0) {
 		p.segDashpot.resize(nSeg, Vector3r::Zero());
 		bool       anyIntactOrTouching = false;
-		const Real maxSlide            = g.segHalfSizes.minCoeff();
-		// A broken segment is in contact while its material points overlap and face each other.
-		auto           touching = [&](Real un, const Vector3r& us) { return un < 0 && us.norm() < maxSlide; };
-		const Vector3r n        = g.normal;
-		Vector3r       d, r2;           // of a segment: P₂ - P₁ and C - x₂ (RdemGeom::segmentKinematics)
-		Real           contactArea = 0; // of the broken segments in contact: shares of the dashpot caps
-		for (size_t i = 0; i < nSeg; ++i) {
-			if (p.segState[i] == int(rdem::SegmentState::Intact)) continue;
-			g.segmentKinematics(i, d, r2);
+		// A broken segment is in contact while its material points overlap and face each other (slid less than the
+		// smaller half-size of a segment).
+		auto touching = [&](Real un, const Vector3r& us) { return un < 0 && us.norm() < g.segHalfSizes().minCoeff(); };
+		// The segments' kinematics from the blocks' current states (RdemGeom::kinematics, paper eq. 14).
+		const Matrix3r R1 = s1.ori.toRotationMatrix(), R2 = s2.ori.toRotationMatrix();
+		const Vector3r n   = (R1 * g.segNormal1 - R2 * g.segNormal2).normalized();
+		const auto     kin = g.kinematics(R1, R2, x2 - x1);
+		g.normal           = n;
+		const Real A       = g.segmentArea();
+		/* Segment k = i n + j sits at grid coordinates (s, r) = (s_i, s_j) (rdem::segmentCoordinate), where its d = P₂ - P₁
+		   and r₂ = C - x₂ are affine in (s, r) (rdem::BondKinematics). So is the moment of the segment forces about x₂:
+		   Σ r₂ × F = r0 × ΣF + ra × Σ sF + rb × Σ rF, summed from three force sums without a cross product per segment. */
+		const int nEdge       = g.samplesPerEdge;
+		auto      forSegments = [&](auto f) { // f(k, s, r, d)
+                        size_t k = 0;
+                        for (int i = 0; i < nEdge; ++i) {
+				     const Real s = rdem::segmentCoordinate<Real>(i, nEdge);
+				     for (int j = 0; j < nEdge; ++j, ++k) {
+					     const Real r = rdem::segmentCoordinate<Real>(j, nEdge);
+					     f(k, s, r, kin.displacement(s, r));
+                                }
+                        }
+		};
+		Vector3r fSum = Vector3r::Zero(), fs = Vector3r::Zero(), fr = Vector3r::Zero(); // ΣF, Σ sF, Σ rF on body 2 [N]
+		auto     applyAt = [&](const Vector3r& F, Real s, Real r) {
+                        fSum += F;
+                        fs += s * F;
+                        fr += r * F;
+		};
+		Real contactArea = 0; // of the broken segments in contact: shares of the dashpot caps
+		forSegments([&](size_t i, Real, Real, const Vector3r& d) {
+			if (p.segState[i] == int(rdem::SegmentState::Intact)) return;
 			const Real un = d.dot(n);
-			if (touching(un, d - un * n)) contactArea += g.segArea[i];
-		}
+			if (touching(un, d - un * n)) contactArea += A;
+		});
 		// Loop invariants in locals: the stores to the per-segment arrays below could alias them (all doubles).
-		const Matrix3r R1 = g.rot1, R2 = g.rot2;
-		const Vector3r dx = x2 - x1;
-		const Real     kn = p.kn, ks = p.ks, wn = p.weightNormal, ws = p.weightShear;
-		const Real     ft = p.tensileStrength, cohesion = p.cohesion, tanPhi = p.tanFriction;
-		for (size_t i = 0; i < nSeg; ++i) {
-			RdemGeom::segmentKinematics(R1, R2, dx, g.segPoint1[i], g.segPoint2[i], d, r2);
-			const Real     A  = g.segArea[i];
+		const Real kn = p.kn, ks = p.ks, wn = p.weightNormal, ws = p.weightShear;
+		const Real ft = p.tensileStrength, cohesion = p.cohesion, tanPhi = p.tanFriction;
+		const Real cn = wn * kn * A, cs = ws * ks * A; // restoring spring of one segment, with its volume weight [N/m]
+		forSegments([&](size_t i, Real s, Real r, const Vector3r& d) {
 			const Real     un = d.dot(n); // eq. (14): opening positive
 			const Vector3r us = d - un * n;
 			if (p.segState[i] == int(rdem::SegmentState::Intact)) {
@@ -186,12 +193,12 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 				const auto     state   = rdem::restoringSpringState(sigma, tauNorm, ft, cohesion, tanPhi);
 				auto           energy  = [&]() { return A * (wn * sigma * sigma / kn + ws * tau.squaredNorm() / ks) / 2; };
 				if (state == rdem::SegmentState::Intact) {
-					apply(-(wn * sigma * n + ws * tau) * A, r2);
+					applyAt(-(cn * un * n + cs * us), s, r); // -(w_n σ n + w_s τ) A
 					p.segSigma[i]       = sigma;
 					p.segTau[i]         = tauNorm;
 					anyIntactOrTouching = true;
 					if (trackEnergy) e.elastic += energy();
-					continue;
+					return;
 				}
 				p.segState[i] = int(state);
 				if (state == rdem::SegmentState::BrokenTension) tensionBreaks += 1;
@@ -202,11 +209,12 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 			}
 			// Broken: the contact spring of this segment (eqs. 13, 17).
 			if (touching(un, us)) {
+				const Vector3r r2    = kin.arm(s, r);
 				const Real     share = contactArea > 0 ? A / contactArea : Real(1); // a segment broken in this step joins now
 				const Vector3r v     = relativeVelocity(r2);
 				const Vector3r F
 				        = contactForce(p, A, -un, n, v, dt, dashpotCap(x2 + r2, n, share), p.segShear[i], p.segDashpot[i], trackEnergy, e);
-				apply(F, r2);
+				applyAt(F, s, r);
 				p.segSigma[i]       = -F.dot(n) / (p.weightNormal * A);
 				p.segTau[i]         = (F - F.dot(n) * n).norm() / (p.weightShear * A);
 				anyIntactOrTouching = true;
@@ -214,7 +222,9 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 				p.segShear[i] = p.segDashpot[i] = Vector3r::Zero();
 				p.segSigma[i] = p.segTau[i] = 0;
 			}
-		}
+		});
+		f2 += fSum;
+		t2 += kin.r0.cross(fSum) + kin.ra.cross(fs) + kin.rb.cross(fr);
 		if (!anyIntactOrTouching) {
 			// Fully broken and apart: release the bond (the interaction is reset); the collider and contact sampling take over.
 			if (deferForces) activeSetChanges += 1;

@@ -30,16 +30,14 @@ void RdemForceAssembler::rebuild()
 	}
 	for (size_t b = 0; b < nBodies; ++b)
 		first[b + 1] += first[b];
-	sides.assign(first[nBodies], Side { nullptr, false });
+	sides.assign(first[nBodies], Side { nullptr, -1, false });
 	vector<size_t> fill(first.begin(), first.end() - 1);
 	for (const shared_ptr<Interaction>* I : intrs) {
-		sides[fill[size_t((*I)->getId1())]++] = Side { *I, false };
-		sides[fill[size_t((*I)->getId2())]++] = Side { *I, true };
+		sides[fill[size_t((*I)->getId1())]++] = Side { (*I)->phys, (*I)->getId2(), false };
+		sides[fill[size_t((*I)->getId2())]++] = Side { (*I)->phys, (*I)->getId1(), true };
 	}
-	auto other = [](const Side& s) { return s.second ? s.interaction->getId1() : s.interaction->getId2(); };
 	for (size_t b = 0; b < nBodies; ++b)
-		std::sort(
-		        sides.begin() + long(first[b]), sides.begin() + long(first[b + 1]), [&](const Side& x, const Side& y) { return other(x) < other(y); });
+		std::sort(sides.begin() + long(first[b]), sides.begin() + long(first[b + 1]), [](const Side& x, const Side& y) { return x.other < y.other; });
 	builtBodies       = long(nBodies);
 	builtInteractions = long(scene->interactions->size());
 }
@@ -60,8 +58,10 @@ void RdemForceAssembler::action()
 		Vector3r f = Vector3r::Zero(), t = Vector3r::Zero();
 		for (size_t k = first[size_t(id)]; k < first[size_t(id) + 1]; ++k) {
 			const Side& s = sides[k];
-			const auto* p = static_cast<const RdemPhys*>(s.interaction->phys.get());
-			if (!p || p->forceIter != scene->iter) continue; // not deferred, or not computed in this step
+			// Not deferred, or not computed in this step (also a physics the interaction has dropped since the lists were
+			// built: held here, it is still valid, and its forceIter is old).
+			const auto* p = static_cast<const RdemPhys*>(s.phys.get());
+			if (p->forceIter != scene->iter) continue;
 			if (s.second) {
 				f += p->force;
 				t += p->torque2;

@@ -24,10 +24,12 @@ The per-body lists, sorted by the other body's id, are kept from step to step an
 	// clang-format on
 
 private:
-	/// One side of an interaction in a body's list: the interaction, and whether the body is its second body.
+	/// One side of an interaction in a body's list: the interaction's physics (held directly, one pointer less to follow
+	/// each step), the other body, and whether the body is the interaction's second body.
 	struct Side {
-		shared_ptr<Interaction> interaction;
-		bool                    second;
+		shared_ptr<IPhys> phys;
+		Body::id_t        other;
+		bool              second;
 	};
 	vector<size_t> first;       // the list of body b is sides[first[b] .. first[b+1]) (not saved: rebuilt after O.load)
 	vector<Side>   sides;       // all lists, bodies in id order, each sorted by the other body's id

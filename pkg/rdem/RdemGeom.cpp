@@ -5,18 +5,49 @@
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
 #include <pkg/rdem/RdemGeom.hpp>
+#include <stdexcept>
 
 namespace yade {
 
 YADE_PLUGIN((RdemGeom));
 
-vector<Vector3r> RdemGeom::segDispPy() const
+Vector2r RdemGeom::segmentCoordinates(size_t k) const
 {
-	if (normal.squaredNorm() == 0) return {}; // no frame yet (e.g. after O.load, before the next step's Ig2)
+	const int n = samplesPerEdge;
+	return Vector2r(rdem::segmentCoordinate<Real>(int(k) / n, n), rdem::segmentCoordinate<Real>(int(k) % n, n));
+}
+
+vector<Vector3r> RdemGeom::segmentPoints1() const
+{
+	vector<Vector3r> out;
+	if (!bonded) return out;
+	const int n = samplesPerEdge;
+	for (const auto& sp :
+	     rdem::segmentCentres<Real>(faceCentre1, segHalf1u.normalized(), segHalf1v.normalized(), n * segHalf1u.norm(), n * segHalf1v.norm(), n))
+		out.push_back(sp.pos);
+	return out;
+}
+
+vector<Vector3r> RdemGeom::segmentPoints2() const
+{
+	vector<Vector3r> out;
+	if (!bonded) return out;
+	const int n = samplesPerEdge;
+	for (const auto& sp :
+	     rdem::segmentCentres<Real>(faceCentre2, segHalf2u.normalized(), segHalf2v.normalized(), n * segHalf2u.norm(), n * segHalf2v.norm(), n))
+		out.push_back(sp.pos);
+	return out;
+}
+
+vector<Vector3r> RdemGeom::segDispPy(const shared_ptr<State>& s1, const shared_ptr<State>& s2) const
+{
+	if (!s1 || !s2) throw std::invalid_argument("RdemGeom.segDisp: state1 and state2 must be the states of the pair's bodies, not None");
+	const auto       k = kinematics(s1->ori.toRotationMatrix(), s2->ori.toRotationMatrix(), s2->pos - s1->pos);
 	vector<Vector3r> out(nSegments());
-	Vector3r         r2;
-	for (size_t i = 0; i < out.size(); ++i)
-		segmentKinematics(i, out[i], r2);
+	for (size_t i = 0; i < out.size(); ++i) {
+		const Vector2r sr = segmentCoordinates(i);
+		out[i]            = k.displacement(sr[0], sr[1]);
+	}
 	return out;
 }
 

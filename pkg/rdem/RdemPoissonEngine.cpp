@@ -316,6 +316,18 @@ void RdemPoissonEngine::prepare()
 		distinct.emplace(key, stiffness.size());
 		stiffness.push_back(elementStiffness(e));
 	}
+	/* Nodal forces are written per element and summed per body (slots of a body in element order): one addForce per
+	   body instead of one per element node, and a sum whose order does not depend on the number of threads. */
+	nodalForce.assign(8 * nEl, Vector3r::Zero());
+	nodeFirst.assign(scene->bodies->size() + 1, 0);
+	for (Body::id_t id : nodes)
+		++nodeFirst[size_t(id) + 1];
+	for (size_t b = 0; b + 1 < nodeFirst.size(); ++b)
+		nodeFirst[b + 1] += nodeFirst[b];
+	nodeSlot.assign(nodes.size(), 0);
+	vector<size_t> fill(nodeFirst.begin(), nodeFirst.end() - 1);
+	for (size_t slot = 0; slot < nodes.size(); ++slot)
+		nodeSlot[fill[size_t(nodes[slot])]++] = slot;
 	bonds.assign(12 * nEl, shared_ptr<Interaction>());
 	scalesBroken = -1;
 	for (size_t e = 0; e < nEl; ++e)
@@ -374,7 +386,11 @@ void RdemPoissonEngine::action()
 #endif
 	for (long e = 0; e < nEl; ++e) {
 		const Real s = scale[size_t(e)], sPrev = scalePrev[size_t(e)];
-		if (s <= 0 && (sPrev <= 0 || !trackEnergy)) continue; // released, and no release energy to book
+		Vector3r*  F = &nodalForce[8 * size_t(e)];
+		if (s <= 0 && (sPrev <= 0 || !trackEnergy)) { // released, and no release energy to book
+			std::fill(F, F + 8, Vector3r::Zero());
+			continue;
+		}
 		rdem::Nodes8<Real> X, x;
 		for (size_t a = 0; a < 8; ++a) {
 			X[a] = refPos[8 * size_t(e) + a];
@@ -387,9 +403,19 @@ void RdemPoissonEngine::action()
 			energy += s * u.dot(Ku) / 2;
 			released += (sPrev - s) * u.dot(Ku) / 2;
 		}
-		if (s <= 0) continue;
 		for (size_t a = 0; a < 8; ++a)
-			scene->forces.addForce(nodes[8 * size_t(e) + a], Vector3r(-s * (R * Ku.segment<3>(3 * long(a)))));
+			F[a] = s > 0 ? Vector3r(-s * (R * Ku.segment<3>(3 * long(a)))) : Vector3r::Zero();
+	}
+	const long nBodies = long(nodeFirst.size()) - 1;
+#ifdef YADE_OPENMP
+#pragma omp parallel for schedule(static)
+#endif
+	for (long b = 0; b < nBodies; ++b) {
+		if (nodeFirst[size_t(b)] == nodeFirst[size_t(b) + 1]) continue;
+		Vector3r f = Vector3r::Zero();
+		for (size_t k = nodeFirst[size_t(b)]; k < nodeFirst[size_t(b) + 1]; ++k)
+			f += nodalForce[nodeSlot[k]];
+		scene->forces.addForce(Body::id_t(b), f);
 	}
 	scalePrev = scale;
 	if (trackEnergy) {

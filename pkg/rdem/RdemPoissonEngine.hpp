@@ -67,6 +67,9 @@ private:
 	vector<size_t>                  stiffnessOf; // per element, its K_p in stiffness (not saved)
 	vector<shared_ptr<Interaction>> bonds;     // the 12 bonds of each element, looked up once (not saved)
 	vector<Real>                    scales;    // force scale of each element, see elementScales (not saved)
+	vector<Vector3r>                nodalForce; // this step's force of each element on each of its nodes, 8 per element (not saved)
+	vector<size_t>                  nodeFirst;  // the nodal forces on body b are nodalForce[nodeSlot[k]], k in [nodeFirst[b], nodeFirst[b+1]) (not saved)
+	vector<size_t>                  nodeSlot;
 	long                            scalesBroken = -1; // broken springs in the scene when scales were computed
 	long                            scalesIntrs  = -1; // number of interactions then
 	void                            prepare();

@@ -95,10 +95,11 @@ Real RdemTimeStepper::estimate(Scene* sc) const
 		const State& s1 = *Body::byId(I->getId1(), sc)->state;
 		const State& s2 = *Body::byId(I->getId2(), sc)->state;
 		if (g->nSegments() > 0) bonded[size_t(I->getId1())] = bonded[size_t(I->getId2())] = 1;
-		for (size_t i = 0; i < g->nSegments(); ++i) {
-			const Vector3r point = s1.pos + s1.ori * g->segPoint1[i];
-			addPoint(omega2, s1, I->getId1(), point, g->normal.squaredNorm() > 0 ? g->normal : Vector3r(s1.ori * g->segNormal1), g->segArea[i], *p);
-			addPoint(omega2, s2, I->getId2(), point, g->normal.squaredNorm() > 0 ? g->normal : Vector3r(s1.ori * g->segNormal1), g->segArea[i], *p);
+		const Vector3r normal = g->normal.squaredNorm() > 0 ? g->normal : Vector3r(s1.ori * g->segNormal1);
+		for (const Vector3r& p1 : g->segmentPoints1()) {
+			const Vector3r point = s1.pos + s1.ori * p1;
+			addPoint(omega2, s1, I->getId1(), point, normal, g->segmentArea(), *p);
+			addPoint(omega2, s2, I->getId2(), point, normal, g->segmentArea(), *p);
 		}
 		for (size_t k = 0; k < g->sampleKey.size(); ++k) {
 			addPoint(omega2, s1, I->getId1(), g->samplePoint[k], g->sampleNormal[k], g->sampleArea[k], *p);

@@ -161,4 +161,84 @@ TEST(SegmentGrid, FaceSamplePointsIntoAReusedBufferEqualsTheReturnedOnes)
 	}
 }
 
+// A bonded face in the frames of its two blocks, made from the face in global coordinates at bonding time.
+struct BondedFace {
+	Eigen::Matrix3d R1, R2; // rotations of the blocks at bonding (body to global)
+	V3              x1, x2; // their centroids [m]
+	V3              c1, a1, b1, c2, a2, b2;
+};
+
+BondedFace bondedFace()
+{
+	const Face f = tiltedFace();
+	BondedFace b;
+	const int  n = 2;
+	b.R1         = Eigen::AngleAxisd(0.3, V3(0, 1, 1).normalized()).toRotationMatrix();
+	b.R2         = Eigen::AngleAxisd(-1.1, V3(2, -1, 0.3).normalized()).toRotationMatrix();
+	b.x1         = f.c - 0.2 * f.t1.cross(f.t2);
+	b.x2         = f.c + 0.3 * f.t1.cross(f.t2);
+	const V3 a = f.h1 / n * f.t1, c = f.h2 / n * f.t2; // segment half-size vectors (global)
+	b.c1 = b.R1.transpose() * (f.c - b.x1);
+	b.a1 = b.R1.transpose() * a;
+	b.b1 = b.R1.transpose() * c;
+	b.c2 = b.R2.transpose() * (f.c - b.x2);
+	b.a2 = b.R2.transpose() * a;
+	b.b2 = b.R2.transpose() * c;
+	return b;
+}
+
+TEST(SegmentGrid, SegmentCoordinatesAreTheCentresOfSegmentCentres)
+{
+	// segmentCentres puts segment (i, j) at c + s h t1 + r h' t2 with h, h' the segment half-sizes: same grid, to round-off.
+	const Face f = tiltedFace();
+	for (int n = 1; n <= 4; ++n) {
+		const auto pts = rdem::segmentCentres<double>(f.c, f.t1, f.t2, f.h1, f.h2, n);
+		for (int i = 0; i < n; ++i)
+			for (int j = 0; j < n; ++j) {
+				const V3 p = f.c + rdem::segmentCoordinate<double>(i, n) * f.h1 / n * f.t1
+				        + rdem::segmentCoordinate<double>(j, n) * f.h2 / n * f.t2;
+				EXPECT_NEAR((pts[size_t(i * n + j)].pos - p).norm(), 0, tol * f.c.norm()) << "n = " << n << ", i = " << i << ", j = " << j;
+			}
+	}
+	EXPECT_EQ(rdem::segmentCoordinate<double>(0, 2), -1);
+	EXPECT_EQ(rdem::segmentCoordinate<double>(1, 2), 1);
+	EXPECT_EQ(rdem::segmentCoordinate<double>(1, 3), 0);
+}
+
+TEST(SegmentGrid, BondKinematicsEqualsTheMaterialPointsMovedOneByOne)
+{
+	// Blocks moved and rotated independently: d = P₂ - P₁ and r₂ = (P₁ + P₂)/2 - x₂ of each segment, computed from its
+	// two material points one by one, against the affine form. Coordinates O(1) m, a few products: 1e-14 m.
+	const BondedFace      b  = bondedFace();
+	const Eigen::Matrix3d R1 = Eigen::AngleAxisd(0.05, V3(1, 0, 0)).toRotationMatrix() * b.R1;
+	const Eigen::Matrix3d R2 = Eigen::AngleAxisd(-0.08, V3(0.2, 1, 0.4).normalized()).toRotationMatrix() * b.R2;
+	const V3              x1 = b.x1 + V3(0.01, -0.02, 0.005), x2 = b.x2 + V3(-0.003, 0.004, 0.02);
+	const auto            kin = rdem::bondKinematics<double>(R1, R2, x2 - x1, b.c1, b.a1, b.b1, b.c2, b.a2, b.b2);
+	for (double s : { -1.0, 1.0, 0.0, 0.5 })
+		for (double r : { -1.0, 1.0, -0.25 }) {
+			const V3 P1 = x1 + R1 * (b.c1 + s * b.a1 + r * b.b1), P2 = x2 + R2 * (b.c2 + s * b.a2 + r * b.b2);
+			EXPECT_NEAR((kin.displacement(s, r) - (P2 - P1)).norm(), 0, 1e-14) << "s = " << s << ", r = " << r;
+			EXPECT_NEAR((kin.arm(s, r) - ((P1 + P2) / 2 - x2)).norm(), 0, 1e-14) << "s = " << s << ", r = " << r;
+		}
+	// The points have moved apart by centimetres: the test would see a sign or axis mix-up.
+	EXPECT_GT(kin.displacement(1, -1).norm(), 1e-3);
+}
+
+TEST(SegmentGrid, BondKinematicsOfARigidMotionIsZero)
+{
+	// The pair rotated by 1 rad and moved as one body: every segment's d is zero to round-off (1e-15 relative of
+	// coordinates O(1) m), and r₂ is the common material point's offset from x₂.
+	const BondedFace      b  = bondedFace();
+	const Eigen::Matrix3d Q  = Eigen::AngleAxisd(1.0, V3(1, 2, 3).normalized()).toRotationMatrix();
+	const V3              u  = V3(0.5, -1, 2);
+	const V3              x1 = Q * b.x1 + u, x2 = Q * b.x2 + u;
+	const auto            kin = rdem::bondKinematics<double>(Q * b.R1, Q * b.R2, x2 - x1, b.c1, b.a1, b.b1, b.c2, b.a2, b.b2);
+	for (double s : { -1.0, 1.0 })
+		for (double r : { -1.0, 1.0 }) {
+			EXPECT_NEAR(kin.displacement(s, r).norm(), 0, 1e-14) << "s = " << s << ", r = " << r;
+			const V3 P = x1 + Q * b.R1 * (b.c1 + s * b.a1 + r * b.b1);
+			EXPECT_NEAR((kin.arm(s, r) - (P - x2)).norm(), 0, 1e-14) << "s = " << s << ", r = " << r;
+		}
+}
+
 } // namespace
