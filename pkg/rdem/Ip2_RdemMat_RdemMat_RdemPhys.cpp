@@ -43,10 +43,12 @@ void Ip2_RdemMat_RdemMat_RdemPhys::go(const shared_ptr<Material>& m1, const shar
 	p->cohesion        = math::min(a.cohesion, b.cohesion);
 	p->tanFriction     = math::tan(math::min(a.frictionAngle, b.frictionAngle));
 	const size_t nSeg  = g.nSegments();
+	// The arrays every step of an intact bond touches first, so that they are allocated next to each other.
 	p->segState.assign(nSeg, int(rdem::SegmentState::Intact));
-	p->segShear.assign(nSeg, Vector3r::Zero());
 	p->segSigma.assign(nSeg, 0);
 	p->segTau.assign(nSeg, 0);
+	p->segShear.assign(nSeg, Vector3r::Zero());
+	p->segDashpot.assign(nSeg, Vector3r::Zero());
 	I->phys = p;
 }
 

@@ -157,14 +157,12 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		   and r₂ = C - x₂ are affine in (s, r) (rdem::BondKinematics). So is the moment of the segment forces about x₂:
 		   Σ r₂ × F = r0 × ΣF + ra × Σ sF + rb × Σ rF, summed from three force sums without a cross product per segment. */
 		const int nEdge       = g.samplesPerEdge;
-		auto      forSegments = [&](auto f) { // f(k, s, r, d)
+		auto      forSegments = [&](auto f) { // f(k, s, r)
                         size_t k = 0;
                         for (int i = 0; i < nEdge; ++i) {
 				     const Real s = rdem::segmentCoordinate<Real>(i, nEdge);
-				     for (int j = 0; j < nEdge; ++j, ++k) {
-					     const Real r = rdem::segmentCoordinate<Real>(j, nEdge);
-					     f(k, s, r, kin.displacement(s, r));
-                                }
+				     for (int j = 0; j < nEdge; ++j, ++k)
+                                        f(k, s, rdem::segmentCoordinate<Real>(j, nEdge));
                         }
 		};
 		Vector3r fSum = Vector3r::Zero(), fs = Vector3r::Zero(), fr = Vector3r::Zero(); // ΣF, Σ sF, Σ rF on body 2 [N]
@@ -174,16 +172,18 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
                         fr += r * F;
 		};
 		Real contactArea = 0; // of the broken segments in contact: shares of the dashpot caps
-		forSegments([&](size_t i, Real, Real, const Vector3r& d) {
+		forSegments([&](size_t i, Real s, Real r) {
 			if (p.segState[i] == int(rdem::SegmentState::Intact)) return;
-			const Real un = d.dot(n);
+			const Vector3r d  = kin.displacement(s, r);
+			const Real     un = d.dot(n);
 			if (touching(un, d - un * n)) contactArea += A;
 		});
 		// Loop invariants in locals: the stores to the per-segment arrays below could alias them (all doubles).
 		const Real kn = p.kn, ks = p.ks, wn = p.weightNormal, ws = p.weightShear;
 		const Real ft = p.tensileStrength, cohesion = p.cohesion, tanPhi = p.tanFriction;
 		const Real cn = wn * kn * A, cs = ws * ks * A; // restoring spring of one segment, with its volume weight [N/m]
-		forSegments([&](size_t i, Real s, Real r, const Vector3r& d) {
+		forSegments([&](size_t i, Real s, Real r) {
+			const Vector3r d  = kin.displacement(s, r);
 			const Real     un = d.dot(n); // eq. (14): opening positive
 			const Vector3r us = d - un * n;
 			if (p.segState[i] == int(rdem::SegmentState::Intact)) {

@@ -28,6 +28,10 @@ Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact s
 		((Real,tanFriction,0,,"$\\tan\\phi$ of the joint."))
 		((Real,weightNormal,1,,"Volume weight $w_n$ of the normal restoring and contact springs of the segments (1, or set by the consistent formulation of :yref:`RdemPoissonEngine` at boundaries); forces are $w_n\\sigma A$, failure stresses stay $\\sigma$."))
 		((Real,weightShear,1,,"Volume weight $w_s$ of the shear springs, as ``weightNormal``."))
+		((Vector3r,force,Vector3r::Zero(),,"Total force exerted by body 1 on body 2 in the last step (global) [N]."))
+		((Vector3r,torque1,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"Torque on body 1 about its centroid in the last step (global) [N·m]; kept for :yref:`RdemForceAssembler`."))
+		((Vector3r,torque2,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"Torque on body 2 about its centroid in the last step (global) [N·m]."))
+		((long,forceIter,-1,(Attr::noSave|Attr::readonly),"Iteration whose ``force``, ``torque1``, ``torque2`` wait for :yref:`RdemForceAssembler` (-1: applied by the law itself)."))
 		((vector<int>,segState,,,"Per bonded segment: 0 intact, 1 broken in tension (eq. 15), 2 broken in shear (eq. 16)."))
 		((vector<Vector3r>,segShear,,,"Per bonded segment: elastic shear elongation of the contact spring after breakage (global) [m]."))
 		((vector<Real>,segSigma,,,"Per bonded segment: normal stress of the last step, positive in tension [Pa]."))
@@ -37,10 +41,6 @@ Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact s
 		((vector<Vector3r>,sampleDashpot,,,"Per contact sample key: dashpot force of the last step, on body 2 (global) [N]; for the energy balance."))
 		((vector<Real>,sampleOffset,,,"Per contact sample key: depth from which its normal spring counts, the least depth since its contact began (the depth at which it entered, if it entered deep) [m]."))
 		((vector<int>,sampleActive,,,"Per contact sample key: 1 if it was in contact in the last step."))
-		((Vector3r,force,Vector3r::Zero(),,"Total force exerted by body 1 on body 2 in the last step (global) [N]."))
-		((Vector3r,torque1,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"Torque on body 1 about its centroid in the last step (global) [N·m]; kept for :yref:`RdemForceAssembler`."))
-		((Vector3r,torque2,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"Torque on body 2 about its centroid in the last step (global) [N·m]."))
-		((long,forceIter,-1,(Attr::noSave|Attr::readonly),"Iteration whose ``force``, ``torque1``, ``torque2`` wait for :yref:`RdemForceAssembler` (-1: applied by the law itself)."))
 		,
 		/* ctor */ createIndex();
 		,
