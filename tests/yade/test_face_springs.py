@@ -85,6 +85,32 @@ class TwoBlocks(unittest.TestCase):
 		# round-off of positions of magnitude 0.3 m: 1e-16 relative -> |d| ~ 1e-17 m, force ~ KN*AREA*1e-17 ~ 1e-8 N
 		self.assertLess(O.forces.f(1).norm(), KN * AREA * 1e-15)
 
+	def testSegmentGeometry(self):
+		# The 2x2 segments of the shared face x = 2 A_HALF: centres at (2a, a ± a/2, a ± a/2) with a = A_HALF, the same
+		# material points seen from both blocks, areas summing to the face; then the relative displacement of each
+		# segment's points after moving B by u and turning it by theta about x through its centroid (rigid-body
+		# kinematics by hand). Round-off of coordinates of 0.03 m: 1e-17 m; 1e-15 m is 100 times that.
+		O.step()
+		g = O.interactions[0, 1].geom
+		a = A_HALF
+		self.assertTrue(g.bonded)
+		self.assertEqual(len(g.segPoint1), 4)
+		self.assertAlmostEqual(sum(g.segArea) / AREA, 1, delta=1e-14)
+		s1, s2 = O.bodies[0].state, O.bodies[1].state
+		expected = sorted((round(2 * a, 9), round(a + dy, 9), round(a + dz, 9)) for dy in (-a / 2, a / 2) for dz in (-a / 2, a / 2))
+		found = sorted(tuple(round(x, 9) for x in s1.pos + s1.ori * p) for p in g.segPoint1)
+		self.assertEqual(found, expected)
+		for p1, p2 in zip(g.segPoint1, g.segPoint2):
+			self.assertLess((s1.pos + s1.ori * p1 - (s2.pos + s2.ori * p2)).norm(), 1e-15)
+		u, theta = Vector3(1e-7, -2e-7, 3e-7), 1e-4
+		s2.pos = s2.refPos + u
+		s2.ori = Quaternion(Vector3(1, 0, 0), theta)
+		for p1, p2, d in zip(g.segPoint1, g.segPoint2, g.segDisp(s1, s2)):
+			arm = s1.pos + s1.ori * p1 - s2.refPos  # the point relative to B's centroid before the motion
+			moved = s2.refPos + u + Quaternion(Vector3(1, 0, 0), theta) * arm
+			self.assertLess((d - (moved - (s1.pos + s1.ori * p1))).norm(), 1e-15)
+			self.assertGreater(d.norm(), 1e-7)  # the test sees the motion
+
 
 if __name__ == '__main__':
 	harness.run(TwoBlocks)
