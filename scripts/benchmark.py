@@ -22,6 +22,9 @@ Cases
                 thread, with the memory per block (peak resident set after building, over the block count);
     instructions  the paper scene's instructions per block-step under valgrind's callgrind: the one figure that does
                 not move with the machine's load (needs valgrind).
+    misses      memory traffic of the 22³ cube (11 616 blocks, beyond this machine's 32 MB L3 cache): last-level data
+                cache misses per block-step under callgrind's cache simulation with a 32 MB, 16-way last level, over 11
+                steps (needs valgrind; about 5 minutes; not in the default plan).
 
 Expected result
     Figures of this machine in doc/benchmark.md; doc/performance.md discusses them and the profile.
@@ -169,33 +172,40 @@ def runCrack(spec):
 
 
 def runCount(spec):
-	"""The paper scene, built and stepped spec['steps'] times under callgrind (see countInstructions)."""
+	"""The paper scene (or a cube of spec['blocks'] per edge, time step from RdemTimeStepper), built and stepped
+	spec['steps'] times under callgrind (see countInstructions)."""
 	from yade import O
 	from rdem.scenes import CompressionTest
-	CompressionTest()
+	blocks = spec.get('blocks', 10)
+	CompressionTest(blocksPerEdge=blocks) if blocks == 10 else CompressionTest(blocksPerEdge=blocks, dt=None)
 	O.run(spec['steps'], True)
 	return dict(bodies=len(O.bodies), steps=spec['steps'])
 
 
-def countInstructions(steps=200):
-	"""Instructions per block-step of the paper scene, counted by valgrind's callgrind over the time steps only
-	(yade::Scene::moveToNextTimeStep): unlike seconds, the same on every run of the same build, whatever else the machine
-	does. A fresh process under valgrind, one thread; about a minute."""
+def countInstructions(steps=200, blocks=10, cacheSim=False):
+	"""Instructions per block-step of the paper scene (or of a cube of `blocks` per edge), counted by valgrind's callgrind
+	over the time steps only (yade::Scene::moveToNextTimeStep): unlike seconds, the same on every run of the same build,
+	whatever else the machine does. With cacheSim, also the last-level data cache misses (reads + writes) per block-step,
+	for a 32 MB, 16-way, 64-byte-line last level like this machine's L3. A fresh process under valgrind, one thread."""
 	import re
 	import subprocess
-	spec = dict(kind='count', steps=steps)
-	cmd = [
-	    'valgrind', '--tool=callgrind', '--trace-children=yes', '--callgrind-out-file=/dev/null', '--collect-atstart=no',
-	    '--toggle-collect=yade::Scene::moveToNextTimeStep()', rdem.batch.LAUNCHER, '-j1', '-n', '-x', sys.argv[0], '--child',
-	    json.dumps(spec)
-	]
+	spec = dict(kind='count', steps=steps, blocks=blocks)
+	cmd = ['valgrind', '--tool=callgrind', '--trace-children=yes', '--callgrind-out-file=/dev/null', '--collect-atstart=no']
+	if cacheSim:
+		cmd += ['--cache-sim=yes', '--LL=33554432,16,64']
+	cmd += ['--toggle-collect=yade::Scene::moveToNextTimeStep()', rdem.batch.LAUNCHER, '-j1', '-n', '-x', sys.argv[0], '--child', json.dumps(spec)]
 	proc = subprocess.run(cmd, env=dict(os.environ, OMP_NUM_THREADS='1'), stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
-	counts = [int(c.replace(',', '')) for c in re.findall(r'Collected : ([0-9,]+)', proc.stdout)]
+	# "Collected : Ir [Dr Dw I1mr D1mr D1mw ILmr DLmr DLmw]" of the process that ran the steps (the one with most Ir)
+	collected = [[int(c) for c in line.split()] for line in re.findall(r'Collected : ([0-9 ]+)', proc.stdout.replace(',', ''))]
 	report = [l for l in proc.stdout.splitlines() if l.startswith(rdem.batch.MARKER)]
-	if not counts or not report:
+	if not collected or not report:
 		raise RuntimeError('callgrind run failed:\n%s' % proc.stdout[-3000:])
+	events = max(collected, key=lambda c: c[0])
 	res = json.loads(report[-1][len(rdem.batch.MARKER):])
-	return dict(instructions=max(counts), steps=steps, bodies=res['bodies'], perBlockStep=max(counts) / steps / res['bodies'])
+	out = dict(instructions=events[0], steps=steps, bodies=res['bodies'], perBlockStep=events[0] / steps / res['bodies'])
+	if cacheSim:
+		out['llMissesPerBlockStep'] = (events[7] + events[8]) / steps / res['bodies']
+	return out
 
 
 def child(spec):
@@ -253,6 +263,11 @@ if 'instructions' in opts.cases:
 	print('benchmark: instructions per block-step under callgrind (about a minute) ...', flush=True)
 	count = countInstructions()
 	print('    %.0f instructions per block-step' % count['perBlockStep'], flush=True)
+misses = None
+if 'misses' in opts.cases:
+	print('benchmark: last-level cache misses per block-step of the 22³ cube under callgrind (about 5 minutes) ...', flush=True)
+	misses = countInstructions(steps=11, blocks=22, cacheSim=True)
+	print('    %.1f last-level misses (%.0f instructions) per block-step' % (misses['llMissesPerBlockStep'], misses['perBlockStep']), flush=True)
 
 try:
 	load = os.getloadavg()[0]
@@ -282,6 +297,14 @@ if count:
 	    'The paper scene, %d steps under `valgrind --tool=callgrind`, counting only inside `yade::Scene::moveToNextTimeStep` (one thread): '
 	    '**%.0f instructions per block-step** (%.3g in all). Unlike the timings this figure is the same on every run of the same build; it moves only '
 	    'when the code does.' % (count['steps'], count['perBlockStep'], count['instructions']), ''
+	]
+if misses:
+	lines += [
+	    '## Memory traffic beyond the cache (deterministic)', '',
+	    'The 22³ cube (%d blocks), %d steps under `valgrind --tool=callgrind --cache-sim=yes --LL=33554432,16,64` (a 32 MB last level like this '
+	    'machine\'s L3), one thread: **%.1f last-level data cache misses per block-step** (reads and writes; %.1f kB from memory per block-step), '
+	    '%.0f instructions per block-step.' % (misses['bodies'], misses['steps'], misses['llMissesPerBlockStep'], misses['llMissesPerBlockStep'] * 64 / 1024,
+	                                            misses['perBlockStep']), ''
 	]
 crack = [r for r in results if r['section'] == 'crack']
 if crack:
