@@ -17,27 +17,20 @@ Vector2r RdemGeom::segmentCoordinates(size_t k) const
 	return Vector2r(rdem::segmentCoordinate<Real>(int(k) / n, n), rdem::segmentCoordinate<Real>(int(k) % n, n));
 }
 
-vector<Vector3r> RdemGeom::segmentPoints1() const
-{
-	vector<Vector3r> out;
-	if (!bonded) return out;
-	const int n = samplesPerEdge;
-	for (const auto& sp :
-	     rdem::segmentCentres<Real>(faceCentre1, segHalf1u.normalized(), segHalf1v.normalized(), n * segHalf1u.norm(), n * segHalf1v.norm(), n))
-		out.push_back(sp.pos);
-	return out;
+namespace {
+	/// Centres of the n×n segments of a face with centre c and segment half-size vectors u, v (one body frame) [m].
+	vector<Vector3r> segmentGrid(const Vector3r& c, const Vector3r& u, const Vector3r& v, int n)
+	{
+		vector<Vector3r> out;
+		for (const auto& sp : rdem::segmentCentres<Real>(c, u.normalized(), v.normalized(), n * u.norm(), n * v.norm(), n))
+			out.push_back(sp.pos);
+		return out;
+	}
 }
 
-vector<Vector3r> RdemGeom::segmentPoints2() const
-{
-	vector<Vector3r> out;
-	if (!bonded) return out;
-	const int n = samplesPerEdge;
-	for (const auto& sp :
-	     rdem::segmentCentres<Real>(faceCentre2, segHalf2u.normalized(), segHalf2v.normalized(), n * segHalf2u.norm(), n * segHalf2v.norm(), n))
-		out.push_back(sp.pos);
-	return out;
-}
+vector<Vector3r> RdemGeom::segmentPoints1() const { return bonded ? segmentGrid(faceCentre1, segHalf1u, segHalf1v, samplesPerEdge) : vector<Vector3r>(); }
+
+vector<Vector3r> RdemGeom::segmentPoints2() const { return bonded ? segmentGrid(faceCentre2, segHalf2u, segHalf2v, samplesPerEdge) : vector<Vector3r>(); }
 
 vector<Vector3r> RdemGeom::segDispPy(const shared_ptr<State>& s1, const shared_ptr<State>& s2) const
 {
