@@ -163,10 +163,10 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 			probe.samplesPerEdge = segmentsPerEdge;
 			sampleContacts(A, state1, B, state2, touchTolerance(A, B), segmentsPerEdge, probe);
 			if (probe.sampleKey.empty()) return false;
-			auto g            = shared_ptr<RdemGeom>(new RdemGeom(probe));
-			g->ell1           = faceDistance(A, probe.sampleNormal[0]);
-			g->ell2           = faceDistance(B, probe.sampleNormal[0]);
-			I->geom           = g;
+			auto g  = shared_ptr<RdemGeom>(new RdemGeom(probe));
+			g->ell1 = faceDistance(A, probe.sampleNormal[0]);
+			g->ell2 = faceDistance(B, probe.sampleNormal[0]);
+			I->geom = g;
 			return true; // samples of this step are already in place
 		}
 	}

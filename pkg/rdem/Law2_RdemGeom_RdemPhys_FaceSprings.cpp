@@ -106,9 +106,9 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::takeActiveSetChanged(const Scene* scene
 
 bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
-	RdemGeom&    g    = *static_cast<RdemGeom*>(ig.get());
-	RdemPhys&    p    = *static_cast<RdemPhys*>(ip.get());
-	const size_t nSeg = g.nSegments();
+	RdemGeom&      g           = *static_cast<RdemGeom*>(ig.get());
+	RdemPhys&      p           = *static_cast<RdemPhys*>(ip.get());
+	const size_t   nSeg        = g.nSegments();
 	const State&   s1          = *Body::byId(I->getId1(), scene)->state;
 	const State&   s2          = *Body::byId(I->getId2(), scene)->state;
 	const Vector3r x1          = s1.pos;
@@ -143,7 +143,7 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	};
 	if (nSeg > 0) {
 		p.segDashpot.resize(nSeg, Vector3r::Zero());
-		bool       anyIntactOrTouching = false;
+		bool anyIntactOrTouching = false;
 		// A broken segment is in contact while its material points overlap and face each other (slid less than the
 		// smaller half-size of a segment).
 		auto touching = [&](Real un, const Vector3r& us) { return un < 0 && us.norm() < g.segHalfSizes().minCoeff(); };
@@ -156,20 +156,22 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		/* Segment k = i n + j sits at grid coordinates (s, r) = (s_i, s_j) (rdem::segmentCoordinate), where its d = P₂ - P₁
 		   and r₂ = C - x₂ are affine in (s, r) (rdem::BondKinematics). So is the moment of the segment forces about x₂:
 		   Σ r₂ × F = r0 × ΣF + ra × Σ sF + rb × Σ rF, summed from three force sums without a cross product per segment. */
-		const int nEdge       = g.samplesPerEdge;
-		auto      forSegments = [&](auto f) { // f(k, s, r)
-                        size_t k = 0;
-                        for (int i = 0; i < nEdge; ++i) {
-				     const Real s = rdem::segmentCoordinate<Real>(i, nEdge);
-				     for (int j = 0; j < nEdge; ++j, ++k)
-                                        f(k, s, rdem::segmentCoordinate<Real>(j, nEdge));
-                        }
+		const int nEdge = g.samplesPerEdge;
+
+		auto forSegments = [&](auto f) { // f(k, s, r)
+			size_t k = 0;
+			for (int i = 0; i < nEdge; ++i) {
+				const Real s = rdem::segmentCoordinate<Real>(i, nEdge);
+				for (int j = 0; j < nEdge; ++j, ++k)
+					f(k, s, rdem::segmentCoordinate<Real>(j, nEdge));
+			}
 		};
 		Vector3r fSum = Vector3r::Zero(), fs = Vector3r::Zero(), fr = Vector3r::Zero(); // ΣF, Σ sF, Σ rF on body 2 [N]
-		auto     applyAt = [&](const Vector3r& F, Real s, Real r) {
-                        fSum += F;
-                        fs += s * F;
-                        fr += r * F;
+
+		auto applyAt = [&](const Vector3r& F, Real s, Real r) {
+			fSum += F;
+			fs += s * F;
+			fr += r * F;
 		};
 		Real contactArea = 0; // of the broken segments in contact: shares of the dashpot caps
 		forSegments([&](size_t i, Real s, Real r) {
