@@ -50,6 +50,13 @@ void RdemForceAssembler::action()
 		rebuild();
 	builtIter          = scene->iter;
 	const long nBodies = long(scene->bodies->size());
+	if (nBodies == 0) return;
+	/* Each body's sum goes straight into the container's synced arrays (addForceUnsynced), which sync() adds the
+	   per-thread contributions to: every body is written by one thread only. ForceContainer::addForce writes the
+	   container's shared flag and per-thread maximum id at every call, a cache line both threads write; its cost did
+	   not fall with a second thread (doc/performance.md). The sizes are made to cover every body first. */
+	scene->forces.addMaxId(Body::id_t(nBodies - 1));
+	scene->forces.syncSizesOfContainers();
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static)
 #endif
@@ -70,8 +77,8 @@ void RdemForceAssembler::action()
 				t += p->torque1;
 			}
 		}
-		scene->forces.addForce(Body::id_t(id), f);
-		scene->forces.addTorque(Body::id_t(id), t);
+		scene->forces.addForceUnsynced(Body::id_t(id), f);
+		scene->forces.addTorqueUnsynced(Body::id_t(id), t);
 	}
 }
 

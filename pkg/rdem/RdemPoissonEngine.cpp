@@ -406,7 +406,12 @@ void RdemPoissonEngine::action()
 		for (size_t a = 0; a < 8; ++a)
 			F[a] = s > 0 ? Vector3r(-s * (R * Ku.segment<3>(3 * long(a)))) : Vector3r::Zero();
 	}
+	// Summed per body straight into the container's synced arrays, as RdemForceAssembler does (see there).
 	const long nBodies = long(nodeFirst.size()) - 1;
+	if (nBodies > 0) {
+		scene->forces.addMaxId(Body::id_t(nBodies - 1));
+		scene->forces.syncSizesOfContainers();
+	}
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static)
 #endif
@@ -415,7 +420,7 @@ void RdemPoissonEngine::action()
 		Vector3r f = Vector3r::Zero();
 		for (size_t k = nodeFirst[size_t(b)]; k < nodeFirst[size_t(b) + 1]; ++k)
 			f += nodalForce[nodeSlot[k]];
-		scene->forces.addForce(Body::id_t(b), f);
+		scene->forces.addForceUnsynced(Body::id_t(b), f);
 	}
 	scalePrev = scale;
 	if (trackEnergy) {
