@@ -4,10 +4,11 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
-#include <pkg/rdem/RdemForceAssembler.hpp>
 #include <core/Scene.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
+#include <pkg/rdem/RdemForceAssembler.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
+#include <pkg/rdem/math/GroupByKey.hpp>
 #include <algorithm>
 
 namespace yade {
@@ -16,30 +17,44 @@ YADE_PLUGIN((RdemForceAssembler));
 
 void RdemForceAssembler::rebuild()
 {
-	/* Counting sort by body id (one pass to count each body's sides, one to place them), then each body's short list
-	   sorted by the other body's id: O(sides) plus a few comparisons per side, instead of one sort of all sides (the
-	   rebuild runs at nearly every step once contacts come and go, doc/performance.md). */
-	const size_t                           nBodies = scene->bodies->size();
-	vector<const shared_ptr<Interaction>*> intrs; // the real interactions of the law, in container order
-	first.assign(nBodies + 1, 0);
+	/* Sides grouped by body (rdem::groupByKey, a counting sort), then each body's short list sorted by the other body's
+	   id: O(sides) plus a few comparisons per side, instead of one sort of all sides (the rebuild runs at nearly every
+	   step once contacts come and go, doc/performance.md). Side 2k is interaction k seen from its first body, 2k+1
+	   from its second. */
+	const size_t               nBodies = scene->bodies->size();
+	vector<const Interaction*> intrs; // the real interactions of the law, in container order
+	vector<Body::id_t>         bodyOfSide;
 	for (const auto& I : *scene->interactions) {
 		if (!I->isReal() || !dynamic_cast<const RdemPhys*>(I->phys.get())) continue;
-		intrs.push_back(&I);
-		++first[size_t(I->getId1()) + 1];
-		++first[size_t(I->getId2()) + 1];
+		intrs.push_back(I.get());
+		bodyOfSide.push_back(I->getId1());
+		bodyOfSide.push_back(I->getId2());
 	}
-	for (size_t b = 0; b < nBodies; ++b)
-		first[b + 1] += first[b];
-	sides.assign(first[nBodies], Side { nullptr, -1, false });
-	vector<size_t> fill(first.begin(), first.end() - 1);
-	for (const shared_ptr<Interaction>* I : intrs) {
-		sides[fill[size_t((*I)->getId1())]++] = Side { (*I)->phys, (*I)->getId2(), false };
-		sides[fill[size_t((*I)->getId2())]++] = Side { (*I)->phys, (*I)->getId1(), true };
+	vector<size_t> order;
+	rdem::groupByKey(bodyOfSide, nBodies, first, order);
+	sides.clear();
+	sides.reserve(order.size());
+	for (size_t side : order) {
+		const Interaction& I      = *intrs[side / 2];
+		const bool         second = side % 2 == 1;
+		sides.push_back(Side { I.phys, second ? I.getId1() : I.getId2(), second });
 	}
 	for (size_t b = 0; b < nBodies; ++b)
 		std::sort(sides.begin() + long(first[b]), sides.begin() + long(first[b + 1]), [](const Side& x, const Side& y) { return x.other < y.other; });
 	builtBodies       = long(nBodies);
 	builtInteractions = long(scene->interactions->size());
+}
+
+void RdemForceAssembler::prepareDirectSums(Scene* scene, long nBodies)
+{
+	/* Per-body sums (each body written by one thread only) go straight into the container's synced arrays
+	   (ForceContainer::addForceUnsynced), to which sync() adds the other engines' per-thread contributions; permanent
+	   forces still mark the container unsynced at its reset. ForceContainer::addForce writes the container's shared flag
+	   and per-thread maximum id at every call, a cache line every thread writes: its cost did not fall with a second
+	   thread (doc/performance.md). The container is first made to cover every body. */
+	if (nBodies <= 0) return;
+	scene->forces.addMaxId(Body::id_t(nBodies - 1));
+	scene->forces.syncSizesOfContainers();
 }
 
 void RdemForceAssembler::action()
@@ -50,13 +65,7 @@ void RdemForceAssembler::action()
 		rebuild();
 	builtIter          = scene->iter;
 	const long nBodies = long(scene->bodies->size());
-	if (nBodies == 0) return;
-	/* Each body's sum goes straight into the container's synced arrays (addForceUnsynced), which sync() adds the
-	   per-thread contributions to: every body is written by one thread only. ForceContainer::addForce writes the
-	   container's shared flag and per-thread maximum id at every call, a cache line both threads write; its cost did
-	   not fall with a second thread (doc/performance.md). The sizes are made to cover every body first. */
-	scene->forces.addMaxId(Body::id_t(nBodies - 1));
-	scene->forces.syncSizesOfContainers();
+	prepareDirectSums(scene, nBodies);
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static)
 #endif

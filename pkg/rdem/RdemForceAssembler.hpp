@@ -15,6 +15,9 @@ namespace yade {
 class RdemForceAssembler : public GlobalEngine {
 public:
 	void action() override;
+	/// Makes scene->forces ready for per-body sums added with addForceUnsynced/addTorqueUnsynced over bodies
+	/// 0 … nBodies-1, each body by one thread only (see the definition for why); call it outside a parallel region.
+	static void prepareDirectSums(Scene* scene, long nBodies);
 	// clang-format off
 	YADE_CLASS_BASE_DOC(RdemForceAssembler,GlobalEngine,R"""(Applies the forces and torques that :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` left in :yref:`RdemPhys` (with :yref:`Law2_RdemGeom_RdemPhys_FaceSprings::deferForces`), summing them body by body in the order of the other body's id.
 

@@ -4,17 +4,19 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
-#include <pkg/rdem/RdemPoissonEngine.hpp>
 #include <core/InteractionLoop.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
+#include <pkg/rdem/RdemForceAssembler.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemMat.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
+#include <pkg/rdem/RdemPoissonEngine.hpp>
 #include <pkg/rdem/math/Elasticity.hpp>
+#include <pkg/rdem/math/GroupByKey.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -316,18 +318,10 @@ void RdemPoissonEngine::prepare()
 		distinct.emplace(key, stiffness.size());
 		stiffness.push_back(elementStiffness(e));
 	}
-	/* Nodal forces are written per element and summed per body (slots of a body in element order): one addForce per
+	/* Nodal forces are written per element and summed per body (slots of a body in element order): one addition per
 	   body instead of one per element node, and a sum whose order does not depend on the number of threads. */
 	nodalForce.assign(8 * nEl, Vector3r::Zero());
-	nodeFirst.assign(scene->bodies->size() + 1, 0);
-	for (Body::id_t id : nodes)
-		++nodeFirst[size_t(id) + 1];
-	for (size_t b = 0; b + 1 < nodeFirst.size(); ++b)
-		nodeFirst[b + 1] += nodeFirst[b];
-	nodeSlot.assign(nodes.size(), 0);
-	vector<size_t> fill(nodeFirst.begin(), nodeFirst.end() - 1);
-	for (size_t slot = 0; slot < nodes.size(); ++slot)
-		nodeSlot[fill[size_t(nodes[slot])]++] = slot;
+	rdem::groupByKey(nodes, scene->bodies->size(), nodeFirst, nodeSlot);
 	bonds.assign(12 * nEl, shared_ptr<Interaction>());
 	scalesBroken = -1;
 	for (size_t e = 0; e < nEl; ++e)
@@ -406,12 +400,8 @@ void RdemPoissonEngine::action()
 		for (size_t a = 0; a < 8; ++a)
 			F[a] = s > 0 ? Vector3r(-s * (R * Ku.segment<3>(3 * long(a)))) : Vector3r::Zero();
 	}
-	// Summed per body straight into the container's synced arrays, as RdemForceAssembler does (see there).
 	const long nBodies = long(nodeFirst.size()) - 1;
-	if (nBodies > 0) {
-		scene->forces.addMaxId(Body::id_t(nBodies - 1));
-		scene->forces.syncSizesOfContainers();
-	}
+	RdemForceAssembler::prepareDirectSums(scene, nBodies);
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static)
 #endif
