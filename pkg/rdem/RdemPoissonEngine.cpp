@@ -322,6 +322,13 @@ void RdemPoissonEngine::prepare()
 	   body instead of one per element node, and a sum whose order does not depend on the number of threads. */
 	nodalForce.assign(8 * nEl, Vector3r::Zero());
 	rdem::groupByKey(nodes, scene->bodies->size(), nodeFirst, nodeSlot);
+	/* The elements read their nodes' positions from one compact per-body array, filled in body order once per step,
+	   instead of through each node's Body and State (8 pointer chases per element), and the reference positions from
+	   another (build takes them from the blocks at once: a body has the same refPos in all its elements). */
+	nodeRef.assign(scene->bodies->size(), Vector3r::Zero());
+	nodePos.assign(scene->bodies->size(), Vector3r::Zero());
+	for (size_t k = 0; k < nodes.size(); ++k)
+		nodeRef[size_t(nodes[k])] = refPos[k];
 	bonds.assign(12 * nEl, shared_ptr<Interaction>());
 	scalesBroken = -1;
 	for (size_t e = 0; e < nEl; ++e)
@@ -374,6 +381,12 @@ void RdemPoissonEngine::action()
 	const long         nEl   = long(nElements());
 	if (scalePrev.size() != scale.size()) scalePrev = scale;
 	const bool trackEnergy = scene->trackEnergy;
+	const long nBodies     = long(nodeFirst.size()) - 1;
+#ifdef YADE_OPENMP
+#pragma omp parallel for schedule(static)
+#endif
+	for (long b = 0; b < nBodies; ++b)
+		if (nodeFirst[size_t(b)] != nodeFirst[size_t(b) + 1]) nodePos[size_t(b)] = Body::byId(Body::id_t(b), scene)->state->pos;
 	Real energy = 0, released = 0; // Σ ½ s uᵀK_p u of the elements; ½ (s_prev - s) uᵀK_p u lost to cracks in this step [J]
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static) reduction(+ : energy, released)
@@ -387,8 +400,9 @@ void RdemPoissonEngine::action()
 		}
 		rdem::Nodes8<Real> X, x;
 		for (size_t a = 0; a < 8; ++a) {
-			X[a] = refPos[8 * size_t(e) + a];
-			x[a] = Body::byId(nodes[8 * size_t(e) + a], scene)->state->pos;
+			const size_t node = size_t(nodes[8 * size_t(e) + a]);
+			X[a]              = nodeRef[node];
+			x[a]              = nodePos[node];
 		}
 		const Matrix3r          R  = corotational ? rdem::hex8Rotation<Real>(X, x) : Matrix3r::Identity();
 		const rdem::Vec24<Real> u  = rdem::hex8Displacement<Real>(X, x, corotational ? &R : nullptr);
@@ -400,7 +414,6 @@ void RdemPoissonEngine::action()
 		for (size_t a = 0; a < 8; ++a)
 			F[a] = s > 0 ? Vector3r(-s * (R * Ku.segment<3>(3 * long(a)))) : Vector3r::Zero();
 	}
-	const long nBodies = long(nodeFirst.size()) - 1;
 	RdemForceAssembler::prepareDirectSums(scene, nBodies);
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static)

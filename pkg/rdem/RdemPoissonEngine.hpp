@@ -70,6 +70,8 @@ private:
 	vector<Vector3r>                nodalForce; // this step's force of each element on each of its nodes, 8 per element (not saved)
 	vector<size_t>                  nodeFirst;  // the nodal forces on body b are nodalForce[nodeSlot[k]], k in [nodeFirst[b], nodeFirst[b+1]) (not saved)
 	vector<size_t>                  nodeSlot;
+	vector<Vector3r>                nodeRef;           // per body: its reference position, from refPos (the same in all its elements) (not saved)
+	vector<Vector3r>                nodePos;           // per body: its position in this step, copied once per step for the elements (not saved)
 	long                            scalesBroken = -1; // broken springs in the scene when scales were computed
 	long                            scalesIntrs  = -1; // number of interactions then
 	void                            prepare();
