@@ -37,45 +37,49 @@ namespace {
 	   pair's contact normal from body 1 to body 2 (rdem::contactFaceAxis); X separates from Y along u = -normal (body 1)
 	   or +normal (body 2), and a sample's depth is its distance to Y's surface along u (rdem::sampleDepth). Only the faces
 	   of X that face Y take part (cosine c = -n_f·u > 0). Sample keys are ((which·6 + face)·(n+1)² + point), stable from
-	   step to step for the shear history. pts is a scratch buffer for one face's sample points. */
-	void sampleInside(
-	        const Block&                      X,
-	        const State&                      sx,
-	        const Block&                      Y,
-	        const State&                      sy,
-	        int                               which,
-	        int                               n,
-	        const Vector3r&                   normal,
-	        vector<rdem::SurfacePoint<Real>>& pts,
-	        RdemGeom&                         g)
+	   step to step for the shear history. A face's samples are the points of the trapezoid rule (rdem::faceSamplePoints),
+	   tested in Y's frame, where they are affine in the face's centre and axes (rdem::sampleDepthLocal). */
+	void sampleInside(const Block& X, const State& sx, const Block& Y, const State& sy, int which, int n, const Vector3r& normal, RdemGeom& g)
 	{
 		const int      perFace = (n + 1) * (n + 1);
 		const Vector3r u       = which == 0 ? Vector3r(-normal) : normal;
+		const Matrix3r toY     = Y.rot.transpose();
+		const Vector3r uq      = toY * u; // u in Y's frame (rdem::sampleDepthLocal)
 		for (int k = 0; k < 3; ++k) {
-			const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+			const int      k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+			const Vector3r t1 = X.rot.col(k1), t2 = X.rot.col(k2);
+			const Vector3r q1 = toY * t1, q2 = toY * t2;                     // the face's in-plane axes in Y's frame
+			const Real     area = 4 * X.half[k1] * X.half[k2] / Real(n * n); // of a segment of these faces [m²]
 			for (int side = 0; side < 2; ++side) {
 				const Real     s      = side ? 1 : -1;
 				const Vector3r nf     = s * X.rot.col(k);
 				const Real     cosine = -nf.dot(u);
 				if (!(cosine > 0)) continue;
 				const Vector3r fc = X.pos + X.half[k] * nf;
-				if (!rdem::faceMayEnter<Real>(Y, fc, X.rot.col(k1), X.rot.col(k2), X.half[k1], X.half[k2])) continue;
-				rdem::faceSamplePoints<Real>(fc, X.rot.col(k1), X.rot.col(k2), X.half[k1], X.half[k2], n, pts);
+				const Vector3r qc = toY * (fc - Y.pos); // the face centre in Y's frame
+				if (!rdem::faceMayEnterLocal<Real>(Y.half, qc, q1, q2, X.half[k1], X.half[k2])) continue;
 				const int face = 2 * k + side;
-				for (int p = 0; p < perFace; ++p) {
-					const auto hit = rdem::sampleDepth<Real>(Y, pts[size_t(p)].pos, u);
-					if (!hit.hit) continue;
-					const Vector3r point = pts[size_t(p)].pos + (hit.depth / 2) * u;
-					const State&   s1    = which == 0 ? sx : sy;
-					const State&   s2    = which == 0 ? sy : sx;
-					const Vector3r x1    = which == 0 ? X.pos : Y.pos;
-					const Vector3r x2    = which == 0 ? Y.pos : X.pos;
-					g.sampleKey.push_back((which * 6 + face) * perFace + p);
-					g.samplePoint.push_back(point);
-					g.sampleNormal.push_back(normal);
-					g.sampleVel.push_back(pointVelocity(s2, x2, point) - pointVelocity(s1, x1, point));
-					g.sampleDepth.push_back(hit.depth);
-					g.sampleArea.push_back(pts[size_t(p)].weight * cosine / 2); // both blocks are sampled: half each
+				for (int i = 0; i <= n; ++i) {
+					const auto     a  = rdem::trapezoidNode<Real>(i, n);
+					const Real     sa = X.half[k1] * a.x;
+					const Vector3r qa = qc + sa * q1;
+					for (int j = 0; j <= n; ++j) {
+						const auto b   = rdem::trapezoidNode<Real>(j, n);
+						const Real rb  = X.half[k2] * b.x;
+						const auto hit = rdem::sampleDepthLocal<Real>(Y.half, qa + rb * q2, uq);
+						if (!hit.hit) continue;
+						const Vector3r point = fc + sa * t1 + rb * t2 + (hit.depth / 2) * u;
+						const State&   s1    = which == 0 ? sx : sy;
+						const State&   s2    = which == 0 ? sy : sx;
+						const Vector3r x1    = which == 0 ? X.pos : Y.pos;
+						const Vector3r x2    = which == 0 ? Y.pos : X.pos;
+						g.sampleKey.push_back((which * 6 + face) * perFace + i * (n + 1) + j);
+						g.samplePoint.push_back(point);
+						g.sampleNormal.push_back(normal);
+						g.sampleVel.push_back(pointVelocity(s2, x2, point) - pointVelocity(s1, x1, point));
+						g.sampleDepth.push_back(hit.depth);
+						g.sampleArea.push_back(area * a.w * b.w * cosine / 2); // trapezoid weight; both blocks are sampled: half each
+					}
 				}
 			}
 		}
@@ -84,9 +88,11 @@ namespace {
 	/// Edge-to-edge contact of the pair (rdem::edgeEdgeContact), appended to geom with the key after all face samples.
 	/// Its area is that of a corner sample of the smaller block, a quarter of a segment: a penalty for the contact of
 	/// two edges, which carries no area of its own.
-	void edgeInside(const Block& A, const State& s1, const Block& B, const State& s2, Real tol, int n, RdemGeom& g)
+	void edgeInside(const rdem::BlockPair<Real>& pair, const State& s1, const State& s2, Real tol, int n, RdemGeom& g)
 	{
-		const auto hit = rdem::edgeEdgeContact<Real>(A, B, tol);
+		const Block& A   = pair.A;
+		const Block& B   = pair.B;
+		const auto   hit = rdem::edgeEdgeContact<Real>(pair, tol);
 		if (!hit.hit) return;
 		Real segArea = std::numeric_limits<Real>::infinity();
 		for (const Block* X : { &A, &B })
@@ -101,14 +107,14 @@ namespace {
 	}
 
 	/// Face samples of both blocks inside each other along the pair's contact normal, then the edge-to-edge contact.
-	void sampleContacts(const Block& A, const State& s1, const Block& B, const State& s2, Real tol, int n, RdemGeom& g)
+	void sampleContacts(const rdem::BlockPair<Real>& pair, const State& s1, const State& s2, Real tol, int n, RdemGeom& g)
 	{
-		const Vector3r                   normal = rdem::contactFaceAxis<Real>(A, B).normal;
-		vector<rdem::SurfacePoint<Real>> pts; // sample points of one face, one buffer for all faces of the pair
-		pts.reserve(size_t((n + 1) * (n + 1)));
-		sampleInside(A, s1, B, s2, 0, n, normal, pts, g);
-		sampleInside(B, s2, A, s1, 1, n, normal, pts, g);
-		edgeInside(A, s1, B, s2, tol, n, g);
+		const Block&   A      = pair.A;
+		const Block&   B      = pair.B;
+		const Vector3r normal = rdem::contactFaceAxis<Real>(pair).normal;
+		sampleInside(A, s1, B, s2, 0, n, normal, g);
+		sampleInside(B, s2, A, s1, 1, n, normal, g);
+		edgeInside(pair, s1, s2, tol, n, g);
 	}
 }
 
@@ -133,12 +139,14 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 		return true; // bonded: the law takes the segments' kinematics from the blocks' states (RdemGeom::kinematics)
 	const Block A { state1.pos, state1.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape1.get())->extents };
 	const Block B { state2.pos + shift2, state2.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape2.get())->extents };
+	const rdem::BlockPair<Real> pair(A, B);
+	const Real                  tol = touchTolerance(A, B);
 
 	if (!I->geom) {
 		if (force) {
 			// Bonding (utils.createInteraction): the shared face, cut into n×n segments.
-			const Real tol  = bondGapTolerance * math::min(A.half.minCoeff(), B.half.minCoeff());
-			const auto face = rdem::findSharedFace<Real>(A, B, tol, Real(1e-6));
+			const Real gapTol = bondGapTolerance * math::min(A.half.minCoeff(), B.half.minCoeff());
+			const auto face   = rdem::findSharedFace<Real>(A, B, gapTol, Real(1e-6));
 			if (!face.found) return false;
 			auto g            = shared_ptr<RdemGeom>(new RdemGeom);
 			g->samplesPerEdge = segmentsPerEdge;
@@ -158,10 +166,10 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 			I->geom      = g;
 			return true;
 		} else {
-			if (!rdem::blocksOverlap<Real>(A, B, touchTolerance(A, B))) return false;
+			if (!rdem::blocksOverlap<Real>(pair, tol)) return false;
 			RdemGeom probe;
 			probe.samplesPerEdge = segmentsPerEdge;
-			sampleContacts(A, state1, B, state2, touchTolerance(A, B), segmentsPerEdge, probe);
+			sampleContacts(pair, state1, state2, tol, segmentsPerEdge, probe);
 			if (probe.sampleKey.empty()) return false;
 			auto g  = shared_ptr<RdemGeom>(new RdemGeom(probe));
 			g->ell1 = faceDistance(A, probe.sampleNormal[0]);
@@ -173,7 +181,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 
 	RdemGeom& g = *static_cast<RdemGeom*>(I->geom.get());
 	g.clearSamples();
-	if (rdem::blocksOverlap<Real>(A, B, touchTolerance(A, B))) sampleContacts(A, state1, B, state2, touchTolerance(A, B), g.samplesPerEdge, g);
+	if (rdem::blocksOverlap<Real>(pair, tol)) sampleContacts(pair, state1, state2, tol, g.samplesPerEdge, g);
 	return true; // a real interaction stays; the law erases it when no sample is in contact
 }
 

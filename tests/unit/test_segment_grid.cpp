@@ -145,19 +145,24 @@ TEST(SegmentGrid, TrapezoidRuleIntegratesLinearAndBilinearExactly)
 	}
 }
 
-TEST(SegmentGrid, FaceSamplePointsIntoAReusedBufferEqualsTheReturnedOnes)
+TEST(SegmentGrid, TrapezoidNodesOnMinusOneToOne)
 {
-	// The buffer version clears what the buffer held (here the points of a larger face) and writes the same points and
-	// weights, to the last bit, as the version that returns a new vector.
-	std::vector<rdem::SurfacePoint<double>> buffer = rdem::faceSamplePoints<double>(V3(1, 2, 3), V3::UnitX(), V3::UnitZ(), 2.0, 3.0, 4);
-	const V3                                c(0.1, -0.2, 0.3), t1 = V3(1, 1, 0).normalized(), t2 = V3(-1, 1, 0).normalized();
-	rdem::faceSamplePoints<double>(c, t1, t2, 0.01, 0.02, 2, buffer);
-	const auto fresh = rdem::faceSamplePoints<double>(c, t1, t2, 0.01, 0.02, 2);
-	ASSERT_EQ(buffer.size(), size_t(9));
-	ASSERT_EQ(buffer.size(), fresh.size());
-	for (size_t i = 0; i < fresh.size(); ++i) {
-		EXPECT_EQ(buffer[i].pos, fresh[i].pos);
-		EXPECT_EQ(buffer[i].weight, fresh[i].weight);
+	// n = 2: nodes -1, 0, 1 with factors ½, 1, ½ (exact in binary); for every n the weights w·2/n sum to the length 2
+	// and the rule integrates x exactly (0, by symmetry).
+	const double x[] = { -1, 0, 1 }, w[] = { 0.5, 1, 0.5 };
+	for (int i = 0; i <= 2; ++i) {
+		EXPECT_EQ(rdem::trapezoidNode<double>(i, 2).x, x[i]);
+		EXPECT_EQ(rdem::trapezoidNode<double>(i, 2).w, w[i]);
+	}
+	for (int n = 1; n <= 6; ++n) {
+		double length = 0, moment = 0;
+		for (int i = 0; i <= n; ++i) {
+			const auto node = rdem::trapezoidNode<double>(i, n);
+			length += node.w * 2 / n;
+			moment += node.w * 2 / n * node.x;
+		}
+		EXPECT_NEAR(length, 2, 1e-15) << "n = " << n;
+		EXPECT_NEAR(moment, 0, 1e-15) << "n = " << n;
 	}
 }
 

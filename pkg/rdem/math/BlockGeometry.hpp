@@ -99,6 +99,48 @@ namespace rdem {
 		return rA + rB - abs((B.pos - A.pos).dot(a));
 	}
 
+	/* Two blocks seen from A's frame (Gottschalk, Lin & Manocha, SIGGRAPH 1996): C = R_Aᵀ R_B (C_ij = a_i·b_j), its
+	   absolute values, and t = R_Aᵀ(x_B - x_A) [m]. The projections of both blocks on the 15 axes of the separating-axis
+	   test (a_i, b_j, a_i × b_j) are sums of half-extents times |C_ij|; made once per pair and step and shared by
+	   blocksOverlap, contactFaceAxis and edgeEdgeContact, instead of projecting both blocks' six axes on each candidate
+	   axis in each of them. Holds references to A and B: a local of the caller. */
+	template <class S> struct BlockPair {
+		const OrientedBlock<S>& A;
+		const OrientedBlock<S>& B;
+		Eigen::Matrix<S, 3, 3>  C, absC;
+		Eigen::Matrix<S, 3, 1>  t;
+
+		BlockPair(const OrientedBlock<S>& a, const OrientedBlock<S>& b)
+		        : A(a)
+		        , B(b)
+		        , C(a.rot.transpose() * b.rot)
+		        , absC(C.cwiseAbs())
+		        , t(a.rot.transpose() * (b.pos - a.pos))
+		{
+		}
+		/// Overlap of the projections along a_i [m], negative if apart; B lies on the +a_i side if t_i > 0.
+		S overlapA(int i) const { return A.half[i] + absC.row(i).dot(B.half) - std::abs(t[i]); }
+		/// (x_B - x_A)·b_j [m].
+		S offsetB(int j) const { return C.col(j).dot(t); }
+		/// Overlap of the projections along b_j [m].
+		S overlapB(int j) const { return absC.col(j).dot(A.half) + B.half[j] - std::abs(offsetB(j)); }
+		/// |a_i × b_j|, from its components 0, -C_(i+2)j, C_(i+1)j along a_i, a_(i+1), a_(i+2) (no cancellation when the
+		/// edges are parallel).
+		S crossLength(int i, int j) const
+		{
+			const S u = C((i + 1) % 3, j), v = C((i + 2) % 3, j);
+			return std::sqrt(u * u + v * v);
+		}
+		/// Overlap of the projections along the unit axis (a_i × b_j)/|a_i × b_j|, times |a_i × b_j| [m].
+		S crossOverlapScaled(int i, int j) const
+		{
+			const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+			const S   rA = A.half[i1] * absC(i2, j) + A.half[i2] * absC(i1, j);
+			const S   rB = B.half[j1] * absC(i, j2) + B.half[j2] * absC(i, j1);
+			return rA + rB - std::abs(t[i2] * C(i1, j) - t[i1] * C(i2, j));
+		}
+	};
+
 	/// The contact normal of two overlapping blocks (see contactFaceAxis).
 	template <class S> struct FaceAxis {
 		S                      overlap = 0;                              ///< overlap of the projections along the normal [m]
@@ -115,16 +157,16 @@ namespace rdem {
 	   unless another is within the fraction blend of it. The default 1 % blends the faces of aligned blocks (their
 	   overlaps differ by round-off) and keeps the band between perpendicular axes narrow, where the turning normal
 	   acts as a transverse stiffness of order k_nA/blend that the time step does not include. For blocks that overlap (o_min > 0); oriented from A to B. */
-	template <class S> FaceAxis<S> contactFaceAxis(const OrientedBlock<S>& A, const OrientedBlock<S>& B, S blend = S(1e-2))
+	template <class S> FaceAxis<S> contactFaceAxis(const BlockPair<S>& pair, S blend = S(1e-2))
 	{
 		using V = Eigen::Matrix<S, 3, 1>;
 		V axes[6];
 		S overlaps[6];
 		S least = std::numeric_limits<S>::infinity();
 		for (int i = 0; i < 6; ++i) {
-			const V a   = (i < 3 ? A : B).rot.col(i % 3);
-			axes[i]     = (B.pos - A.pos).dot(a) >= 0 ? a : V(-a);
-			overlaps[i] = projectionOverlap(A, B, a);
+			const V a   = (i < 3 ? pair.A : pair.B).rot.col(i % 3);
+			axes[i]     = (i < 3 ? pair.t[i] : pair.offsetB(i - 3)) >= 0 ? a : V(-a);
+			overlaps[i] = i < 3 ? pair.overlapA(i) : pair.overlapB(i - 3);
 			least       = std::min(least, overlaps[i]);
 		}
 		V       sum  = V::Zero();
@@ -133,8 +175,13 @@ namespace rdem {
 			sum += (band > 0 ? std::max(S(0), 1 - (overlaps[i] - least) / band) : S(overlaps[i] == least)) * axes[i];
 		FaceAxis<S> axis;
 		axis.normal  = sum.normalized();
-		axis.overlap = projectionOverlap(A, B, axis.normal);
+		axis.overlap = projectionOverlap(pair.A, pair.B, axis.normal);
 		return axis;
+	}
+
+	template <class S> FaceAxis<S> contactFaceAxis(const OrientedBlock<S>& A, const OrientedBlock<S>& B, S blend = S(1e-2))
+	{
+		return contactFaceAxis(BlockPair<S>(A, B), blend);
 	}
 
 	/// How deep a sample point lies inside a block along a direction (see sampleDepth).
@@ -155,35 +202,61 @@ namespace rdem {
 	   a face normal u of Y, the depth is the distance behind that face, also for the edge samples of a flush stacked
 	   block, which lie on Y's side planes. No hit outside Y or at a depth below tol·min h_k, where a sample only
 	   touches (edge and corner samples of aligned blocks lie on each other's faces, where the sign of a zero depth is
-	   round-off). */
+	   round-off). sampleDepthLocal takes p and u in Y's frame, q = R_Yᵀ(p - x_Y) and u_q = R_Yᵀu, with Y's half-extents:
+	   a caller sampling a face's grid transforms u once per pair and the face's centre and axes once per face (the grid
+	   points are affine in them) instead of two matrix-vector products per point. */
 	template <class S>
-	SampleHit<S>
-	sampleDepth(const OrientedBlock<S>& Y, const Eigen::Matrix<S, 3, 1>& p, const Eigen::Matrix<S, 3, 1>& u, S tol = S(1e-9), S grazing = S(0.1))
+	SampleHit<S> sampleDepthLocal(
+	        const Eigen::Matrix<S, 3, 1>& half, const Eigen::Matrix<S, 3, 1>& q, const Eigen::Matrix<S, 3, 1>& uq, S tol = S(1e-9), S grazing = S(0.1))
 	{
-		const Eigen::Matrix<S, 3, 1> q     = Y.rot.transpose() * (p - Y.pos);
-		const Eigen::Matrix<S, 3, 1> uq    = Y.rot.transpose() * u;
-		S                            depth = std::numeric_limits<S>::infinity();
-		SampleHit<S>                 best;
+		S            depth = std::numeric_limits<S>::infinity();
+		SampleHit<S> best;
 		for (int k = 0; k < 3; ++k) {
 			for (int s = -1; s <= 1; s += 2) {
-				const S d = Y.half[k] - S(s) * q[k];
-				if (d < -tol * Y.half[k]) return best; // outside
+				const S d = half[k] - S(s) * q[k];
+				if (d < -tol * half[k]) return best; // outside
 				const S a = S(s) * uq[k];
 				if (a <= grazing) continue; // a side face for u
 				const S toPlane = std::max(d, S(0)) / a;
 				depth           = std::min(depth, a >= 2 * grazing ? toPlane : toPlane * grazing / (a - grazing));
 			}
 		}
-		if (!(depth > tol * Y.half.minCoeff()) || !std::isfinite(depth)) return best;
+		if (!(depth > tol * half.minCoeff()) || !std::isfinite(depth)) return best;
 		best.hit   = true;
 		best.depth = depth;
 		return best;
 	}
 
+	/// sampleDepth for a point p and direction u in global coordinates.
+	template <class S>
+	SampleHit<S>
+	sampleDepth(const OrientedBlock<S>& Y, const Eigen::Matrix<S, 3, 1>& p, const Eigen::Matrix<S, 3, 1>& u, S tol = S(1e-9), S grazing = S(0.1))
+	{
+		return sampleDepthLocal<S>(Y.half, Y.rot.transpose() * (p - Y.pos), Y.rot.transpose() * u, tol, grazing);
+	}
+
 	/* Whether a rectangular face (centre c, unit in-plane axes t1, t2, half-sizes h1, h2 [m]) can have a point inside
 	   block Y in the sense of sampleDepth: false only if, along one of Y's axes k, the face's extent
 	   |t1_k| h1 + |t2_k| h2 around c lies entirely beyond Y's slab |q_k| ≤ h_k (1 + tol), with the margin 1e-9·h_k for
-	   round-off. A cheap cull before the (n+1)² sample points of the face are made and tested (doc/performance.md). */
+	   round-off. A cheap cull before the (n+1)² sample points of the face are made and tested (doc/performance.md).
+	   faceMayEnterLocal takes the face in Y's frame, q_c = R_Yᵀ(c - x_Y), q_t1 = R_Yᵀt1, q_t2 = R_Yᵀt2 (see sampleDepth). */
+	template <class S>
+	bool faceMayEnterLocal(
+	        const Eigen::Matrix<S, 3, 1>& half,
+	        const Eigen::Matrix<S, 3, 1>& qc,
+	        const Eigen::Matrix<S, 3, 1>& qt1,
+	        const Eigen::Matrix<S, 3, 1>& qt2,
+	        S                             h1,
+	        S                             h2,
+	        S                             tol = S(1e-9))
+	{
+		using std::abs;
+		for (int k = 0; k < 3; ++k)
+			if (abs(qc[k]) - (abs(qt1[k]) * h1 + abs(qt2[k]) * h2) > half[k] * (1 + tol + S(1e-9))) return false;
+		return true;
+	}
+
+	/// faceMayEnter for a face in global coordinates.
 	template <class S>
 	bool faceMayEnter(
 	        const OrientedBlock<S>&       Y,
@@ -194,41 +267,26 @@ namespace rdem {
 	        S                             h2,
 	        S                             tol = S(1e-9))
 	{
-		using std::abs;
-		const Eigen::Matrix<S, 3, 1> q = Y.rot.transpose() * (c - Y.pos);
-		for (int k = 0; k < 3; ++k) {
-			const S reach = abs(Y.rot.col(k).dot(t1)) * h1 + abs(Y.rot.col(k).dot(t2)) * h2;
-			if (abs(q[k]) - reach > Y.half[k] * (1 + tol + S(1e-9))) return false;
-		}
-		return true;
+		return faceMayEnterLocal<S>(Y.half, Y.rot.transpose() * (c - Y.pos), Y.rot.transpose() * t1, Y.rot.transpose() * t2, h1, h2, tol);
 	}
 
 	/* Separating-axis test of two oriented blocks (Gottschalk, Lin & Manocha, SIGGRAPH 1996): true if their projections
-	   overlap by more than tol [m] on all 15 candidate axes (3 + 3 face normals, 9 edge cross products). Blocks that are
-	   apart or only touch (grid neighbours along an edge) return false, usually at the first face axis. */
-	template <class S> bool blocksOverlap(const OrientedBlock<S>& A, const OrientedBlock<S>& B, S tol)
+	   overlap by more than tol [m] on all 15 candidate axes (3 + 3 face normals, 9 edge cross products; see BlockPair).
+	   Blocks that are apart or only touch (grid neighbours along an edge) return false, usually at the first face axis. */
+	template <class S> bool blocksOverlap(const BlockPair<S>& pair, S tol)
 	{
-		using std::abs;
-		using V     = Eigen::Matrix<S, 3, 1>;
-		const V   d = B.pos - A.pos;
-		auto      overlapsAlong = [&](const V& axis) {
-                        const S len = axis.norm();
-                        if (len < S(1e-9)) return true; // parallel edges: the face axes already cover this direction
-                        const V a  = axis / len;
-                        S       rA = 0, rB = 0;
-                        for (int j = 0; j < 3; ++j) {
-                                rA += A.half[j] * abs(A.rot.col(j).dot(a));
-                                rB += B.half[j] * abs(B.rot.col(j).dot(a));
-                        }
-                        return rA + rB - abs(d.dot(a)) > tol;
-		};
 		for (int i = 0; i < 3; ++i)
-			if (!overlapsAlong(A.rot.col(i)) || !overlapsAlong(B.rot.col(i))) return false;
+			if (!(pair.overlapA(i) > tol) || !(pair.overlapB(i) > tol)) return false;
 		for (int i = 0; i < 3; ++i)
-			for (int j = 0; j < 3; ++j)
-				if (!overlapsAlong(A.rot.col(i).cross(B.rot.col(j)))) return false;
+			for (int j = 0; j < 3; ++j) {
+				const S len = pair.crossLength(i, j);
+				if (len < S(1e-9)) continue; // parallel edges: the face axes already cover this direction
+				if (!(pair.crossOverlapScaled(i, j) > tol * len)) return false;
+			}
 		return true;
 	}
+
+	template <class S> bool blocksOverlap(const OrientedBlock<S>& A, const OrientedBlock<S>& B, S tol) { return blocksOverlap(BlockPair<S>(A, B), tol); }
 
 	/// An edge of one block crossing an edge of the other (see edgeEdgeContact).
 	template <class S> struct EdgeHit {
@@ -243,37 +301,35 @@ namespace rdem {
 	   generation of ODE's dBoxBox), if the axis of least overlap is the cross product of an edge direction of A and one of
 	   B, and its overlap is clearly smaller than that of every face axis (margin 0.95), the contact is at the closest
 	   points of A's edge farthest along that axis and B's edge farthest against it, if both lie within their edges. */
-	template <class S> EdgeHit<S> edgeEdgeContact(const OrientedBlock<S>& A, const OrientedBlock<S>& B, S tol)
+	template <class S> EdgeHit<S> edgeEdgeContact(const BlockPair<S>& pair, S tol)
 	{
 		using std::abs;
-		using V      = Eigen::Matrix<S, 3, 1>;
-		const V d    = B.pos - A.pos;
-		auto    over    = [&](const V& a) { return projectionOverlap(A, B, a); };
-		S faceMin = std::numeric_limits<S>::infinity();
+		using V                         = Eigen::Matrix<S, 3, 1>;
+		const OrientedBlock<S>& A       = pair.A;
+		const OrientedBlock<S>& B       = pair.B;
+		S                       faceMin = std::numeric_limits<S>::infinity();
 		for (int i = 0; i < 3; ++i)
-			faceMin = std::min(faceMin, std::min(over(A.rot.col(i)), over(B.rot.col(i))));
+			faceMin = std::min(faceMin, std::min(pair.overlapA(i), pair.overlapB(i)));
 		EdgeHit<S> hit;
 		if (!(faceMin > tol)) return hit;
 		int i0 = -1, j0 = -1;
-		S   best = faceMin;
-		V   axis;
+		S   best = faceMin, bestLength = 0;
 		for (int i = 0; i < 3; ++i)
 			for (int j = 0; j < 3; ++j) {
-				V         a   = A.rot.col(i).cross(B.rot.col(j));
-				const S   len = a.norm();
+				const S len = pair.crossLength(i, j);
 				if (len < S(1e-6)) continue;
-				a /= len;
-				const S o = over(a);
+				const S o = pair.crossOverlapScaled(i, j) / len;
 				if (!(o > tol)) return hit; // separated along this axis
 				if (o < S(0.95) * best) {
-					best = o;
-					i0   = i;
-					j0   = j;
-					axis = a;
+					best       = o;
+					bestLength = len;
+					i0         = i;
+					j0         = j;
 				}
 			}
 		if (i0 < 0) return hit;
-		if (axis.dot(d) < 0) axis = -axis; // from A to B
+		V axis = A.rot.col(i0).cross(B.rot.col(j0)) / bestLength;
+		if (axis.dot(B.pos - A.pos) < 0) axis = -axis; // from A to B
 		V pA = A.pos, pB = B.pos;
 		for (int k = 0; k < 3; ++k) {
 			if (k != i0) pA += (A.rot.col(k).dot(axis) > 0 ? S(1) : S(-1)) * A.half[k] * A.rot.col(k);
@@ -289,6 +345,11 @@ namespace rdem {
 		hit.normal = axis;
 		hit.point  = (pA + sA * ea + pB + tB * eb) / 2;
 		return hit;
+	}
+
+	template <class S> EdgeHit<S> edgeEdgeContact(const OrientedBlock<S>& A, const OrientedBlock<S>& B, S tol)
+	{
+		return edgeEdgeContact(BlockPair<S>(A, B), tol);
 	}
 
 } // namespace rdem

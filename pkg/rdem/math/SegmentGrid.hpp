@@ -40,37 +40,31 @@ namespace rdem {
 		return pts;
 	}
 
-	/// Trapezoid-rule sample points of the same rectangle: an (n+1)×(n+1) grid including edges and corners; weights
-	/// sum to the rectangle's area (corner ¼, edge ½, interior 1 times the segment area). Written into pts (cleared
-	/// first), so that a caller sampling many faces reuses one buffer instead of allocating one per face.
-	template <class S>
-	void faceSamplePoints(
-	        const Eigen::Matrix<S, 3, 1>& c,
-	        const Eigen::Matrix<S, 3, 1>& t1,
-	        const Eigen::Matrix<S, 3, 1>& t2,
-	        S                             h1,
-	        S                             h2,
-	        int                           n,
-	        std::vector<SurfacePoint<S>>& pts)
-	{
-		pts.clear();
-		const S area = 4 * h1 * h2 / S(n * n);
-		for (int i = 0; i <= n; ++i)
-			for (int j = 0; j <= n; ++j) {
-				const S s = h1 * (S(2 * i) / S(n) - 1), r = h2 * (S(2 * j) / S(n) - 1);
-				const S w = area * ((i == 0 || i == n) ? S(0.5) : S(1)) * ((j == 0 || j == n) ? S(0.5) : S(1));
-				pts.push_back({ c + s * t1 + r * t2, w });
-			}
-	}
+	/// Node i (0 … n) of the (n+1)-point trapezoid rule on [-1, 1]: its coordinate x = 2i/n - 1 and its weight factor
+	/// w (½ at the ends, 1 inside); the rule's weight is w·2/n.
+	template <class S> struct TrapezoidNode {
+		S x, w;
+	};
 
-	/// The same, returned as a new vector.
+	template <class S> TrapezoidNode<S> trapezoidNode(int i, int n) { return { S(2 * i) / S(n) - 1, (i == 0 || i == n) ? S(0.5) : S(1) }; }
+
+	/// Trapezoid-rule sample points of the rectangle c + s·t1 + r·t2, |s| ≤ h1, |r| ≤ h2: an (n+1)×(n+1) grid including
+	/// edges and corners, point (i, j) at s = h1 x_i, r = h2 x_j (trapezoidNode); weights sum to the rectangle's area
+	/// (corner ¼, edge ½, interior 1 times the segment area 4h1h2/n²).
 	template <class S>
 	std::vector<SurfacePoint<S>>
 	faceSamplePoints(const Eigen::Matrix<S, 3, 1>& c, const Eigen::Matrix<S, 3, 1>& t1, const Eigen::Matrix<S, 3, 1>& t2, S h1, S h2, int n)
 	{
 		std::vector<SurfacePoint<S>> pts;
 		pts.reserve(size_t((n + 1) * (n + 1)));
-		faceSamplePoints(c, t1, t2, h1, h2, n, pts);
+		const S area = 4 * h1 * h2 / S(n * n);
+		for (int i = 0; i <= n; ++i) {
+			const auto a = trapezoidNode<S>(i, n);
+			for (int j = 0; j <= n; ++j) {
+				const auto b = trapezoidNode<S>(j, n);
+				pts.push_back({ c + (h1 * a.x) * t1 + (h2 * b.x) * t2, area * a.w * b.w });
+			}
+		}
 		return pts;
 	}
 
