@@ -66,10 +66,15 @@ void RdemForceAssembler::action()
 	builtIter          = scene->iter;
 	const long nBodies = long(scene->bodies->size());
 	prepareDirectSums(scene, nBodies);
+	/* Bodies in descending id order: the law has just written the forces in the order of the interaction container,
+	   which is about ascending body ids, so the physics it wrote last are read first, while they are still in the cache
+	   (in cubes beyond the last-level cache, the ones it wrote first are gone by then); and the next step's interaction
+	   loop starts where this pass ends. The order of each body's own sum is unchanged. */
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static)
 #endif
-	for (long id = 0; id < nBodies; ++id) {
+	for (long r = 0; r < nBodies; ++r) {
+		const long id = nBodies - 1 - r;
 		if (first[size_t(id)] == first[size_t(id) + 1]) continue;
 		Vector3r f = Vector3r::Zero(), t = Vector3r::Zero();
 		for (size_t k = first[size_t(id)]; k < first[size_t(id) + 1]; ++k) {
