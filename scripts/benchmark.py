@@ -18,8 +18,10 @@ Cases
                 neighbours (interactionDetectionFactor 1.2), bottom layer fixed, top layer at 1 mm/s, collider on,
                 O.dt = 0.8 PWaveTimeStep: what a YADE user runs today for concrete, 1 and 2 threads;
     effects     the paper's geometry with one more effect at a time (see EFFECTS);
-    scaling     springs + failure + contact gate + Poisson on cubes of 10³, 22³ and 46³ blocks (1.0e3 … 9.7e4), one
-                thread, with the memory per block (peak resident set after building, over the block count);
+    scaling     springs + failure + contact gate + Poisson on cubes of --sizes blocks per edge (default 10, 22, 46:
+                1.2e3 … 1.0e5 blocks with the platens), one thread, with the memory per block (peak resident set after
+                building, over the block count), the exponent of the wall time per step against the block count
+                between neighbouring sizes, and a plot (<out>-scaling.png);
     instructions  the paper scene's instructions per block-step under valgrind's callgrind: the one figure that does
                 not move with the machine's load (needs valgrind).
     misses      memory traffic of the 22³ cube (11 616 blocks, beyond this machine's 32 MB L3 cache): last-level data
@@ -30,10 +32,11 @@ Expected result
     Figures of this machine in doc/benchmark.md; doc/performance.md discusses them and the profile.
 
 How to run (about 9 minutes with the default two rounds; --quick --repeat 1: 2 minutes, no 46³ cube)
-    build/bin/yade -n scripts/benchmark.py [--cases paper crack cpm effects scaling] [--quick] [--repeat N] [--out doc/benchmark.md]
+    build/bin/yade -n scripts/benchmark.py [--cases paper crack cpm effects scaling] [--sizes 10 22 46] [--quick] [--repeat N] [--out doc/benchmark.md]
 """
 import argparse
 import json
+import math
 import os
 import resource
 import sys
@@ -45,6 +48,7 @@ parser.add_argument('--cases', nargs='+', default=['paper', 'crack', 'cpm', 'eff
 parser.add_argument('--steps', type=int, default=6000, help='timed steps per case, in three windows (default 6000; fewer for big cubes)')
 parser.add_argument('--warmup', type=int, default=300, help='steps before timing (default 300)')
 parser.add_argument('--quick', action='store_true', help='fewer steps, no 46³ cube')
+parser.add_argument('--sizes', type=int, nargs='+', default=None, help='blocks per edge of the scaling cubes (default 10 22 46; --quick: 10 22)')
 parser.add_argument('--repeat', type=int, default=2, help='run the whole plan this many times, round robin, and keep each case\'s fastest round (default 2)')
 parser.add_argument('--out', default='doc/benchmark.md', help='markdown table to write (default doc/benchmark.md)')
 parser.add_argument('--child', default=None, help=argparse.SUPPRESS)  # internal: run one case in this process
@@ -234,7 +238,10 @@ if 'effects' in opts.cases:
 	for label, options in EFFECTS:
 		plan.append(('effects', label, dict(kind='rdem', options=options, steps=steps, warmup=warmup), 1))
 if 'scaling' in opts.cases:
-	for n in ((10, 22) if opts.quick else (10, 22, 46)):
+	sizes = opts.sizes or ((10, 22) if opts.quick else (10, 22, 46))
+	if min(sizes) < 2:
+		sys.exit('--sizes %s: blocks per edge must be integers >= 2' % ' '.join(map(str, sizes)))
+	for n in sorted(sizes):
 		nSteps = max(50, int(steps * 1200 / (n * n * (n + 2))))  # about the same wall time per cube
 		spec = dict(kind='rdem', blocks=n, options=dict(dt=None), steps=nSteps, warmup=min(warmup, nSteps))  # dt: RdemTimeStepper
 		plan.append(('scaling', '%d³ blocks' % n, spec, 1))
@@ -323,13 +330,45 @@ if eff:
 	lines.append('')
 sc = [r for r in results if r['section'] == 'scaling']
 if sc:
-	lines += ['## Scaling with the number of blocks (one thread)', '', '| cube | blocks | Poisson elements | set-up [s] | steps/s | µs per block-step | median window | rounds | memory per block [kB] | breaks |',
-	          '|---|---|---|---|---|---|---|---|---|---|']
-	for r in sc:
-		lines.append('| %s | %d | %d | %.1f | %.1f | %.3f | %.3f | %s | %.1f | %d |' % (r['label'], r['bodies'], r['elements'], r['setupSeconds'], r['stepsPerSecond'],
-		                                                                             r['usPerBodyStep'], r['usPerBodyStepMedian'], rounds(r), r['memoryPerBodyKB'],
-		                                                                             r['breaks']))
+	# Wall time per step w = µs per block-step × blocks; between neighbouring sizes, w grows as N^p with
+	# p = ln(w₂/w₁)/ln(N₂/N₁) (1 for a cost linear in the number of blocks).
+	wall = [r['usPerBodyStep'] * r['bodies'] for r in sc]
+	exponent = ['–'] + ['%.2f' % (math.log(wall[i] / wall[i - 1]) / math.log(sc[i]['bodies'] / sc[i - 1]['bodies'])) for i in range(1, len(sc))]
+	lines += [
+	    '## Scaling with the number of blocks (one thread)', '',
+	    '"exponent": $p$ of the wall time per step $\\propto N^p$ from the row above (1: linear in the number of blocks $N$).', '',
+	    '| cube | blocks | Poisson elements | set-up [s] | steps/s | µs per block-step | median window | rounds | exponent | memory per block [kB] | breaks |',
+	    '|---|---|---|---|---|---|---|---|---|---|---|'
+	]
+	for r, p in zip(sc, exponent):
+		lines.append('| %s | %d | %d | %.1f | %.1f | %.3f | %.3f | %s | %s | %.1f | %d |' % (r['label'], r['bodies'], r['elements'], r['setupSeconds'], r['stepsPerSecond'],
+		                                                                                  r['usPerBodyStep'], r['usPerBodyStepMedian'], rounds(r), p, r['memoryPerBodyKB'],
+		                                                                                  r['breaks']))
 	lines.append('')
+	if len(sc) >= 2:
+		import matplotlib
+		matplotlib.use('Agg')
+		import matplotlib.pyplot as plt
+		figure = os.path.splitext(opts.out)[0] + '-scaling.png'
+		blocks = [r['bodies'] for r in sc]
+		fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
+		left.loglog(blocks, [w / 1e3 for w in wall], 'o-', label='measured (fastest round)')
+		left.loglog(blocks, [wall[0] / 1e3 * b / blocks[0] for b in blocks], 'k--', lw=0.8, label='linear from the smallest cube')
+		left.set_xlabel('blocks')
+		left.set_ylabel('wall time per step [ms]')
+		left.legend()
+		right.semilogx(blocks, [r['usPerBodyStep'] for r in sc], 'o-', label='fastest round')
+		right.semilogx(blocks, [r['usPerBodyStepMedian'] for r in sc], 's:', label='median window')
+		cacheBlocks = 32 * 1024 / (sum(r['memoryPerBodyKB'] for r in sc) / len(sc))  # blocks whose memory fills a 32 MB L3
+		right.axvline(cacheBlocks, color='grey', lw=0.8)
+		right.text(cacheBlocks, 0.05, ' 32 MB of blocks', color='grey', transform=right.get_xaxis_transform())
+		right.set_ylim(bottom=0)
+		right.set_xlabel('blocks')
+		right.set_ylabel('µs per block-step')
+		right.legend()
+		fig.tight_layout()
+		fig.savefig(figure, dpi=110)
+		lines += ['![scaling](%s)' % os.path.basename(figure), '']
 with open(opts.out, 'w') as f:
 	f.write('\n'.join(lines))
 with open(os.path.splitext(opts.out)[0] + '.json', 'w') as f:
