@@ -21,7 +21,7 @@ Cases
     scaling     springs + failure + contact gate + Poisson on cubes of --sizes blocks per edge (default 10, 22, 46:
                 1.2e3 … 1.0e5 blocks with the platens), one thread, with the memory per block (peak resident set after
                 building, over the block count), the exponent of the wall time per step against the block count
-                between neighbouring sizes, and a plot (<out>.png, e.g. doc/benchmark.png);
+                between neighbouring sizes, and a plot (<out>.png, e.g. doc/scaling.png);
     instructions  the paper scene's instructions per block-step under valgrind's callgrind: the one figure that does
                 not move with the machine's load (needs valgrind).
     misses      memory traffic of the 22³ cube (11 616 blocks, beyond this machine's 32 MB L3 cache): last-level data
