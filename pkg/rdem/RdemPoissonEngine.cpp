@@ -351,9 +351,13 @@ vector<Real> RdemPoissonEngine::elementScales()
 	scene = Omega::instance().getScene().get();
 	if (!prepared()) prepare();
 	vector<Real> s(size_t(nElements()), 1);
+	// An element one of whose blocks was erased (O.bodies.erase) has lost a node: released, crack or not.
+	for (size_t e = 0; e < s.size(); ++e)
+		for (size_t a = 0; a < 8; ++a)
+			if (!Body::byId(nodes[8 * e + a], scene)) s[e] = 0;
 	if (!releaseOnCrack) return s;
 	for (size_t e = 0; e < s.size(); ++e)
-		for (size_t k = 0; k < 12; ++k) {
+		for (size_t k = 0; k < 12 && s[e] > 0; ++k) {
 			const auto& I = bonds[12 * e + k];
 			// A released bond is gone for good: its interaction is dead, or, when prepare() looked the pair up after the
 			// blocks touched again (e.g. after O.load), it is a sampled contact without segments.
@@ -385,8 +389,10 @@ void RdemPoissonEngine::action()
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static)
 #endif
-	for (long b = 0; b < nBodies; ++b)
-		if (nodeFirst[size_t(b)] != nodeFirst[size_t(b) + 1]) nodePos[size_t(b)] = Body::byId(Body::id_t(b), scene)->state->pos;
+	for (long b = 0; b < nBodies; ++b) {
+		const auto& body = Body::byId(Body::id_t(b), scene);
+		if (body && nodeFirst[size_t(b)] != nodeFirst[size_t(b) + 1]) nodePos[size_t(b)] = body->state->pos; // erased: its elements are released
+	}
 	Real energy = 0, released = 0; // Σ ½ s uᵀK_p u of the elements; ½ (s_prev - s) uᵀK_p u lost to cracks in this step [J]
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static) reduction(+ : energy, released)

@@ -25,7 +25,7 @@ public:
 	vector<Real> stiffnessBound() const;
 	/// Number of elements.
 	int nElements() const { return int(nodes.size() / 8); }
-	/// Current scale factor of each element (1 intact, 0 released by a crack).
+	/// Current scale factor of each element (1 intact, 0 released by a crack or an erased block).
 	vector<Real> elementScales();
 	void         postLoad(RdemPoissonEngine&);
 	// clang-format off
@@ -37,7 +37,7 @@ One virtual 8-node hexahedral finite element is made for every $2\times2\times2$
 
 *Corotational* (``corotational=True``): the element's rigid rotation (polar decomposition of the deformation gradient at its centre) is removed before $K_p$ and the forces are rotated back, so rigidly rotating groups of blocks stay force-free (needed when blocks rotate by more than a few degrees, e.g. masonry collapse). Off by default, as in the paper.
 
-*Cracks:* an element's forces are scaled by the smallest fraction of intact restoring springs over the 12 bonds between its blocks, so an element bridging an open crack stops pushing its sides apart (a fully broken bond releases it for good).
+*Cracks:* an element's forces are scaled by the smallest fraction of intact restoring springs over the 12 bonds between its blocks, so an element bridging an open crack stops pushing its sides apart (a fully broken bond releases it for good). An element one of whose blocks is erased (``O.bodies.erase``) is released too.
 
 With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemPoisson``, the elements' elastic energy $\tfrac12 s\,\Delta\mathbf{u}^T K_p\Delta\mathbf{u}$ (current value; rotation removed in the corotational case), and ``rdemPoissonRelease``, the element energy $\tfrac12(s_{prev}-s)\Delta\mathbf{u}^T K_p\Delta\mathbf{u}$ taken away when cracks lower an element's scale (cumulated; negative when the released element energy was negative, since $D_p$ alone is indefinite: releasing then *adds* energy, up to a few % of the work in the compression test, doc/stability.md).
 
@@ -56,7 +56,7 @@ With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemPoisson``, the elements' el
 		/* ctor */,
 		.def("build",&RdemPoissonEngine::buildPy,(py::arg("ids")=py::list()),"Make the elements from the bonded blocks ``ids`` (default: all blocks); current positions become the reference. With ``consistent``, block the platens' DOFs first: the skin and spring weights depend on them.")
 		.def("stiffnessBound",&RdemPoissonEngine::stiffnessBound,"Per body, an upper bound of the Poisson stiffness it feels [N/m] (used by :yref:`RdemTimeStepper`).")
-		.def("elementScales",&RdemPoissonEngine::elementScales,"Per element, the current force scale (1 intact, 0 released by a crack).")
+		.def("elementScales",&RdemPoissonEngine::elementScales,"Per element, the current force scale (1 intact, 0 released by a crack or an erased block).")
 		.add_property("nElements",&RdemPoissonEngine::nElements,"Number of elements.")
 	);
 	// clang-format on

@@ -124,6 +124,25 @@ class Poisson(unittest.TestCase):
 			O.bodies[i].state.pos = O.bodies[i].state.refPos + Vector3(0, 0, 1e-6 * O.bodies[i].state.refPos[2])
 		self.assertEqual(max(f.norm() for f in self.poissonForces(ids)), 0)
 
+	def testErasedBlockReleasesItsElements(self):
+		# Erasing a block (O.bodies.erase also erases its bonds) releases the elements it is a node of, and only those:
+		# in a 3×3×3 grid the corner block (0,0,0) is a node of 1 of the 8 elements, the centre block of all 8. Steps go
+		# on without touching the erased block (before the fix, the engine read its position and crashed).
+		ids = self.grid((3, 3, 3))
+		eng = rdem.poissonEngine()
+		self.assertEqual(eng.elementScales(), [1.0] * 8)
+		O.bodies.erase(ids[0])
+		self.assertEqual(sorted(eng.elementScales()), [0.0] + [1.0] * 7)
+		O.bodies.erase(ids[13])
+		self.assertEqual(eng.elementScales(), [0.0] * 8)
+		for i in ids:
+			if O.bodies[i]:
+				O.bodies[i].state.blockedDOFs = ''
+				O.bodies[i].state.vel = Vector3(0, 0, 1e-3 * (O.bodies[i].state.pos[2] - H))
+		O.run(20, True)
+		self.assertEqual(O.iter, 20)
+		self.assertTrue(all(O.bodies[i].state.pos.norm() < 1 for i in ids if O.bodies[i]))
+
 	def testRefusesRunningBond(self):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat())
