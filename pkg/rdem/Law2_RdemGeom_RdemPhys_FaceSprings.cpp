@@ -142,7 +142,6 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		return Vector2r(invN > 0 ? share / (invN * dt) : inf, invS > 0 ? share / (invS * dt) : inf);
 	};
 	if (nSeg > 0) {
-		p.segDashpot.resize(nSeg, Vector3r::Zero());
 		bool anyIntactOrTouching = false;
 		// A broken segment is in contact while its material points overlap and face each other (slid less than the
 		// smaller half-size of a segment).
@@ -209,7 +208,9 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 				e.bondBreak += energy();
 				p.segShear[i] = Vector3r::Zero();
 			}
-			// Broken: the contact spring of this segment (eqs. 13, 17).
+			// Broken: the contact spring of this segment (eqs. 13, 17). Its dashpot force is kept for the energy balance
+			// (sized here, not for every bond and step: an intact bond never reads that array's header).
+			if (p.segDashpot.size() != nSeg) p.segDashpot.resize(nSeg, Vector3r::Zero());
 			if (touching(un, us)) {
 				const Vector3r r2    = kin.arm(s, r);
 				const Real     share = contactArea > 0 ? A / contactArea : Real(1); // a segment broken in this step joins now

@@ -15,14 +15,15 @@ class RdemPhys : public IPhys {
 public:
 	/// Number of segments whose restoring spring is intact.
 	int nIntact() const;
+	/* The attributes are laid out in memory in this order: what the law reads and writes for an intact bond every step
+	   (stiffnesses, strengths, weights, forces, the per-segment arrays' headers) comes first, in as few cache lines as
+	   possible; the contact parameters and arrays a bond uses only once broken follow (doc/performance.md). */
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemPhys,IPhys,R"""(Physics of a pair of :yref:`RdemBlock` (made by :yref:`Ip2_RdemMat_RdemMat_RdemPhys`, used by :yref:`Law2_RdemGeom_RdemPhys_FaceSprings`).
 
 Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact sample of area $A$ has spring $kA$ and dashpot $cA$. Per-segment state lives in ``segState`` (0 intact, 1 broken in tension, 2 broken in shear) and ``segShear`` (elastic shear elongation of the contact spring of a broken segment). Stresses are positive in tension (paper eq. 14).)""",
 		((Real,kn,0,,"$\\bar{k}_n$, normal spring stiffness per area, eq. 12 [N/m³]."))
 		((Real,ks,0,,"$\\bar{k}_s$, shear spring stiffness per area, eq. 12 [N/m³]."))
-		((Real,cn,0,,"$c_n=2h_n\\sqrt{m_{ave}\\bar{k}_n}$, normal contact dashpot per area, eq. 13 [N·s/m³]."))
-		((Real,cs,0,,"$c_s=2h_s\\sqrt{m_{ave}\\bar{k}_s}$, shear contact dashpot per area, eq. 13 [N·s/m³]."))
 		((Real,tensileStrength,0,,"$f_t$ of the joint [Pa]."))
 		((Real,cohesion,0,,"$c$ of the joint [Pa]."))
 		((Real,tanFriction,0,,"$\\tan\\phi$ of the joint."))
@@ -33,9 +34,11 @@ Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact s
 		((Vector3r,torque2,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"Torque on body 2 about its centroid in the last step (global) [N·m]."))
 		((long,forceIter,-1,(Attr::noSave|Attr::readonly),"Iteration whose ``force``, ``torque1``, ``torque2`` wait for :yref:`RdemForceAssembler` (-1: applied by the law itself)."))
 		((vector<int>,segState,,,"Per bonded segment: 0 intact, 1 broken in tension (eq. 15), 2 broken in shear (eq. 16)."))
-		((vector<Vector3r>,segShear,,,"Per bonded segment: elastic shear elongation of the contact spring after breakage (global) [m]."))
 		((vector<Real>,segSigma,,,"Per bonded segment: normal stress of the last step, positive in tension [Pa]."))
 		((vector<Real>,segTau,,,"Per bonded segment: magnitude of the shear stress of the last step [Pa]."))
+		((Real,cn,0,,"$c_n=2h_n\\sqrt{m_{ave}\\bar{k}_n}$, normal contact dashpot per area, eq. 13 [N·s/m³]."))
+		((Real,cs,0,,"$c_s=2h_s\\sqrt{m_{ave}\\bar{k}_s}$, shear contact dashpot per area, eq. 13 [N·s/m³]."))
+		((vector<Vector3r>,segShear,,,"Per bonded segment: elastic shear elongation of the contact spring after breakage (global) [m]."))
 		((vector<Vector3r>,segDashpot,,,"Per bonded segment: dashpot force of its contact spring in the last step, on body 2 (global) [N]; for the energy balance."))
 		((vector<Vector3r>,sampleShear,,,"Per contact sample key: elastic shear elongation of its contact spring (global) [m]."))
 		((vector<Vector3r>,sampleDashpot,,,"Per contact sample key: dashpot force of the last step, on body 2 (global) [N]; for the energy balance."))
