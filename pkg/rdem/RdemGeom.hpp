@@ -39,6 +39,8 @@ public:
 	vector<Real>     segmentAreas() const { return vector<Real>(nSegments(), segmentArea()); }
 	/// Python: d = P₂ - P₁ of every bonded segment for the given states of the two blocks [m].
 	vector<Vector3r> segDispPy(const shared_ptr<State>& s1, const shared_ptr<State>& s2) const;
+	/* The attributes are laid out in memory in this order: what a bond's law reads every step (the face in both block
+	   frames) and writes (``normal``) comes first, in as few cache lines as possible (doc/performance.md). */
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemGeom,IGeom,R"""(Geometry of a pair of :yref:`RdemBlock` (built by :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom`).
 
@@ -47,8 +49,6 @@ public:
 *Sampled contacts.* Blocks that are not bonded interact where sample points of one block's faces (an $(n+1)\times(n+1)$ trapezoid grid per face, corners and edges included) have entered the other block: one normal for the pair (the face axis of least overlap), depth = distance to travel along it to leave the other block, weight = trapezoid area × cosine between the sampled face and the normal, halved because both blocks are sampled; plus one edge-to-edge contact when two edges cross (separating-axis test); see doc/theory.md.)""",
 		((int,samplesPerEdge,2,,"$n$: segments per face edge of the bond, and sample-grid density of contacts."))
 		((bool,bonded,false,,"Whether the pair is bonded: its shared face carries $n\\times n$ segments."))
-		((Real,ell1,0,,"Distance from the centroid of body 1 to the bonded (or first contacted) face, $\\ell_A$ of eq. 12 [m]."))
-		((Real,ell2,0,,"Distance from the centroid of body 2 to its face, $\\ell_B$ of eq. 12 [m]."))
 		((Vector3r,segNormal1,Vector3r::Zero(),,"Outward unit normal of body 1's bonded face, in body-1 frame."))
 		((Vector3r,segNormal2,Vector3r::Zero(),,"Outward unit normal of body 2's bonded face, in body-2 frame."))
 		((Vector3r,faceCentre1,Vector3r::Zero(),,"Centre of the bonded face in body-1 frame [m]."))
@@ -58,6 +58,8 @@ public:
 		((Vector3r,segHalf2u,Vector3r::Zero(),,"``segHalf1u`` in body-2 frame [m]."))
 		((Vector3r,segHalf2v,Vector3r::Zero(),,"``segHalf1v`` in body-2 frame [m]."))
 		((Vector3r,normal,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"Unit normal of the bonded face in the last step, from body 1 to body 2 (global); zero until the law has run."))
+		((Real,ell1,0,,"Distance from the centroid of body 1 to the bonded (or first contacted) face, $\\ell_A$ of eq. 12 [m]."))
+		((Real,ell2,0,,"Distance from the centroid of body 2 to its face, $\\ell_B$ of eq. 12 [m]."))
 		((vector<int>,sampleKey,,(Attr::noSave|Attr::readonly),"Per active contact sample: which sample it is (a stable index, for the shear history)."))
 		((vector<Vector3r>,samplePoint,,(Attr::noSave|Attr::readonly),"Per active contact sample: contact point (global) [m]."))
 		((vector<Vector3r>,sampleNormal,,(Attr::noSave|Attr::readonly),"Per active contact sample: unit normal from body 1 to body 2 (global)."))
