@@ -21,7 +21,7 @@ Cases
     scaling     springs + failure + contact gate + Poisson on cubes of --sizes blocks per edge (default 10, 22, 46:
                 1.2e3 … 1.0e5 blocks with the platens), one thread, with the memory per block (peak resident set after
                 building, over the block count), the exponent of the wall time per step against the block count
-                between neighbouring sizes, and a plot (<out>.png, e.g. doc/scaling.png);
+                between neighbouring sizes, and a plot (figures/<name>.png beside --out, e.g. doc/figures/scaling.png);
     instructions  the paper scene's instructions per block-step under valgrind's callgrind: the one figure that does
                 not move with the machine's load (needs valgrind).
     misses      memory traffic of the 22³ cube (11 616 blocks, beyond this machine's 32 MB L3 cache): last-level data
@@ -349,7 +349,8 @@ if sc:
 		import matplotlib
 		matplotlib.use('Agg')
 		import matplotlib.pyplot as plt
-		figure = os.path.splitext(opts.out)[0] + '.png'
+		figure = os.path.join(os.path.dirname(opts.out), 'figures', os.path.splitext(os.path.basename(opts.out))[0] + '.png')
+		os.makedirs(os.path.dirname(figure), exist_ok=True)
 		blocks = [r['bodies'] for r in sc]
 		fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
 		left.loglog(blocks, [w / 1e3 for w in wall], 'o-', label='measured (fastest round)')
@@ -368,7 +369,7 @@ if sc:
 		right.legend()
 		fig.tight_layout()
 		fig.savefig(figure, dpi=110)
-		lines += ['![scaling](%s)' % os.path.basename(figure), '']
+		lines += ['![scaling](%s)' % os.path.relpath(figure, os.path.dirname(opts.out) or '.'), '']
 with open(opts.out, 'w') as f:
 	f.write('\n'.join(lines))
 with open(os.path.splitext(opts.out)[0] + '.json', 'w') as f:
