@@ -48,8 +48,8 @@ namespace {
 		for (int k = 0; k < 3; ++k) {
 			const int      k1 = (k + 1) % 3, k2 = (k + 2) % 3;
 			const Vector3r t1 = X.rot.col(k1), t2 = X.rot.col(k2);
-			const Vector3r q1 = toY * t1, q2 = toY * t2;                     // the face's in-plane axes in Y's frame
-			const Real     area = 4 * X.half[k1] * X.half[k2] / Real(n * n); // of a segment of these faces [m²]
+			const Vector3r q1 = toY * t1, q2 = toY * t2;                        // the face's in-plane axes in Y's frame
+			const Real     area = rdem::segmentArea(X.half[k1], X.half[k2], n); // of a segment of these faces [m²]
 			for (int side = 0; side < 2; ++side) {
 				const Real     s      = side ? 1 : -1;
 				const Vector3r nf     = s * X.rot.col(k);
@@ -97,7 +97,7 @@ namespace {
 		Real segArea = std::numeric_limits<Real>::infinity();
 		for (const Block* X : { &A, &B })
 			for (int k = 0; k < 3; ++k)
-				segArea = math::min(segArea, 4 * X->half[(k + 1) % 3] * X->half[(k + 2) % 3] / Real(n * n));
+				segArea = math::min(segArea, rdem::segmentArea(X->half[(k + 1) % 3], X->half[(k + 2) % 3], n));
 		g.sampleKey.push_back(2 * 6 * (n + 1) * (n + 1));
 		g.samplePoint.push_back(hit.point);
 		g.sampleNormal.push_back(hit.normal);

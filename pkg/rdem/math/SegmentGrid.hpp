@@ -24,6 +24,9 @@ namespace rdem {
 		S                      weight; ///< tributary area [m²]
 	};
 
+	/// Area of one of the n×n equal segments of a rectangle of half-sizes h1, h2 [m]: 4h1h2/n² [m²].
+	template <class S> S segmentArea(S h1, S h2, int n) { return 4 * h1 * h2 / S(n * n); }
+
 	/// Centres and areas of the n×n segments of the rectangle c + s·t1 + r·t2, |s| ≤ h1, |r| ≤ h2 (t1, t2 unit, orthogonal).
 	template <class S>
 	std::vector<SurfacePoint<S>>
@@ -31,7 +34,7 @@ namespace rdem {
 	{
 		std::vector<SurfacePoint<S>> pts;
 		pts.reserve(size_t(n * n));
-		const S area = 4 * h1 * h2 / S(n * n);
+		const S area = segmentArea(h1, h2, n);
 		for (int i = 0; i < n; ++i)
 			for (int j = 0; j < n; ++j) {
 				const S s = h1 * (S(2 * i + 1) / S(n) - 1), r = h2 * (S(2 * j + 1) / S(n) - 1);
@@ -57,7 +60,7 @@ namespace rdem {
 	{
 		std::vector<SurfacePoint<S>> pts;
 		pts.reserve(size_t((n + 1) * (n + 1)));
-		const S area = 4 * h1 * h2 / S(n * n);
+		const S area = segmentArea(h1, h2, n);
 		for (int i = 0; i <= n; ++i) {
 			const auto a = trapezoidNode<S>(i, n);
 			for (int j = 0; j <= n; ++j) {
