@@ -333,6 +333,18 @@ double overlapAlong(const Block& A, const Block& B, const V3& axis)
 }
 bool separatedAlong(const Block& A, const Block& B, const V3& axis, double tol) { return overlapAlong(A, B, axis) <= tol; }
 
+// A block with a random rotation, half-extents in [0.2, 1] m and its centre in [-spread, spread]³ m, drawn from gen
+// (std::mt19937 is fully specified; the mapping to [0, 1) is done here, so a seed gives the same blocks everywhere).
+Block randomBlock(std::mt19937& gen, double spread)
+{
+	auto               uniform = [&gen](double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); };
+	Eigen::Quaterniond q(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+	q.normalize();
+	return Block { V3(uniform(-spread, spread), uniform(-spread, spread), uniform(-spread, spread)),
+		       q.toRotationMatrix(),
+		       V3(uniform(0.2, 1), uniform(0.2, 1), uniform(0.2, 1)) };
+}
+
 // Smallest vertex-projection overlap over the 15 separating-axis candidates; > 0 iff the boxes intersect (SAT).
 double minOverlap15(const Block& A, const Block& B)
 {
@@ -353,16 +365,8 @@ TEST(BlockGeometry, BlockPairProjectionsEqualTheWorldFrameOnes)
 	// projectionOverlap computes in global coordinates, for 50 random pairs (general rotations, unequal half-extents,
 	// B's centre in [-2, 2]³ m): agreement to 1e-13 m (round-off of O(1) coordinates, ~1e-15 m, with margin).
 	std::mt19937 gen(20261122);
-	auto         uniform     = [&gen](double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); };
-	auto         randomBlock = [&](double spread) {
-                Eigen::Quaterniond q(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-                q.normalize();
-                return Block { V3(uniform(-spread, spread), uniform(-spread, spread), uniform(-spread, spread)),
-                               q.toRotationMatrix(),
-                               V3(uniform(0.2, 1), uniform(0.2, 1), uniform(0.2, 1)) };
-	};
 	for (int k = 0; k < 50; ++k) {
-		const Block                   A = randomBlock(0.5), B = randomBlock(2.0);
+		const Block                   A = randomBlock(gen, 0.5), B = randomBlock(gen, 2.0);
 		const rdem::BlockPair<double> pair(A, B);
 		for (int i = 0; i < 3; ++i) {
 			EXPECT_NEAR(pair.overlapA(i), rdem::projectionOverlap(A, B, V3(A.rot.col(i))), 1e-13);
@@ -435,21 +439,14 @@ TEST(BlockGeometry, BlocksOverlapNeedsTheEdgeAxes)
 TEST(BlockGeometry, BlocksOverlapAgreesWithAVertexBasedSeparatingAxisTest)
 {
 	// 400 pairs of boxes with general rotations, unequal half-extents in [0.2, 1] m and B's centre in [-2, 2]³ m,
-	// from a fixed-seed generator (std::mt19937 is fully specified, the mapping to [0, 1) is done here). The reference
-	// projects the 16 vertices on the 15 SAT axes. Pairs within 1e-9 m of the threshold are skipped: the two
-	// computations round differently (~1e-15 m), so only those could legitimately disagree.
+	// from a fixed-seed generator (randomBlock). The reference projects the 16 vertices on the 15 SAT axes. Pairs
+	// within 1e-9 m of the threshold are skipped: the two computations round differently (~1e-15 m), so only those
+	// could legitimately disagree.
 	std::mt19937 gen(20260122);
-	auto         uniform = [&gen](double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); };
-	auto         randomBlock = [&](double spread) {
-                Eigen::Quaterniond q(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-                q.normalize();
-                return Block { V3(uniform(-spread, spread), uniform(-spread, spread), uniform(-spread, spread)), q.toRotationMatrix(),
-                               V3(uniform(0.2, 1), uniform(0.2, 1), uniform(0.2, 1)) };
-	};
 	const double tol = 1e-3;
 	int          overlapping = 0, apart = 0;
 	for (int k = 0; k < 400; ++k) {
-		const Block  A = randomBlock(0.0), B = randomBlock(2.0);
+		const Block  A = randomBlock(gen, 0.0), B = randomBlock(gen, 2.0);
 		const double m = minOverlap15(A, B);
 		if (std::abs(m - tol) < 1e-9) continue;
 		const bool expected = m > tol;
