@@ -239,8 +239,8 @@ if 'effects' in opts.cases:
 		plan.append(('effects', label, dict(kind='rdem', options=options, steps=steps, warmup=warmup), 1))
 if 'scaling' in opts.cases:
 	sizes = opts.sizes or ((10, 22) if opts.quick else (10, 22, 46))
-	if min(sizes) < 2:
-		sys.exit('--sizes %s: blocks per edge must be integers >= 2' % ' '.join(map(str, sizes)))
+	if min(sizes) < 2 or len(set(sizes)) != len(sizes):
+		sys.exit('--sizes %s: blocks per edge must be distinct integers >= 2' % ' '.join(map(str, sizes)))
 	for n in sorted(sizes):
 		nSteps = max(50, int(steps * 1200 / (n * n * (n + 2))))  # about the same wall time per cube
 		spec = dict(kind='rdem', blocks=n, options=dict(dt=None), steps=nSteps, warmup=min(warmup, nSteps))  # dt: RdemTimeStepper
