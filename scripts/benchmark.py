@@ -19,9 +19,10 @@ Cases
                 O.dt = 0.8 PWaveTimeStep: what a YADE user runs today for concrete, 1 and 2 threads;
     effects     the paper's geometry with one more effect at a time (see EFFECTS);
     scaling     springs + failure + contact gate + Poisson on cubes of --sizes blocks per edge (default 10, 22, 46:
-                1.2e3 … 1.0e5 blocks with the platens), one thread, with the memory per block (peak resident set after
-                building, over the block count), the exponent of the wall time per step against the block count
-                between neighbouring sizes, and a plot (figures/<name>.png beside --out, e.g. doc/figures/scaling.png);
+                1.2e3 … 1.0e5 blocks with the platens), one thread, and YADE's CpmMat spheres (as in "cpm") on the
+                same grids as the reference; with the memory per body (peak resident set after building, over the
+                body count), the exponent of the wall time per step against the body count between neighbouring
+                sizes, and a plot (figures/<name>.png beside --out, e.g. doc/figures/scaling.png);
     instructions  the paper scene's instructions per block-step under valgrind's callgrind: the one figure that does
                 not move with the machine's load (needs valgrind).
     misses      memory traffic of the 22³ cube (11 616 blocks, beyond this machine's 32 MB L3 cache): last-level data
@@ -120,12 +121,16 @@ def runRdem(spec):
 
 
 def runCpm(spec):
-	"""YADE's CpmMat concrete on the paper's grid (see the header)."""
+	"""YADE's CpmMat concrete on the paper's grid, or on the grid of a scaling cube of spec['blocks'] per edge (see the
+	header)."""
 	from yade import O, utils, Vector3
 	from yade.wrapper import (CpmMat, ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, InteractionLoop, Ig2_Sphere_Sphere_ScGeom,
 	                          Ip2_CpmMat_CpmMat_CpmPhys, Law2_ScGeom_CpmPhys_Cpm, NewtonIntegrator)
 	O.reset()
-	r, nx, nz, factor = 0.01, 10, 12, 1.2
+	mem0 = peakMemoryMB()
+	t0 = time.time()
+	nx = spec.get('blocks', 10)
+	r, nz, factor = 0.01, nx + 2, 1.2
 	mat = O.materials.append(CpmMat(young=30e9, poisson=0.2, density=2300, frictionAngle=0.557, epsCrackOnset=1e-4, relDuctility=30, sigmaT=4.5e6))
 	ids = {}
 	for k in range(nz):
@@ -150,7 +155,8 @@ def runCpm(spec):
 			if k == nz - 1:
 				O.bodies[b].state.vel = Vector3(0, 0, -1e-3)
 	n = len(O.bodies)
-	out = dict(bodies=n, bonds=len([I for I in O.interactions if I.isReal]), dt=O.dt)
+	out = dict(bodies=n, bonds=len([I for I in O.interactions if I.isReal]), dt=O.dt, setupSeconds=time.time() - t0,
+	           memoryPerBodyKB=(peakMemoryMB() - mem0) * 1024 / n)
 	out.update(timed(n, spec['steps'], spec['warmup']))
 	return out
 
@@ -245,6 +251,7 @@ if 'scaling' in opts.cases:
 		nSteps = max(50, int(steps * 1200 / (n * n * (n + 2))))  # about the same wall time per cube
 		spec = dict(kind='rdem', blocks=n, options=dict(dt=None), steps=nSteps, warmup=min(warmup, nSteps))  # dt: RdemTimeStepper
 		plan.append(('scaling', '%d³ blocks' % n, spec, 1))
+		plan.append(('scaling-cpm', '%d³ CpmMat spheres' % n, dict(spec, kind='cpm'), 1))
 
 if opts.repeat < 1:
 	sys.exit('--repeat %d: must be >= 1' % opts.repeat)
@@ -328,45 +335,53 @@ if eff:
 		lines.append('| %s | %.0f | %.3f | %.3f | %s | %.2f | %d |' % (r['label'], r['stepsPerSecond'], r['usPerBodyStep'], r['usPerBodyStepMedian'], rounds(r),
 		                                                             r['usPerBodyStep'] / base, r['breaks']))
 	lines.append('')
-sc = [r for r in results if r['section'] == 'scaling']
-if sc:
-	# Wall time per step w = µs per block-step × blocks; between neighbouring sizes, w grows as N^p with
-	# p = ln(w₂/w₁)/ln(N₂/N₁) (1 for a cost linear in the number of blocks).
-	wall = [r['usPerBodyStep'] * r['bodies'] for r in sc]
-	exponent = ['–'] + ['%.2f' % (math.log(wall[i] / wall[i - 1]) / math.log(sc[i]['bodies'] / sc[i - 1]['bodies'])) for i in range(1, len(sc))]
+# Wall time per step w = µs per body-step × bodies; between neighbouring sizes, w grows as N^p with p = ln(w₂/w₁)/ln(N₂/N₁)
+# (1 for a cost linear in the number of bodies).
+models = [(label, [r for r in results if r['section'] == section]) for label, section in (('refined DEM', 'scaling'), ('YADE CpmMat', 'scaling-cpm'))]
+models = [(label, rows) for label, rows in models if rows]
+wallPerStep = lambda rows: [r['usPerBodyStep'] * r['bodies'] for r in rows]
+if models:
 	lines += [
 	    '## Scaling with the number of blocks (one thread)', '',
-	    '"exponent": $p$ of the wall time per step $\\propto N^p$ from the row above (1: linear in the number of blocks $N$).', '',
-	    '| cube | blocks | Poisson elements | set-up [s] | steps/s | µs per block-step | median window | rounds | exponent | memory per block [kB] | breaks |',
-	    '|---|---|---|---|---|---|---|---|---|---|---|'
+	    'The refined DEM on cubes of $n^3$ blocks between two platen layers ($n\\times n\\times(n+2)$ bodies), and YADE\'s `CpmMat` spheres on '
+	    'the same grids (see the header of scripts/benchmark.py). "exponent": $p$ of the wall time per step $\\propto N^p$ from the row above '
+	    '(1: linear in the number of bodies $N$); "× smallest": µs per body-step over the smallest cube\'s.', '',
+	    '| model | cube | bodies | Poisson elements | set-up [s] | steps/s | µs per body-step | median window | rounds | exponent | × smallest | memory per body [kB] | breaks |',
+	    '|---|---|---|---|---|---|---|---|---|---|---|---|---|'
 	]
-	for r, p in zip(sc, exponent):
-		lines.append('| %s | %d | %d | %.1f | %.1f | %.3f | %.3f | %s | %s | %.1f | %d |' % (r['label'], r['bodies'], r['elements'], r['setupSeconds'], r['stepsPerSecond'],
-		                                                                                  r['usPerBodyStep'], r['usPerBodyStepMedian'], rounds(r), p, r['memoryPerBodyKB'],
-		                                                                                  r['breaks']))
+	for label, rows in models:
+		wall = wallPerStep(rows)
+		exponent = ['–'] + ['%.2f' % (math.log(wall[i] / wall[i - 1]) / math.log(rows[i]['bodies'] / rows[i - 1]['bodies'])) for i in range(1, len(rows))]
+		for r, p in zip(rows, exponent):
+			lines.append('| %s | %s | %d | %s | %.1f | %.1f | %.3f | %.3f | %s | %s | %.2f | %.1f | %s |' %
+			             (label, r['label'].split(' ')[0], r['bodies'], r.get('elements', '–'), r['setupSeconds'], r['stepsPerSecond'], r['usPerBodyStep'],
+			              r['usPerBodyStepMedian'], rounds(r), p, r['usPerBodyStep'] / rows[0]['usPerBodyStep'], r['memoryPerBodyKB'], r.get('breaks', '–')))
 	lines.append('')
-	if len(sc) >= 2:
+	if max(len(rows) for label, rows in models) >= 2:
 		import matplotlib
 		matplotlib.use('Agg')
 		import matplotlib.pyplot as plt
 		figure = os.path.join(os.path.dirname(opts.out), 'figures', os.path.splitext(os.path.basename(opts.out))[0] + '.png')
 		os.makedirs(os.path.dirname(figure), exist_ok=True)
-		blocks = [r['bodies'] for r in sc]
 		fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
-		left.loglog(blocks, [w / 1e3 for w in wall], 'o-', label='measured (fastest round)')
-		left.loglog(blocks, [wall[0] / 1e3 * b / blocks[0] for b in blocks], 'k--', lw=0.8, label='linear from the smallest cube')
-		left.set_xlabel('blocks')
+		for (label, rows), colour in zip(models, ('C0', 'C1')):
+			bodies, wall = [r['bodies'] for r in rows], wallPerStep(rows)
+			left.loglog(bodies, [w / 1e3 for w in wall], 'o-', color=colour, label=label)
+			left.loglog(bodies, [wall[0] / 1e3 * b / bodies[0] for b in bodies], '--', color=colour, lw=0.8, label=label + ', linear from the smallest')
+			right.semilogx(bodies, [r['usPerBodyStep'] for r in rows], 'o-', color=colour, label=label + ', fastest round')
+			right.semilogx(bodies, [r['usPerBodyStepMedian'] for r in rows], 's:', color=colour, label=label + ', median window')
+		left.set_xlabel('bodies')
 		left.set_ylabel('wall time per step [ms]')
-		left.legend()
-		right.semilogx(blocks, [r['usPerBodyStep'] for r in sc], 'o-', label='fastest round')
-		right.semilogx(blocks, [r['usPerBodyStepMedian'] for r in sc], 's:', label='median window')
-		cacheBlocks = 32 * 1024 / (sum(r['memoryPerBodyKB'] for r in sc) / len(sc))  # blocks whose memory fills a 32 MB L3
-		right.axvline(cacheBlocks, color='grey', lw=0.8)
-		right.text(cacheBlocks, 0.05, ' 32 MB of blocks', color='grey', transform=right.get_xaxis_transform())
+		left.legend(fontsize='small')
+		rdemRows = dict(models).get('refined DEM')
+		if rdemRows:
+			cacheBlocks = 32 * 1024 / (sum(r['memoryPerBodyKB'] for r in rdemRows) / len(rdemRows))  # blocks whose memory fills a 32 MB L3
+			right.axvline(cacheBlocks, color='grey', lw=0.8)
+			right.text(cacheBlocks, 0.05, ' 32 MB of blocks', color='grey', transform=right.get_xaxis_transform())
 		right.set_ylim(bottom=0)
-		right.set_xlabel('blocks')
-		right.set_ylabel('µs per block-step')
-		right.legend()
+		right.set_xlabel('bodies')
+		right.set_ylabel('µs per body-step')
+		right.legend(fontsize='small')
 		fig.tight_layout()
 		fig.savefig(figure, dpi=110)
 		lines += ['![scaling](%s)' % os.path.relpath(figure, os.path.dirname(opts.out) or '.'), '']
