@@ -5,6 +5,7 @@
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
+#include <pkg/rdem/RdemPrefetch.hpp>
 #include <pkg/rdem/math/BlockGeometry.hpp>
 #include <pkg/rdem/math/SegmentGrid.hpp>
 #include <limits>
@@ -124,6 +125,9 @@ void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom
 		throw std::invalid_argument("Ig2_RdemBlock_RdemBlock_RdemGeom.segmentsPerEdge = " + std::to_string(segmentsPerEdge) + ": must be an integer >= 1");
 	if (!(bondGapTolerance >= 0))
 		throw std::invalid_argument("Ig2_RdemBlock_RdemBlock_RdemGeom.bondGapTolerance = " + std::to_string(bondGapTolerance) + ": must be >= 0");
+	if (prefetchDistance < -1)
+		throw std::invalid_argument(
+		        "Ig2_RdemBlock_RdemBlock_RdemGeom.prefetchDistance = " + std::to_string(prefetchDistance) + ": must be -1 (automatic), 0 (off) or > 0");
 }
 
 bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
@@ -135,6 +139,9 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
         const bool&                    force,
         const shared_ptr<Interaction>& I)
 {
+	// The first functor of every interaction: asks for the data of the interactions that follow (RdemPrefetch.hpp).
+	if (const int distance = rdem::prefetchDistanceFor(prefetchDistance, scene->interactions->size()))
+		rdem::prefetchInteractionsAhead(*scene, *I, distance);
 	if (I->geom && static_cast<RdemGeom*>(I->geom.get())->bonded)
 		return true; // bonded: the law takes the segments' kinematics from the blocks' states (RdemGeom::kinematics)
 	const Block A { state1.pos, state1.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape1.get())->extents };

@@ -9,6 +9,7 @@ import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, NewtonIntegrator
 import rdem
+import rdem.build
 
 E, NU, H = 30e9, 0.2, 0.01
 HERE = os.path.dirname(os.path.abspath(sys.argv[0]))  # YADE runs the test file as sys.argv[0]
@@ -111,6 +112,28 @@ class Assembly(unittest.TestCase):
 		worst = max(abs(a - b) for p1, p2 in zip(out[1], out[2]) for a, b in zip(p1, p2))
 		# forces are summed per thread in another order: differences of a few ulp of 0.2 m (measured: 0)
 		self.assertLess(worst, 1e-12)
+
+	def testPrefetchChangesNoResult(self):
+		# Software prefetch (Ig2_RdemBlock_RdemBlock_RdemGeom.prefetchDistance, doc/performance.md) is a hint to the
+		# processor: the same scene must give the same bits with it off, on, and reaching past the container's end. The
+		# run cracks, makes sampled contacts, and loses a block half-way (an erased body among the prefetched ones).
+		from rdem.scenes import CompressionTest
+		runs = {}
+		for distance in (0, -1, 8, 100000):  # off, automatic (off in so small a scene), on, past the container's end
+			harness.freshScene()
+			CompressionTest(blocksPerEdge=4, tensileStrength=2e6, rate=0.5, dt=2e-6)
+			rdem.build.geomFunctor().prefetchDistance = distance
+			O.run(40, True)
+			O.bodies.erase(40)
+			O.run(40, True)
+			law = rdem.build.law()
+			contacts = sum(1 for I in O.interactions if I.isReal and not I.geom.bonded)
+			runs[distance] = ([tuple(b.state.pos) + tuple(b.state.ori) for b in O.bodies if b], law.tensionBreaks + law.shearBreaks, contacts)
+		self.assertGreater(runs[0][1], 0)  # springs broke (measured: 83)
+		self.assertGreater(runs[0][2], 0)  # and blocks touch as sampled contacts (measured: 84)
+		self.assertEqual(runs[-1], runs[0])
+		self.assertEqual(runs[8], runs[0])
+		self.assertEqual(runs[100000], runs[0])
 
 
 if __name__ == '__main__':

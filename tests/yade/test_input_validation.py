@@ -42,6 +42,8 @@ class InputValidation(unittest.TestCase):
 			ig2.segmentsPerEdge = -2  # set directly on the functor
 		with self.assertRaisesRegex(ValueError, r'bondGapTolerance = -1.*>= 0'):
 			Ig2_RdemBlock_RdemBlock_RdemGeom().bondGapTolerance = -1
+		with self.assertRaisesRegex(ValueError, r'prefetchDistance = -2.*-1 \(automatic\), 0 \(off\) or > 0'):
+			Ig2_RdemBlock_RdemBlock_RdemGeom().prefetchDistance = -2
 		ip2 = Ip2_RdemMat_RdemMat_RdemPhys()
 		with self.assertRaisesRegex(ValueError, r'springModulus = 2.*0 \(paper\) or 1'):
 			ip2.springModulus = 2
