@@ -37,7 +37,7 @@ namespace rdem {
 	/// rounds, 16 slower (doc/performance.md).
 	constexpr int autoPrefetchDistance = 8;
 
-	/// Size of the last-level cache [bytes] (sysconf; 32 MiB if the system does not say).
+	/// Size of the last-level cache one core uses [bytes] (Linux sysfs; 32 MiB if the system does not say).
 	size_t lastLevelCacheBytes();
 
 	/* The distance to prefetch at in a scene of nInteractions interactions for a requested distance: > 0 and 0 as
