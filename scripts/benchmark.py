@@ -381,7 +381,7 @@ if models:
 		right.set_ylim(bottom=0)
 		right.set_xlabel('bodies')
 		right.set_ylabel('µs per body-step')
-		right.legend(fontsize='small')
+		right.legend(fontsize='small', loc='upper left')
 		fig.tight_layout()
 		fig.savefig(figure, dpi=110)
 		lines += ['![scaling](%s)' % os.path.relpath(figure, os.path.dirname(opts.out) or '.'), '']
