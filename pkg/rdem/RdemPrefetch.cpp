@@ -94,9 +94,9 @@ namespace rdem {
 
 	void prefetchInteractionsAhead(Scene& scene, const Interaction& current, int distance)
 	{
+		if (distance <= 0) return;
 		auto&      intrs = *scene.interactions;
 		const long size  = long(intrs.size());
-		if (distance <= 0) return;
 		const long index = current.linIx; // not set (any value) before the interaction enters the container
 		if (index < 0 || index >= size || intrs[index].get() != &current) return;
 		const auto& bodies = scene.bodies->body;
