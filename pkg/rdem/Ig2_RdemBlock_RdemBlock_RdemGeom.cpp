@@ -46,6 +46,10 @@ namespace {
 		const Vector3r u       = which == 0 ? Vector3r(-normal) : normal;
 		const Matrix3r toY     = Y.rot.transpose();
 		const Vector3r uq      = toY * u; // u in Y's frame (rdem::sampleDepthLocal)
+		const State&   s1      = which == 0 ? sx : sy;
+		const State&   s2      = which == 0 ? sy : sx;
+		const Vector3r x1      = which == 0 ? X.pos : Y.pos;
+		const Vector3r x2      = which == 0 ? Y.pos : X.pos;
 		for (int k = 0; k < 3; ++k) {
 			const int      k1 = (k + 1) % 3, k2 = (k + 2) % 3;
 			const Vector3r t1 = X.rot.col(k1), t2 = X.rot.col(k2);
@@ -70,10 +74,6 @@ namespace {
 						const auto hit = rdem::sampleDepthLocal<Real>(Y.half, qa + rb * q2, uq);
 						if (!hit.hit) continue;
 						const Vector3r point = fc + sa * t1 + rb * t2 + (hit.depth / 2) * u;
-						const State&   s1    = which == 0 ? sx : sy;
-						const State&   s2    = which == 0 ? sy : sx;
-						const Vector3r x1    = which == 0 ? X.pos : Y.pos;
-						const Vector3r x2    = which == 0 ? Y.pos : X.pos;
 						g.sampleKey.push_back((which * 6 + face) * perFace + i * (n + 1) + j);
 						g.samplePoint.push_back(point);
 						g.sampleNormal.push_back(normal);
