@@ -13,13 +13,24 @@ Typical use inside a YADE script (``yade script.py`` with the launcher made by t
 
 Modules: :mod:`rdem.build` (blocks, bonds, engine lists), :mod:`rdem.measure` (stresses, apparent moduli, cracks),
 :mod:`rdem.export` (ParaView files of cracks and Poisson elements), :mod:`rdem.scenes` (the paper's compression test),
-:mod:`rdem.batch` (cases of a study in fresh YADE processes).
+:mod:`rdem.batch` (cases of a study in fresh YADE processes), :mod:`rdem.wall_layout` (masonry wall geometry: bricks,
+mortar and their touching pairs as plain boxes; pure Python: without YADE, ``import rdem`` gives only this module).
 """
-from rdem.build import block, blockGrid, bond, engines, poissonEngine, timeStepper, law, geomFunctor, contactGate
-from rdem.measure import segmentTable, bondSnapshot, brokenSegments, breakCounts, apparentPoisson
-from rdem.export import CrackExport
+from rdem.wall_layout import wallLayout, WallLayout
 
-__all__ = [
+try:
+	import yade as _yade
+except ModuleNotFoundError as e:  # plain Python: only the YADE-free modules (rdem.wall_layout)
+	if e.name != 'yade':
+		raise
+	_yade = None
+
+if _yade is not None:
+	from rdem.build import block, blockGrid, bond, engines, poissonEngine, timeStepper, law, geomFunctor, contactGate
+	from rdem.measure import segmentTable, bondSnapshot, brokenSegments, breakCounts, apparentPoisson
+	from rdem.export import CrackExport
+
+__all__ = ['wallLayout', 'WallLayout'] + ([
         'block', 'blockGrid', 'bond', 'engines', 'poissonEngine', 'timeStepper', 'law', 'geomFunctor', 'contactGate', 'segmentTable', 'bondSnapshot', 'brokenSegments', 'breakCounts',
         'apparentPoisson', 'CrackExport'
-]
+] if _yade is not None else [])
