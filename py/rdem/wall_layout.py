@@ -75,11 +75,16 @@ class WallLayout:
 
 	:ivar length, height, thickness: the masonry's size [m]: the argument if it is the modular size up to round-off
 	    (1e-9 of the brick size), else the modular size (the argument then differs from it by at most 1e-9 relative).
-	:ivar brick: $(l, w, h)$ [m]; :ivar joint: $t$ [m]; :ivar bond, mortar, blocksPerBrick, openings, baseBeam, topBeam,
-	    beamBlocks: the arguments.
+	:ivar brick: $(l, w, h)$ [m].
+	:ivar joint: $t$ [m].
+	:ivar bond, mortar, blocksPerBrick, openings, baseBeam, topBeam, beamBlocks: the arguments (checked, as floats
+	    and ints).
 	:ivar courseCount: the number of courses $N$.
-	:ivar units: list of :class:`Unit`.
-	:ivar blocks: list of boxes ``(lo, hi)``, each a tuple of 3 floats [m]; :ivar blockUnit: the unit of each block.
+	:ivar units: list of :class:`Unit`: the bricks and bats course by course, then the mortar pieces, the base beam
+	    first and the top beam last.
+	:ivar blocks: list of boxes ``(lo, hi)``, each a tuple of 3 floats [m]; the blocks of a unit are consecutive,
+	    $x$ fastest, then $y$, then $z$.
+	:ivar blockUnit: the index in :attr:`units` of each block's unit.
 	:ivar pairs: list of ``(i, j, kind, area)``, block indices $i < j$ whose boxes share a face of positive area [m²];
 	    ``kind`` one of :data:`PAIR_KINDS` (see :func:`wallLayout`). Sorted by $(i, j)$.
 	:ivar dropped: boxes ``(lo, hi)`` of slivers left out next to openings (pieces of a unit cut by an opening that
@@ -136,7 +141,7 @@ class WallLayout:
 		thickness, the back face ($y$ largest) on top."""
 		if view not in ('front', 'plan'):
 			raise ValueError("view = %r: must be 'front' or 'plan'" % (view, ))
-		(l, w, h), t = self.brick, self.joint
+		(l, w, _), t = self.brick, self.joint
 		col = lambda x: int(round((x + t / 2) / ((l + t) / 8)))
 		ncol = col(self.length + t) + 1
 
@@ -718,16 +723,17 @@ def wallLayout(length,
 	valid, rule = _LENGTH_RULES[bond]
 	quarters = _modular('length', length, (l + t) / 4, t, valid, '%s for bond=%r (l = %s, t = %s)' % (rule, bond, _fmt(l), _fmt(t)))
 	f = _Frame(l, w, h, t, quarters, modules, courses, (float(length), float(thickness), float(height)))
+	baseBeam, topBeam = (None if b is None else float(b) for b in (baseBeam, topBeam))
 	openings = _checkOpenings(openings, f.length, f.height, f.tol)
 
 	courseUnits = [_brickUnits(_COURSE_FUNCTIONS[bond](k, quarters, modules), k, f, mortar) for k in range(courses)]
 	mortarUnits = _layerMortar(courseUnits, f) if mortar == 'layer' else []
-	masonry = [u for units in courseUnits for u in units if u.kind != 'mortar'] + mortarUnits
+	masonry = [u for units in courseUnits for u in units if u.kind != 'mortar'] + mortarUnits  # bricks by course, then mortar
 	dropped, units = [], []
 	for u in masonry:
 		units += _cutByOpenings(u, openings, f, dropped) if openings else [u]
 	if baseBeam is not None:
-		units.insert(0, Unit('beam', 'base', None, -1, 0, (0.0, 0.0, -float(baseBeam)), (f.length, f.thickness, 0.0)))
+		units.insert(0, Unit('beam', 'base', None, -1, 0, (0.0, 0.0, -baseBeam), (f.length, f.thickness, 0.0)))
 	if topBeam is not None:
 		units.append(Unit('beam', 'top', None, courses, 0, (0.0, 0.0, f.height), (f.length, f.thickness, f.height + topBeam)))
 
@@ -738,7 +744,7 @@ def wallLayout(length,
 		blocks += boxes
 		blockUnit += [i] * len(boxes)
 	anchors = ([0.0, f.length] + [o[0] for o in openings] + [o[0] + o[2] for o in openings], [0.0, f.thickness],
-	           [0.0, f.height] + [o[1] for o in openings] + [o[1] + o[3] for o in openings] + [-float(baseBeam or 0), f.height + (topBeam or 0)])
+	           [0.0, f.height] + [o[1] for o in openings] + [o[1] + o[3] for o in openings] + [-(baseBeam or 0.0), f.height + (topBeam or 0.0)])
 	blocks = _snap(blocks, anchors, f.tol)
 	for u in units:
 		u.lo = tuple(min(blocks[b][0][d] for b in u.blocks) for d in range(3))
