@@ -228,6 +228,16 @@ class Tiling(Checks):
 				self.check(lay, beams=(0.2, 0.1))
 				self.faceCoverage(lay)
 
+	def testZeroJoint(self):
+		"""joint = 0 (interface only): bricks 240 x 120 x 60 mm touch on their own faces."""
+		for bond, thickness, length in (('running', 0.12, 2.4), ('english', 0.24, 2.4), ('flemish', 0.24, 0.6), ('flemish', 0.36, 0.72)):
+			with self.subTest(bond=bond, thickness=thickness):
+				lay = wallLayout(length, 0.3, thickness, brick=(0.24, 0.12, 0.06), joint=0, bond=bond, blocksPerBrick=(2, 1, 1))
+				self.check(lay)
+				self.faceCoverage(lay)
+				for u in lay.units:
+					self.assertEqual((u.lo, u.hi), (u.nominalLo, u.nominalHi))
+
 	def testPairsAreAllTouchingPairs(self):
 		"""The spatial hashing finds exactly the pairs a comparison of every two blocks finds."""
 		for bond, thickness, length, mortar, per in (('running', TWO, LENGTH, 'layer', (2, 1, 1)), ('english', THREE, 1.03, 'interface', (3, 2, 2)),
