@@ -245,4 +245,22 @@ TEST(Elasticity, LayeredLambdaIsBackusC13)
 	EXPECT_NEAR(rdem::layeredLambda<double>(parts), 2.0122e10, 1e6);
 }
 
+TEST(Elasticity, Eq12WithAMortarJointInSeries)
+{
+	// Two 250×120×55 mm bricks (E = 16.7 GPa, ν = 0.15) with a 10 mm joint of mortar (E = 2 GPa, ν = 0.25), interface
+	// model: each block reaches the joint's mid-plane, ℓ = 27.5 + 5 = 32.5 mm along the height. In series: brick 27.5 mm,
+	// mortar 10 mm, brick 27.5 mm, so 1/k_n = 0.055/M_b + 0.01/M_m (and likewise with G). Tolerance 1e-15 relative.
+	const double Eb = 16.7e9, nub = 0.15, Em = 2e9, num = 0.25, ell = 0.0325, t = 0.01;
+	for (auto m : { SpringModulus::Paper, SpringModulus::Consistent }) {
+		const double Mb = rdem::springNormalModulus(Eb, nub, m), Mm = rdem::springNormalModulus(Em, num, m);
+		const double k  = 1 / (2 * rdem::bondSideCompliance(Mb, ell, Mm, t));
+		EXPECT_NEAR(k, 1 / (0.055 / Mb + 0.01 / Mm), 1e-15 * k);
+	}
+	const double Gb = rdem::shearModulus(Eb, nub), Gm = rdem::shearModulus(Em, num);
+	const double ks = 1 / (2 * rdem::bondSideCompliance(Gb, ell, Gm, t));
+	EXPECT_NEAR(ks, 1 / (0.055 / Gb + 0.01 / Gm), 1e-15 * ks);
+	// No joint: ℓ/M, eq. (11) inverted (exact division).
+	EXPECT_EQ(rdem::bondSideCompliance(Eb, ell, Em, 0.0), ell / Eb);
+}
+
 } // namespace

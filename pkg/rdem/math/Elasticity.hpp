@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <string>
 
 namespace yade {
 namespace rdem {
@@ -28,6 +29,17 @@ namespace rdem {
 	               plus Poisson elements (off-diagonal, eq. 19) add up to the full isotropic tensor
 	               (derivation: doc/theory.md). */
 	enum class SpringModulus { Paper = 0, Consistent = 1 };
+
+	/// The formulation named "paper" or "consistent"; false if the name is neither.
+	inline bool springModulusFromName(const std::string& name, SpringModulus& m)
+	{
+		if (name == "paper") m = SpringModulus::Paper;
+		else if (name == "consistent")
+			m = SpringModulus::Consistent;
+		else
+			return false;
+		return true;
+	}
 
 	/// Lamé's first parameter λ = Eν/((1+ν)(1-2ν)) [Pa]; equals the off-diagonal entry of eq. (18).
 	template <class S> S lameLambda(S E, S nu) { return E * nu / ((1 + nu) * (1 - 2 * nu)); }
@@ -66,6 +78,15 @@ namespace rdem {
 
 	/// Eq. (12) [P]: the springs of blocks A and B in series, k̄ = 1/(1/k_A + 1/k_B) [N/m³].
 	template <class S> S seriesStiffness(S kA, S kB) { return 1 / (1 / kA + 1 / kB); }
+
+	/* Compliance per area of one block's side of a bond [m³/N]: from the block's centroid to the joint's mid-plane at
+	   distance ℓ, the block's material over ℓ - t/2 and the mortar over t/2 (eq. 12 [P] extended by the mortar term of a
+	   joint of thickness t; doc/theory.md §1.1). modulusBlock and modulusMortar are both normal (M) or both shear (G)
+	   moduli [Pa]. t = 0: ℓ/M, the inverse of eq. (11). The bond's stiffness per area is 1/(C_A + C_B). */
+	template <class S> S bondSideCompliance(S modulusBlock, S ell, S modulusMortar, S thickness)
+	{
+		return (ell - thickness / 2) / modulusBlock + (thickness > 0 ? thickness / 2 / modulusMortar : S(0));
+	}
 
 	/// Eq. (13) [P]: equivalent mass per unit contact area m_ave = ρ_A ℓ_A + ρ_B ℓ_B [kg/m²].
 	template <class S> S equivalentMassPerArea(S rhoA, S ellA, S rhoB, S ellB) { return rhoA * ellA + rhoB * ellB; }

@@ -37,6 +37,9 @@ namespace rdem {
 	template <class S> using Mat6x24 = Eigen::Matrix<S, 6, 24>;
 	template <class S> using Nodes8  = std::array<Vec3<S>, 8>;
 
+	/// The 12 edges of the hexahedron: node pairs that differ in one of the bits i, j, k (node a = i + 2j + 4k).
+	constexpr int hex8Edges[12][2] = { { 0, 1 }, { 2, 3 }, { 4, 5 }, { 6, 7 }, { 0, 2 }, { 1, 3 }, { 4, 6 }, { 5, 7 }, { 0, 4 }, { 1, 5 }, { 2, 6 }, { 3, 7 } };
+
 	/// Reference-cube coordinates (ξ_a, η_a, ζ_a) of node a ∈ [0, 8).
 	template <class S> Vec3<S> hex8Corner(int a) { return Vec3<S>(S(2 * (a & 1) - 1), S((a & 2) - 1), S((a & 4) / 2 - 1)); }
 

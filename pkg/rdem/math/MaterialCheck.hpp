@@ -38,5 +38,26 @@ namespace rdem {
 		return err.str();
 	}
 
+	template <class S> struct JointParameters {
+		S thickness, young, poisson, tensileStrength, cohesion, frictionAngle;
+	};
+
+	/// Empty string if all parameters of a mortar joint are admissible, else one line per violated bound.
+	template <class S> std::string checkJoint(const JointParameters<S>& j, const std::string& owner)
+	{
+		using std::isfinite;
+		using std::isnan;
+		std::ostringstream err;
+		const S            pi = S(3.14159265358979323846);
+		auto bad = [&](const char* name, S value, const char* range) { err << owner << "." << name << " = " << value << ": must be " << range << "\n"; };
+		if (!(isfinite(j.thickness) && j.thickness >= 0)) bad("thickness", j.thickness, "finite and >= 0 [m] (0: a bond interface without mortar)");
+		if (!(isfinite(j.young) && j.young > 0)) bad("young", j.young, "finite and > 0 [Pa]");
+		if (!(j.poisson > -1 && j.poisson < S(0.5))) bad("poisson", j.poisson, "in (-1, 0.5)");
+		if (isnan(j.tensileStrength) || j.tensileStrength < 0) bad("tensileStrength", j.tensileStrength, ">= 0 [Pa] (inf: never breaks in tension)");
+		if (isnan(j.cohesion) || j.cohesion < 0) bad("cohesion", j.cohesion, ">= 0 [Pa] (inf: never breaks in shear)");
+		if (!(j.frictionAngle >= 0 && j.frictionAngle < pi / 2)) bad("frictionAngle", j.frictionAngle, "in [0, pi/2) [rad]");
+		return err.str();
+	}
+
 } // namespace rdem
 } // namespace yade

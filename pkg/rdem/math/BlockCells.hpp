@@ -1,0 +1,206 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+/* Poisson cells: the Poisson effect of the consistent formulation on any layout of face-bonded rectangular blocks
+   (running bond, English bond, bricks cut into blocks that do not line up, T-junctions, mixed sizes; doc/theory.md §5.4).
+
+   Each block b is a cell. Its normal strain along its axis d is the divergence-theorem average over the cell of the
+   normal displacement of its ±d faces, ε_d = (1/V) Σ_faces ±A n·u_f. On a bonded patch (one bond) the face value is
+   the point of the bond's face where the two blocks' series springs meet, u_f = u_b(P) + s·d, with d the bond's
+   opening vector at the face centre P, u_b(P) the rigid motion of b at P and s = C_b/(C_b + C_c) the share of the
+   opening on b's side (C: compliance per area from the centroid to the face, eq. 12). On the free part of a face it
+   is u_b(P) extrapolated by ℓ_d times the slope of the bonds along d, Σ β_q (n·d_q)/|s_q| (β_q: area fraction, s_q:
+   centroid distance). The rigid motion of b has no flux through its closed surface, so
+
+        ε_d = Σ_q coef_q u_n,q,   coef_q = (A_q/V)(s_q + ℓ_d A_free,d / (A_bonded,d |s_q|)),        (cell strain)
+
+   a weighted sum of the openings u_n,q = n·d_q of the block's bonds along d (positive = opening, m). The openings
+   are total measures, so a rigid motion of any size gives ε = 0. Units: m, m², Pa; strains positive in extension.
+
+   Energy W = ½ Σ_b V_b ε_bᵀ (D_b - M_b I) ε_b, D_b the normal block of the isotropic tensor (eq. 18) condensed over
+   the axes the cell cannot resolve (σ = 0 there: a block with no bond along an axis, e.g. a one-wythe wall through
+   its thickness), M_b the springs' modulus λ+2μ: the springs (diagonal) and the cells add up to D. The cell force
+   on bond q is -∂W/∂u_n,q along its normal, at the face centre.
+
+   Exactness (doc/theory.md §5.4): for a uniform strain the flux of σ_p = (D - M I)ε cancels across every bonded
+   face, and what is left on a free face is matched by the springs when the bond q of a block with free area on its
+   ±d faces is weighted by w_n = 1 + ℓ_d A_free,d / (|s_q| A_bonded,d) (1.5 for a cube with one free face, as in
+   §5.2). A block whose normal translation along d is prescribed (a platen) with bonds on one side only is a half
+   cell along d, cut at its centroid plane (as Ω stops there in §5.2); its bonds along the other axes then carry half
+   weight. Bonds whose centroids are offset along the face (running bond) need the correction of offsetSlip. */
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <array>
+#include <vector>
+
+namespace yade {
+namespace rdem {
+
+	/// The axis (0, 1, 2) of the largest component of v: the block axis along a face normal given in the block's frame.
+	template <class S> int dominantAxis(const Eigen::Matrix<S, 3, 1>& v)
+	{
+		using std::abs;
+		int k = 0;
+		for (int j = 1; j < 3; ++j)
+			if (abs(v[j]) > abs(v[k])) k = j;
+		return k;
+	}
+
+	/// How a cell treats one of its block's axes.
+	enum class CellAxis {
+		Resolved,  ///< bonds along the axis: the strain comes from their openings (free faces extrapolated)
+		Half,      ///< normal translation prescribed and bonds on one side only: the cell stops at the centroid plane
+		Condensed, ///< no bond along the axis: its strain is eliminated with σ = 0 (plane stress through a one-wythe wall)
+	};
+
+	/// One bond of a block, as the block's cell sees it.
+	template <class S> struct CellBond {
+		int axis;     ///< the block's axis (0, 1, 2) along the bond's normal
+		int side;     ///< +1: on the block's +axis face; -1: on its -axis face
+		S   area;     ///< bonded area [m²]
+		S   share;    ///< the block's share of the bond's opening, C_b/(C_b + C_c) (½ between equal blocks)
+		S   distance; ///< distance between the two centroids along the normal, |s_q| [m]
+	};
+
+	/// A block and its bonds: what its cell is made of.
+	template <class S> struct CellInput {
+		Eigen::Matrix<S, 3, 1> half;            ///< half-extents of the block [m]
+		S                      young, poisson;  ///< of the block's material [Pa], [-]
+		std::array<bool, 3>    prescribed {};   ///< whether the block's translation along each of its axes is prescribed
+		std::vector<CellBond<S>> bonds;
+	};
+
+	/// The cell of a block (see the file's comment).
+	template <class S> struct Cell {
+		using Mat3 = Eigen::Matrix<S, 3, 3>;
+		std::array<CellAxis, 3> axes {};
+		S                       volume = 0;                 ///< V [m³]; 0: no cell (the block has no bond)
+		Mat3                    stiffness = Mat3::Zero();   ///< V (D_cond - M I) on the normal strains [N·m]
+		Mat3                    condensation = Mat3::Zero(); ///< ε_all = condensation · ε (condensed axes from the others)
+		std::array<S, 3>        lateral {};                 ///< per axis d: the cell's extent fraction across d (½ per half axis)
+		std::vector<S>          coef;                        ///< per bond: ∂ε_axis/∂u_n [1/m]
+		std::vector<S>          extraWeight;                 ///< per bond: this block's addition to the bond's w_n
+	};
+
+	/// Normal block of the isotropic elasticity tensor (eq. 18 [P]) condensed over the Condensed axes (σ = 0 there),
+	/// minus the springs' modulus M = λ+2μ on the other axes; rows and columns of Condensed axes are zero [Pa]. Also
+	/// returns the condensation ε_all = C ε (identity on the other axes).
+	template <class S>
+	Eigen::Matrix<S, 3, 3> cellElasticity(S young, S poisson, const std::array<CellAxis, 3>& axes, Eigen::Matrix<S, 3, 3>& condensation)
+	{
+		using Mat3     = Eigen::Matrix<S, 3, 3>;
+		const S lambda = young * poisson / ((1 + poisson) * (1 - 2 * poisson)), mu = young / (2 * (1 + poisson));
+		Mat3    D      = Mat3::Constant(lambda) + 2 * mu * Mat3::Identity();
+		std::vector<int> R, U;
+		for (int d = 0; d < 3; ++d)
+			(axes[size_t(d)] == CellAxis::Condensed ? U : R).push_back(d);
+		Mat3 out     = Mat3::Zero();
+		condensation = Mat3::Zero();
+		if (R.empty()) return out;
+		Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> DUU(U.size(), U.size()), DUR(U.size(), R.size());
+		for (size_t i = 0; i < U.size(); ++i) {
+			for (size_t j = 0; j < U.size(); ++j)
+				DUU(long(i), long(j)) = D(U[i], U[j]);
+			for (size_t j = 0; j < R.size(); ++j)
+				DUR(long(i), long(j)) = D(U[i], R[j]);
+		}
+		const Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> CUR
+		        = U.empty() ? Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>(0, long(R.size())) : Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>(-DUU.lu().solve(DUR));
+		for (size_t i = 0; i < R.size(); ++i) {
+			condensation(R[i], R[i]) = 1;
+			for (size_t j = 0; j < R.size(); ++j) {
+				S v = D(R[i], R[j]);
+				for (size_t k = 0; k < U.size(); ++k)
+					v += D(R[i], U[k]) * CUR(long(k), long(j));
+				out(R[i], R[j]) = v - (i == j ? lambda + 2 * mu : S(0));
+			}
+		}
+		for (size_t k = 0; k < U.size(); ++k)
+			for (size_t j = 0; j < R.size(); ++j)
+				condensation(U[k], R[j]) = CUR(long(k), long(j));
+		return out;
+	}
+
+	/// The cell of a block: axes, volume, stiffness, per-bond strain coefficients and spring-weight additions.
+	template <class S> Cell<S> blockCell(const CellInput<S>& in)
+	{
+		Cell<S>            c;
+		std::array<int, 3> sides {}; // bit 1: a bond on the -axis face, bit 2: on the +axis face
+		for (const auto& b : in.bonds)
+			sides[size_t(b.axis)] |= (b.side > 0 ? 2 : 1);
+		std::array<S, 3> frac {};
+		for (size_t d = 0; d < 3; ++d) {
+			c.axes[d] = sides[d] == 0 ? CellAxis::Condensed : ((in.prescribed[d] && sides[d] != 3) ? CellAxis::Half : CellAxis::Resolved);
+			frac[d]   = c.axes[d] == CellAxis::Half ? S(0.5) : S(1);
+		}
+		c.coef.assign(in.bonds.size(), 0);
+		c.extraWeight.assign(in.bonds.size(), 0);
+		if (sides[0] == 0 && sides[1] == 0 && sides[2] == 0) return c;
+		for (size_t d = 0; d < 3; ++d)
+			c.lateral[d] = frac[(d + 1) % 3] * frac[(d + 2) % 3];
+		c.volume = 8 * in.half.prod() * frac[0] * frac[1] * frac[2];
+		c.stiffness = c.volume * cellElasticity<S>(in.young, in.poisson, c.axes, c.condensation);
+		std::array<S, 3> bonded {};
+		for (const auto& b : in.bonds)
+			bonded[size_t(b.axis)] += b.area;
+		for (size_t q = 0; q < in.bonds.size(); ++q) {
+			const auto&  b    = in.bonds[q];
+			const size_t d    = size_t(b.axis);
+			const S      lat  = c.lateral[d];
+			const S      face = 4 * in.half[long((d + 1) % 3)] * in.half[long((d + 2) % 3)];
+			S            coef = b.area * b.share;
+			if (c.axes[d] == CellAxis::Resolved) {
+				const S free = face * 2 > bonded[d] ? face * 2 - bonded[d] : S(0); // of both ±d faces [m²]
+				coef += in.half[long(d)] * free * b.area / (bonded[d] * b.distance);
+				c.extraWeight[q] = lat * in.half[long(d)] * free / (b.distance * bonded[d]);
+			}
+			c.coef[q] = lat * coef / c.volume;
+		}
+		return c;
+	}
+
+	/// Normal weight w_n of a bond from the cells of its two blocks: the smaller of their lateral fractions (½ across a
+	/// platen's half cell) plus each block's extraWeight. The shear weight w_s is that lateral fraction alone.
+	template <class S> S cellBondWeightNormal(S lateral1, S lateral2, S extra1, S extra2) { return (lateral1 < lateral2 ? lateral1 : lateral2) + extra1 + extra2; }
+
+	/* Offset correction of the shear springs (doc/theory.md §5.4). Two bonded blocks whose centroids are offset by δ
+	   along their face (running bond: half a brick) translate apart by εδ under a uniform strain ε, which their rigid
+	   shapes turn into a slip of the face that a continuum does not have. The intact shear springs therefore measure the
+	   slip from the blocks' mean cell strain, d_t - P_t(½(E₁ + E₂)δ), E_b = diag(ε_b) in block b's frame. Everything in
+	   body 1's frame: eps1 and eps2 the normal strains of the blocks along their own axes, R12 = R₁ᵀR₂, delta the
+	   centroid offset and n the face normal. Returns the tangential slip to subtract [m]. Zero for δ = 0 (a grid). */
+	template <class S>
+	Eigen::Matrix<S, 3, 1> offsetSlip(
+	        const Eigen::Matrix<S, 3, 1>& eps1,
+	        const Eigen::Matrix<S, 3, 3>& R12,
+	        const Eigen::Matrix<S, 3, 1>& eps2,
+	        const Eigen::Matrix<S, 3, 1>& delta,
+	        const Eigen::Matrix<S, 3, 1>& n)
+	{
+		const Eigen::Matrix<S, 3, 1> c = (eps1.cwiseProduct(delta) + R12 * eps2.cwiseProduct(R12.transpose() * delta)) / 2;
+		return c - c.dot(n) * n;
+	}
+
+	/* Gradient of the shear springs' energy ½ Σ k_s w_s A |d_t - c_t|² with respect to the cell strains of the two
+	   blocks, given T = Σ k_s w_s A (d_t - c_t) over the intact segments (body-1 frame) [N]: ∂W/∂ε₁ = -½ T∘δ and
+	   ∂W/∂ε₂ = -½ (R12ᵀT)∘(R12ᵀδ) [N·m]. Added to the cells' stresses, they give the reaction of the correction on the
+	   bonds that made the strains, so that the correction is conservative. */
+	template <class S>
+	void offsetSlipGradient(
+	        const Eigen::Matrix<S, 3, 1>& T,
+	        const Eigen::Matrix<S, 3, 3>& R12,
+	        const Eigen::Matrix<S, 3, 1>& delta,
+	        Eigen::Matrix<S, 3, 1>&       grad1,
+	        Eigen::Matrix<S, 3, 1>&       grad2)
+	{
+		grad1 = -T.cwiseProduct(delta) / 2;
+		grad2 = -(R12.transpose() * T).cwiseProduct(R12.transpose() * delta) / 2;
+	}
+
+} // namespace rdem
+} // namespace yade
