@@ -160,6 +160,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 			g->bonded         = true;
 			g->ell1           = A.half[face.axisA];
 			g->ell2           = B.half[face.axisB];
+			g->joint          = joint;
 			g->segNormal1     = A.rot.transpose() * face.normal;
 			g->segNormal2     = -(B.rot.transpose() * face.normal);
 			g->faceCentre1    = A.rot.transpose() * (face.centre - A.pos);

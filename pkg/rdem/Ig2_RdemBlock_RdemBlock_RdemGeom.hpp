@@ -34,6 +34,7 @@ public:
 Not for periodic cells with shear (``shift2`` of the cell is honoured, the cell's shear is not).)""",
 		((int,segmentsPerEdge,2,Attr::triggerPostLoad,"$n$: each bonded face is cut into $n\\times n$ segments (paper: 4 springs per face, $n=2$); also the density of the contact sample grid. $n\\ge 1$."))
 		((Real,bondGapTolerance,1e-6,Attr::triggerPostLoad,"Largest gap or overlap between two faces that are bonded, relative to the smaller half-extent of the two blocks."))
+		((shared_ptr<RdemJoint>,joint,,,"The :yref:`RdemJoint` given to the bonds made from now on (by ``utils.createInteraction``), or None (default): blocks bonded directly. ``rdem.bond(..., joint=...)`` sets it for its bonds and resets it."))
 		((int,prefetchDistance,-1,Attr::triggerPostLoad,"How many interactions ahead of the one being processed this functor asks the processor to fetch the data of (interaction, geometry, physics, bodies and their states, in stages; ``pkg/rdem/RdemPrefetch.hpp``), to hide the memory latency of scenes larger than the cache (doc/performance.md, fifth round). $-1$ (default): automatic, 8 once the interactions' data exceed the last-level cache, else off; 0: off; $>0$: always, at this distance. A hint only: results do not depend on it. $\\ge -1$."))
 	);
 	// clang-format on

@@ -9,23 +9,34 @@
 #include <core/Dispatching.hpp>
 #include <pkg/rdem/RdemMat.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
+#include <pkg/rdem/math/Elasticity.hpp>
 
 namespace yade {
 
-/// Spring stiffness (eqs. 11-12), dashpots (eq. 13) and joint strengths of a pair of blocks.
+/// Spring stiffness (eqs. 11-12, with a mortar joint in series), dashpots (eq. 13) and joint strengths of a pair of blocks.
 class Ip2_RdemMat_RdemMat_RdemPhys : public IPhysFunctor {
 public:
 	void go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I) override;
-	/// Throws std::invalid_argument (Python: ValueError) for a springModulus other than 0 or 1.
+	/// Throws std::invalid_argument (Python: ValueError) for a formulation other than "paper" or "consistent".
 	void postLoad(Ip2_RdemMat_RdemMat_RdemPhys&);
+	/// The springs' modulus this functor uses.
+	rdem::SpringModulus springModulus() const { return modulus; }
+	/// The formulation of the scene: that of its Ip2_RdemMat_RdemMat_RdemPhys (the one place it is set; paper if there is
+	/// none). RdemPoissonEngine and RdemTimeStepper read it here.
+	static rdem::SpringModulus formulationOf(const Scene* scene);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(Ip2_RdemMat_RdemMat_RdemPhys,IPhysFunctor,R"""(Physics functor of two :yref:`RdemMat`, producing :yref:`RdemPhys` once per interaction.
 
-Per-area spring stiffness of each block from eq. 11, $k_n=M/\ell$, $k_s=E/(2(1+\nu)\ell)$, with $\ell$ the centroid-to-face distance (:yref:`RdemGeom::ell1`, ``ell2``); the two blocks in series (eq. 12). $M=E/(1-\nu^2)$ as in the paper (``springModulus=0``) or $M=\lambda+2\mu$ (``springModulus=1``, the *consistent* formulation, which together with :yref:`RdemPoissonEngine` reproduces the full isotropic tensor; see doc/theory.md). Dashpots per area $c=2h\sqrt{m_{ave}\bar{k}}$, $m_{ave}=\rho_A\ell_A+\rho_B\ell_B$ (eq. 13), $h$ the mean of the two materials' constants. The joint takes the smaller tensile strength, bond strength and friction angle of the two materials.)""",
-		((int,springModulus,0,Attr::triggerPostLoad,"Normal modulus of the springs: 0 = paper, $E/(1-\\nu^2)$ (eq. 11); 1 = consistent, $\\lambda+2\\mu$."))
+Per-area spring stiffness of each block from eq. 11, $k_n=M/\ell$, $k_s=E/(2(1+\nu)\ell)$, with $\ell$ the centroid-to-face distance (:yref:`RdemGeom::ell1`, ``ell2``); the two blocks in series (eq. 12). A bond made with an :yref:`RdemJoint` of thickness $t$ adds the mortar in series, $1/\bar k_n=(\ell_A-t/2)/M_A+t/M_m+(\ell_B-t/2)/M_B$ (and likewise with $G$), and breaks on the joint's strengths. Dashpots per area $c=2h\sqrt{m_{ave}\bar{k}}$, $m_{ave}=\rho_A\ell_A+\rho_B\ell_B$ (eq. 13), $h$ the mean of the two materials' constants. Without a joint the bond takes the smaller tensile strength, bond strength and friction angle of the two materials.
+
+``formulation`` is the scene's one setting of the Poisson formulation: :yref:`RdemPoissonEngine` builds the elements or cells of that formulation and :yref:`RdemTimeStepper` bounds contacts with its modulus.)""",
+		((string,formulation,"paper",Attr::triggerPostLoad,"``'paper'``: springs $M=E/(1-\\nu^2)$ (eq. 11) and the paper's Poisson elements; ``'consistent'``: $M=\\lambda+2\\mu$, so that springs and Poisson elements or cells add up to the full isotropic tensor (doc/theory.md §5.2, §5.4)."))
 	);
 	// clang-format on
 	FUNCTOR2D(RdemMat, RdemMat);
+
+private:
+	rdem::SpringModulus modulus = rdem::SpringModulus::Paper; // formulation, parsed (not saved: postLoad sets it)
 };
 REGISTER_SERIALIZABLE(Ip2_RdemMat_RdemMat_RdemPhys);
 

@@ -7,6 +7,8 @@
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <core/InteractionLoop.hpp>
 #include <core/Scene.hpp>
+#include <pkg/rdem/RdemState.hpp>
+#include <pkg/rdem/math/BlockCells.hpp>
 #include <pkg/rdem/math/Failure.hpp>
 #include <limits>
 #include <utility>
@@ -72,6 +74,18 @@ namespace {
 		}
 		dashpot = fD;
 		return fN * n + fS + fDs;
+	}
+
+	/* Offset correction of a bond's intact shear springs (rdem::offsetSlip, doc/theory.md §5.4): the slip ½(E₁ + E₂)δ that
+	   the blocks' cell strains (RdemState::strain, scaled by RdemState::cellScale, from RdemCellStrainUpdater) give two
+	   blocks whose centroids are offset by δ along the face, in global coordinates and in the tangent plane of n [m]. */
+	Vector3r cellOffsetSlip(const State& s1, const State& s2, const Matrix3r& R1, const Matrix3r& R12, const RdemGeom& g, const RdemPhys& p, const Vector3r& n)
+	{
+		const auto&    a     = static_cast<const RdemState&>(s1);
+		const auto&    b     = static_cast<const RdemState&>(s2);
+		const Vector3r local = rdem::offsetSlip<Real>(a.cellScale * a.strain, R12, b.cellScale * b.strain, p.centroidOffset, g.segNormal1);
+		const Vector3r slip  = R1 * local;
+		return slip - slip.dot(n) * n;
 	}
 
 	/// Calls f(law) for every Law2_RdemGeom_RdemPhys_FaceSprings in the InteractionLoops of the scene.
@@ -179,6 +193,11 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 			const Real     un = d.dot(n);
 			if (touching(un, d - un * n)) contactArea += A;
 		});
+		// Bonds whose centroids are offset along the face (cells only): the intact shear springs measure d_t - slip.
+		const bool     offset = p.centroidOffset != Vector3r::Zero();
+		const Matrix3r R12    = offset ? Matrix3r(R1.transpose() * R2) : Matrix3r::Identity();
+		const Vector3r slip   = offset ? cellOffsetSlip(s1, s2, R1, R12, g, p, n) : Vector3r::Zero();
+		Vector3r       tSum   = Vector3r::Zero(); // Σ w_s k_s A (d_t - slip) over the intact segments [N]
 		// Loop invariants in locals: the stores to the per-segment arrays below could alias them (all doubles).
 		const Real kn = p.kn, ks = p.ks, wn = p.weightNormal, ws = p.weightShear;
 		const Real ft = p.tensileStrength, cohesion = p.cohesion, tanPhi = p.tanFriction;
@@ -188,13 +207,15 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 			const Real     un = d.dot(n); // eq. (14): opening positive
 			const Vector3r us = d - un * n;
 			if (p.segState[i] == int(rdem::SegmentState::Intact)) {
+				const Vector3r ust     = us - slip; // the spring's shear elongation
 				const Real     sigma   = kn * un;
-				const Vector3r tau     = ks * us;
+				const Vector3r tau     = ks * ust;
 				const Real     tauNorm = tau.norm();
 				const auto     state   = rdem::restoringSpringState(sigma, tauNorm, ft, cohesion, tanPhi);
 				auto           energy  = [&]() { return A * (wn * sigma * sigma / kn + ws * tau.squaredNorm() / ks) / 2; };
 				if (state == rdem::SegmentState::Intact) {
-					applyAt(-(cn * un * n + cs * us), s, r); // -(w_n σ n + w_s τ) A
+					applyAt(-(cn * un * n + cs * ust), s, r); // -(w_n σ n + w_s τ) A
+					tSum += cs * ust;
 					p.segSigma[i]       = sigma;
 					p.segTau[i]         = tauNorm;
 					anyIntactOrTouching = true;
@@ -228,6 +249,11 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		});
 		f2 += fSum;
 		t2 += kin.r0.cross(fSum) + kin.ra.cross(fs) + kin.rb.cross(fr);
+		if (offset) { // the reaction of the correction on the cells that made the strains (RdemPoissonEngine sums it)
+			rdem::offsetSlipGradient<Real>(R1.transpose() * tSum, R12, p.centroidOffset, p.offsetGrad1, p.offsetGrad2);
+			p.offsetGrad1 *= static_cast<const RdemState&>(s1).cellScale;
+			p.offsetGrad2 *= static_cast<const RdemState&>(s2).cellScale;
+		}
 		if (!anyIntactOrTouching) {
 			// Fully broken and apart: release the bond (the interaction is reset); the collider and contact sampling take over.
 			if (deferForces) activeSetChanges += 1;

@@ -8,6 +8,7 @@
 
 #include <core/IGeom.hpp>
 #include <core/State.hpp>
+#include <pkg/rdem/RdemJoint.hpp>
 #include <pkg/rdem/math/SegmentGrid.hpp>
 
 namespace yade {
@@ -60,6 +61,7 @@ public:
 		((Vector3r,normal,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"Unit normal of the bonded face in the last step, from body 1 to body 2 (global); zero until the law has run."))
 		((Real,ell1,0,,"Distance from the centroid of body 1 to the bonded (or first contacted) face, $\\ell_A$ of eq. 12 [m]."))
 		((Real,ell2,0,,"Distance from the centroid of body 2 to its face, $\\ell_B$ of eq. 12 [m]."))
+		((shared_ptr<RdemJoint>,joint,,,"The joint of a bond made with a mortar joint (:yref:`Ig2_RdemBlock_RdemBlock_RdemGeom::joint`), or None: blocks bonded directly (eq. 12)."))
 		((vector<int>,sampleKey,,(Attr::noSave|Attr::readonly),"Per active contact sample: which sample it is (a stable index, for the shear history)."))
 		((vector<Vector3r>,samplePoint,,(Attr::noSave|Attr::readonly),"Per active contact sample: contact point (global) [m]."))
 		((vector<Vector3r>,sampleNormal,,(Attr::noSave|Attr::readonly),"Per active contact sample: unit normal from body 1 to body 2 (global)."))

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <core/Material.hpp>
+#include <pkg/rdem/RdemState.hpp>
 #include <limits>
 
 namespace yade {
@@ -17,6 +18,9 @@ public:
 	/// Throws std::invalid_argument (Python: ValueError) naming every parameter out of its range.
 	void validate() const;
 	void postLoad(RdemMat&) { validate(); }
+	/// Blocks of this material carry an RdemState (their Poisson cell).
+	shared_ptr<State> newAssocState() const override { return shared_ptr<State>(new RdemState); }
+	bool              stateTypeOk(State* s) const override { return dynamic_cast<RdemState*>(s) != nullptr; }
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR(RdemMat,Material,R"""(Material of a rigid block in the refined distinct element method with the Poisson effect (paper: shared/reference/paper-poisson-effect-refined-dem.txt).
 

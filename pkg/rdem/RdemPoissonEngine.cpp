@@ -15,6 +15,8 @@
 #include <pkg/rdem/RdemMat.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
 #include <pkg/rdem/RdemPoissonEngine.hpp>
+#include <pkg/rdem/RdemState.hpp>
+#include <pkg/rdem/math/BlockCells.hpp>
 #include <pkg/rdem/math/Elasticity.hpp>
 #include <pkg/rdem/math/GroupByKey.hpp>
 #include <algorithm>
@@ -31,10 +33,6 @@ YADE_PLUGIN((RdemPoissonEngine));
 CREATE_LOGGER(RdemPoissonEngine);
 
 namespace {
-	/// The 12 edges of the hexahedron: node pairs that differ in one of the bits i, j, k (node a = i + 2j + 4k).
-	constexpr int hexEdges[12][2] = { { 0, 1 }, { 2, 3 }, { 4, 5 }, { 6, 7 }, { 0, 2 }, { 1, 3 }, { 4, 6 }, { 5, 7 }, { 0, 4 }, { 1, 5 }, { 2, 6 }, { 3, 7 } };
-	constexpr Real sameSideCos    = 0.99; // two bond normals within ~8° point to the same side of a block
-
 	/* K·u for one element. YADE builds with EIGEN_DONT_VECTORIZE (its flags, which the plugin must share), so Eigen's
 	   product is scalar; written column by column (axpy), the loop vectorizes without reordering any sum, and the result
 	   is the same to the last bit as the row-by-row product of the same column order. */
@@ -49,241 +47,12 @@ namespace {
 		}
 		return Eigen::Map<const rdem::Vec24<Real>>(out);
 	}
-
-	using Neighbours = std::map<Body::id_t, vector<std::pair<Body::id_t, Vector3r>>>; // per block: bonded block, unit direction
-
-	Body::id_t next(const Neighbours& nbr, Body::id_t b, const Vector3r& dir)
-	{
-		if (b < 0) return -1;
-		const auto it = nbr.find(b);
-		if (it == nbr.end()) return -1;
-		for (const auto& nd : it->second)
-			if (nd.second.dot(dir) > sameSideCos) return nd.first;
-		return -1;
-	}
-
-	/// Half-extent of block id along its body axis closest to dir [m].
-	Real halfAlong(Scene* scene, Body::id_t id, const Vector3r& dir)
-	{
-		const Body&    b = *Body::byId(id, scene);
-		const Matrix3r R = b.state->ori.toRotationMatrix();
-		int            k = 0;
-		for (int j = 1; j < 3; ++j)
-			if (math::abs(R.col(j).dot(dir)) > math::abs(R.col(k).dot(dir))) k = j;
-		return static_cast<RdemBlock*>(b.shape.get())->extents[k];
-	}
-
-	/// Whether the translation of block id along dir is prescribed (dir along a global axis whose DOF is blocked).
-	bool prescribed(Scene* scene, Body::id_t id, const Vector3r& dir)
-	{
-		const State& s = *Body::byId(id, scene)->state;
-		for (int k = 0; k < 3; ++k)
-			if (math::abs(dir[k]) > sameSideCos) return (s.blockedDOFs & State::axisDOF(k)) != 0;
-		return false;
-	}
-
-	/// Extent of the dual cell of block id along the unit direction t: half-way to the neighbouring centroids, to the block's
-	/// face where it has no neighbour and is free, to its centroid where it is a platen [m].
-	Real dualExtent(Scene* scene, const Neighbours& nbr, Body::id_t id, const Vector3r& t)
-	{
-		Real ext = 0;
-		for (int side = -1; side <= 1; side += 2) {
-			const Body::id_t nb = next(nbr, id, side * t);
-			if (nb >= 0) ext += math::abs((Body::byId(nb, scene)->state->pos - Body::byId(id, scene)->state->pos).dot(t)) / 2;
-			else if (!prescribed(scene, id, t))
-				ext += halfAlong(scene, id, t);
-		}
-		return ext;
-	}
-}
-
-void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
-{
-	scene = Omega::instance().getScene().get();
-	std::set<Body::id_t> ids(idsIn.begin(), idsIn.end());
-	if (ids.empty())
-		for (const auto& b : *scene->bodies)
-			if (b && dynamic_cast<RdemBlock*>(b->shape.get())) ids.insert(b->id);
-	for (Body::id_t id : ids) {
-		const shared_ptr<Body>& b = Body::byId(id, scene);
-		if (!b || !dynamic_cast<RdemBlock*>(b->shape.get()))
-			throw std::invalid_argument("RdemPoissonEngine.build: body " + std::to_string(id) + " is not an RdemBlock");
-		if (!dynamic_cast<RdemMat*>(b->material.get()))
-			throw std::invalid_argument("RdemPoissonEngine.build: body " + std::to_string(id) + " has no RdemMat material");
-	}
-
-	for (const auto& e : scene->engines) {
-		const auto* loop = dynamic_cast<InteractionLoop*>(e.get());
-		if (!loop) continue;
-		for (const auto& f : loop->physDispatcher->functors) {
-			const auto* ip2 = dynamic_cast<Ip2_RdemMat_RdemMat_RdemPhys*>(f.get());
-			if (ip2 && (ip2->springModulus == 1) != consistent)
-				throw std::invalid_argument(
-				        std::string("RdemPoissonEngine.consistent = ") + (consistent ? "True" : "False")
-				        + " needs Ip2_RdemMat_RdemMat_RdemPhys.springModulus = " + (consistent ? "1" : "0")
-				        + "; rdem.engines(poisson='paper' or 'consistent') sets both");
-		}
-	}
-	// The paper's springs E/(1-ν²) plus D_p are an indefinite tensor for ν > (3-√5)/2 ≈ 0.382 (doc/theory.md §5.3): an
-	// explicit run would blow up, so refuse it with the way out.
-	const Real nuPaperMax = (3 - math::sqrt(Real(5))) / 2;
-	if (!consistent)
-		for (Body::id_t id : ids) {
-			const Real nu = static_cast<RdemMat*>(Body::byId(id, scene)->material.get())->poisson;
-			if (nu > nuPaperMax)
-				throw std::invalid_argument(
-				        "RdemPoissonEngine.build: block " + std::to_string(id) + " has poisson = " + std::to_string(nu)
-				        + ", above 0.382 where the paper formulation (springs E/(1-nu^2) plus D_p) is not positive definite and a run"
-				          " blows up; use the consistent formulation, rdem.engines(poisson='consistent')");
-		}
-
-	// Bonded neighbours of every block, with the bond's unit normal (global) pointing to the neighbour.
-	Neighbours nbr;
-	for (const auto& I : *scene->interactions) {
-		if (!I->isReal()) continue;
-		const auto* g = dynamic_cast<RdemGeom*>(I->geom.get());
-		if (!g || g->nSegments() == 0 || !ids.count(I->getId1()) || !ids.count(I->getId2())) continue;
-		const Vector3r n = Body::byId(I->getId1(), scene)->state->ori * g->segNormal1;
-		nbr[I->getId1()].push_back({ I->getId2(), n });
-		nbr[I->getId2()].push_back({ I->getId1(), -n });
-	}
-	for (const auto& bn : nbr)
-		for (size_t i = 0; i < bn.second.size(); ++i)
-			for (size_t j = i + 1; j < bn.second.size(); ++j)
-				if (bn.second[i].second.dot(bn.second[j].second) > sameSideCos) {
-					std::ostringstream msg;
-					msg << "RdemPoissonEngine.build: block " << bn.first << " has two bonded neighbours on one side (blocks " << bn.second[i].first
-					    << " and " << bn.second[j].first
-					    << "); Poisson elements need blocks on a grid of 2x2x2 groups (one neighbour per face), e.g. not running-bond masonry";
-					throw std::invalid_argument(msg.str());
-				}
-
-	nodes.clear();
-	refPos.clear();
-	lambda.clear();
-	skin.clear();
-	std::set<std::array<Body::id_t, 8>> seen;
-	int                                 incomplete = 0;
-	for (Body::id_t b : ids) {
-		const Matrix3r R = Body::byId(b, scene)->state->ori.toRotationMatrix();
-		const Vector3r ex = R.col(0), ey = R.col(1), ez = R.col(2);
-		std::array<Body::id_t, 8> n;
-		n[0] = b;
-		n[1] = next(nbr, b, ex);
-		n[2] = next(nbr, b, ey);
-		n[4] = next(nbr, b, ez);
-		if (n[1] < 0 || n[2] < 0 || n[4] < 0) continue; // b is not the (-,-,-) corner of a group
-		n[3] = next(nbr, n[1], ey);
-		n[5] = next(nbr, n[1], ez);
-		n[6] = next(nbr, n[2], ez);
-		n[7] = next(nbr, n[3], ez);
-		// Every one of the 12 edges must be a bond between the nodes found above.
-		bool complete = true;
-		for (const auto& e : hexEdges) {
-			const Body::id_t a = n[size_t(e[0])], c = n[size_t(e[1])];
-			const int        bit = e[0] ^ e[1];
-			const Vector3r   dir = bit == 1 ? ex : (bit == 2 ? ey : ez);
-			if (a < 0 || c < 0) {
-				complete = false;
-				continue;
-			}
-			const Body::id_t found = next(nbr, a, dir);
-			if (found < 0) complete = false;
-			else if (found != c) {
-				std::ostringstream msg;
-				msg << "RdemPoissonEngine.build: blocks around block " << b << " do not close into a 2x2x2 group (block " << a << " is bonded to "
-				    << found << " where the grid expects " << c << ")";
-				throw std::invalid_argument(msg.str());
-			}
-		}
-		if (!complete) {
-			++incomplete;
-			continue;
-		}
-		std::array<Body::id_t, 8> key = n;
-		std::sort(key.begin(), key.end());
-		if (!seen.insert(key).second) continue;
-		rdem::Nodes8<Real>                X;
-		std::array<std::array<Real, 3>, 8> parts; // volume, E, ν of each node's block
-		for (size_t a = 0; a < 8; ++a) {
-			const Body& body = *Body::byId(n[a], scene);
-			X[a]             = body.state->pos;
-			const auto& m    = *static_cast<RdemMat*>(body.material.get());
-			parts[a]         = { 8 * static_cast<RdemBlock*>(body.shape.get())->extents.prod(), m.young, m.poisson };
-		}
-		const Real lam = rdem::layeredLambda<Real>(parts);
-		if (!rdem::hex8IsValid<Real>(X)) {
-			std::ostringstream msg;
-			msg << "RdemPoissonEngine.build: the centroids of blocks " << n[0] << "," << n[1] << ",...," << n[7] << " form an inverted or flat hexahedron";
-			throw std::invalid_argument(msg.str());
-		}
-		for (size_t a = 0; a < 8; ++a) {
-			nodes.push_back(n[a]);
-			refPos.push_back(X[a]);
-		}
-		lambda.push_back(lam);
-		// Skin of the consistent formulation: a side whose four blocks have no neighbour further out and are free along
-		// that axis carries a slab as thick as those blocks' half-extent, in units of half the element length.
-		for (int d = 0; d < 3; ++d) {
-			const Vector3r ed = R.col(d);
-			for (int side = 0; side < 2; ++side) {
-				Real       t     = 0;
-				const Real sgn   = side ? 1 : -1;
-				bool       outer = consistent;
-				Real       ell = 0, halfLength = 0;
-				for (size_t a = 0; a < 8 && outer; ++a) {
-					if (((a >> d) & 1) != size_t(side)) continue;
-					outer = next(nbr, n[a], sgn * ed) < 0 && !prescribed(scene, n[a], ed);
-					ell += halfAlong(scene, n[a], ed) / 4;
-					halfLength += math::abs((X[a ^ (size_t(1) << d)] - X[a]).dot(ed)) / 8;
-				}
-				if (outer) t = ell / halfLength;
-				skin.push_back(t);
-			}
-		}
-	}
-	if (nodes.empty())
-		throw std::invalid_argument(
-		        "RdemPoissonEngine.build: no 2x2x2 group of bonded blocks among the " + std::to_string(ids.size())
-		        + " blocks given (bond them first, e.g. with rdem.bondAll)");
-	// Spring weights of the consistent formulation (doc/theory.md §5.2); 1 in the paper's.
-	for (const auto& I : *scene->interactions) {
-		if (!I->isReal()) continue;
-		const auto* g = dynamic_cast<RdemGeom*>(I->geom.get());
-		auto*       p = dynamic_cast<RdemPhys*>(I->phys.get());
-		if (!g || !p || g->nSegments() == 0 || !ids.count(I->getId1()) || !ids.count(I->getId2())) continue;
-		p->weightNormal = p->weightShear = 1;
-		if (!consistent) continue;
-		const Body::id_t a = I->getId1(), b = I->getId2();
-		const Matrix3r   Ra = Body::byId(a, scene)->state->ori.toRotationMatrix();
-		const Vector3r   nrm = Ra * g->segNormal1;
-		const Real       L   = (Body::byId(b, scene)->state->pos - Body::byId(a, scene)->state->pos).dot(nrm);
-		const Real extA = (next(nbr, a, -nrm) < 0 && !prescribed(scene, a, nrm)) ? halfAlong(scene, a, nrm) : Real(0);
-		const Real extB = (next(nbr, b, nrm) < 0 && !prescribed(scene, b, nrm)) ? halfAlong(scene, b, nrm) : Real(0);
-		Real       cross = 1;
-		for (int k = 0; k < 3; ++k) {
-			const Vector3r t = Ra.col(k);
-			if (math::abs(t.dot(nrm)) > sameSideCos) continue;
-			cross *= (dualExtent(scene, nbr, a, t) / (2 * halfAlong(scene, a, t)) + dualExtent(scene, nbr, b, t) / (2 * halfAlong(scene, b, t))) / 2;
-		}
-		p->weightNormal = (L + extA + extB) / L * cross;
-		p->weightShear  = cross;
-	}
-	scalePrev.clear(); // the first step takes the current scales
-	LOG_INFO(nElements() << " Poisson elements on " << ids.size() << " blocks (" << incomplete << " groups skipped: a bond missing)");
-	prepare();
-}
-
-void RdemPoissonEngine::buildPy(const py::list& ids)
-{
-	vector<Body::id_t> v;
-	for (long i = 0; i < py::len(ids); ++i)
-		v.push_back(py::extract<Body::id_t>(ids[i]));
-	build(v);
 }
 
 void RdemPoissonEngine::postLoad(RdemPoissonEngine&)
 {
+	if (elements != "auto" && elements != "hex8" && elements != "cells")
+		throw std::invalid_argument("RdemPoissonEngine.elements = '" + elements + "': must be 'auto', 'hex8' or 'cells'");
 	stiffness.clear();
 	stiffnessOf.clear();
 	bonds.clear();
@@ -333,7 +102,7 @@ void RdemPoissonEngine::prepare()
 	scalesBroken = -1;
 	for (size_t e = 0; e < nEl; ++e)
 		for (size_t k = 0; k < 12; ++k)
-			bonds[12 * e + k] = scene->interactions->find(nodes[8 * e + size_t(hexEdges[k][0])], nodes[8 * e + size_t(hexEdges[k][1])]);
+			bonds[12 * e + k] = scene->interactions->find(nodes[8 * e + size_t(rdem::hex8Edges[k][0])], nodes[8 * e + size_t(rdem::hex8Edges[k][1])]);
 	LOG_DEBUG(nEl << " Poisson elements share " << stiffness.size() << " distinct stiffness matrices");
 }
 
@@ -372,6 +141,12 @@ vector<Real> RdemPoissonEngine::elementScales()
 }
 
 void RdemPoissonEngine::action()
+{
+	if (nElements() > 0) hex8Action();
+	cellAction();
+}
+
+void RdemPoissonEngine::hex8Action()
 {
 	if (!prepared()) prepare();
 	// The scales change only when a spring breaks or a bond is released or erased: recompute them only then.
@@ -438,7 +213,7 @@ void RdemPoissonEngine::action()
 	}
 }
 
-vector<Real> RdemPoissonEngine::stiffnessBound() const
+vector<Real> RdemPoissonEngine::hex8Omega2Bound() const
 {
 	// Per node of an element: the largest absolute row sum of its 3 rows of K_p [N/m].
 	auto nodeBounds = [](const rdem::Mat24<Real>& K) {
@@ -452,14 +227,146 @@ vector<Real> RdemPoissonEngine::stiffnessBound() const
 	if (prepared())
 		for (const auto& K : stiffness)
 			distinct.push_back(nodeBounds(K));
-	const Scene* sc = Omega::instance().getScene().get();
+	Scene*       sc = Omega::instance().getScene().get();
 	vector<Real> bound(sc->bodies->size(), 0);
 	for (size_t e = 0; e < size_t(nElements()); ++e) {
 		const std::array<Real, 8> rows = prepared() ? distinct[stiffnessOf[e]] : nodeBounds(elementStiffness(e));
 		for (size_t a = 0; a < 8; ++a)
 			bound[size_t(nodes[8 * e + a])] += rows[a];
 	}
+	for (size_t id = 0; id < bound.size(); ++id) { // row sums [N/m] over the mass: ω² [1/s²]
+		const auto& b = Body::byId(Body::id_t(id), sc);
+		bound[id]     = (b && bound[id] > 0) ? bound[id] / b->state->mass : Real(0);
+	}
 	return bound;
+}
+
+vector<Real> RdemPoissonEngine::omega2Bound() const
+{
+	vector<Real> w2 = hex8Omega2Bound();
+	const vector<Real> c = cellOmega2Bound();
+	for (size_t id = 0; id < c.size() && id < w2.size(); ++id)
+		w2[id] += c[id];
+	return w2;
+}
+
+int RdemPoissonEngine::nCells() const
+{
+	int    n  = 0;
+	Scene* sc = Omega::instance().getScene().get();
+	for (const auto& b : *sc->bodies)
+		if (b)
+			if (const auto* st = dynamic_cast<const RdemState*>(b->state.get()))
+				if (st->cellVolume > 0) ++n;
+	return n;
+}
+
+void RdemPoissonEngine::cellAction()
+{
+	cells.refresh(scene);
+	if (cells.bonds.empty()) return;
+	const long nBodies = long(cells.nBodies());
+	cellStress.assign(size_t(nBodies), Vector3r::Zero());
+	if (cellScalePrev.size() != size_t(nBodies)) {
+		cellScalePrev.assign(size_t(nBodies), 1);
+		for (long b = 0; b < nBodies; ++b)
+			if (const auto* st = dynamic_cast<const RdemState*>(Body::byId(Body::id_t(b), scene) ? Body::byId(Body::id_t(b), scene)->state.get() : nullptr))
+				cellScalePrev[size_t(b)] = st->cellScale;
+	}
+	const bool trackEnergy = scene->trackEnergy;
+	Real       energy = 0, released = 0; // Σ ½ s εᵀKε of the cells; ½ (s_prev - s) εᵀKε lost to cracks in this step [J]
+	/* 1. Per cell: ∂W/∂ε = s K ε (K = V(D - M I), RdemState::cellStiffness) plus the reaction of the offset correction of
+	      its bonds' shear springs, mapped to the axes with bonds by the condensation (RdemState::cellCondensation). */
+#ifdef YADE_OPENMP
+#pragma omp parallel for schedule(static) reduction(+ : energy, released)
+#endif
+	for (long b = 0; b < nBodies; ++b) {
+		if (cells.first[size_t(b)] == cells.first[size_t(b) + 1]) continue;
+		const auto&    st   = *static_cast<const RdemState*>(Body::byId(Body::id_t(b), scene)->state.get());
+		const Real     s    = releaseOnCrack ? st.cellScale : Real(1);
+		const Vector3r Ke   = st.cellStiffness * st.strain;
+		Vector3r       grad = Vector3r::Zero();
+		for (size_t k = cells.first[size_t(b)]; k < cells.first[size_t(b) + 1]; ++k) {
+			const auto& side = cells.sides[k];
+			if (!side.I->isReal()) continue;
+			const auto& p = *static_cast<const RdemPhys*>(side.I->phys.get());
+			if (p.centroidOffset != Vector3r::Zero()) grad += side.second ? p.offsetGrad2 : p.offsetGrad1;
+		}
+		cellStress[size_t(b)] = s * Ke + st.cellCondensation.transpose() * grad;
+		if (trackEnergy) {
+			energy += s * st.strain.dot(Ke) / 2;
+			released += (cellScalePrev[size_t(b)] - s) * st.strain.dot(Ke) / 2;
+		}
+		cellScalePrev[size_t(b)] = s;
+	}
+	/* 2. Per block: the normal force -∂W/∂u_n = -(c₁∂W/∂ε₁ + c₂∂W/∂ε₂) of each of its bonds, on body 2 along the bond's
+	      normal and on body 1 against it, at the face centre; summed body by body in the fixed order of the lists. */
+	RdemForceAssembler::prepareDirectSums(scene, nBodies);
+#ifdef YADE_OPENMP
+#pragma omp parallel for schedule(static)
+#endif
+	for (long b = 0; b < nBodies; ++b) {
+		if (cells.first[size_t(b)] == cells.first[size_t(b) + 1]) continue;
+		const State&   sb = *Body::byId(Body::id_t(b), scene)->state;
+		const Matrix3r Rb = sb.ori.toRotationMatrix();
+		Vector3r       f = Vector3r::Zero(), t = Vector3r::Zero();
+		for (size_t k = cells.first[size_t(b)]; k < cells.first[size_t(b) + 1]; ++k) {
+			const auto& side = cells.sides[k];
+			if (!side.I->isReal()) continue;
+			const auto& g = *static_cast<const RdemGeom*>(side.I->geom.get());
+			if (!g.bonded) continue;
+			const auto&    p  = *static_cast<const RdemPhys*>(side.I->phys.get());
+			const Real     F  = -(p.cellCoef1 * cellStress[size_t(side.I->getId1())][rdem::dominantAxis<Real>(g.segNormal1)]
+                                 + p.cellCoef2 * cellStress[size_t(side.I->getId2())][rdem::dominantAxis<Real>(g.segNormal2)]);
+			const Vector3r fb = (side.second ? F : -F) * g.normal;
+			f += fb;
+			t += (Rb * (side.second ? g.faceCentre2 : g.faceCentre1)).cross(fb);
+		}
+		scene->forces.addForceUnsynced(Body::id_t(b), f);
+		scene->forces.addTorqueUnsynced(Body::id_t(b), t);
+	}
+	if (trackEnergy) {
+		scene->energy->add(energy, "rdemPoisson", energyIx, /*reset every step*/ true);
+		scene->energy->add(released, "rdemPoissonRelease", releaseIx, /*reset every step*/ false);
+	}
+}
+
+vector<Real> RdemPoissonEngine::cellOmega2Bound() const
+{
+	/* The cells' stiffness on the bond openings is K_qr = Σ_b s_b c_bq K_b(d_q, d_r) c_br over the cells b the two bonds
+	   share. Each bond q is bounded like a normal spring of stiffness κ_q = Σ_r |K_qr| at its face centre, with the
+	   Gershgorin terms 2κ(1/m + |r×n|²/I_min) of each of its free blocks (as RdemTimeStepper does for springs) [1/s²]. */
+	Scene*       sc = Omega::instance().getScene().get();
+	vector<Real> w2(sc->bodies->size(), 0);
+	RdemCellBonds lists;
+	lists.refresh(sc);
+	auto cellRow = [&](Body::id_t b, int axis) { // Σ_r |K_b(axis, d_r)| |c_br| over the bonds r of b's cell
+		const auto& st  = *static_cast<const RdemState*>(Body::byId(b, sc)->state.get());
+		Real        sum = 0;
+		for (size_t k = lists.first[size_t(b)]; k < lists.first[size_t(b) + 1]; ++k) {
+			const auto& side = lists.sides[k];
+			if (!side.I->isReal()) continue;
+			const auto& g = *static_cast<const RdemGeom*>(side.I->geom.get());
+			const auto& p = *static_cast<const RdemPhys*>(side.I->phys.get());
+			sum += math::abs(st.cellStiffness(axis, rdem::dominantAxis<Real>(side.second ? g.segNormal2 : g.segNormal1))) * math::abs(side.second ? p.cellCoef2 : p.cellCoef1);
+		}
+		return st.cellScale * sum;
+	};
+	for (const auto& I : lists.bonds) {
+		if (!I->isReal()) continue;
+		const auto& g = *static_cast<const RdemGeom*>(I->geom.get());
+		const auto& p = *static_cast<const RdemPhys*>(I->phys.get());
+		if (!g.bonded) continue;
+		const Real kappa = math::abs(p.cellCoef1) * cellRow(I->getId1(), rdem::dominantAxis<Real>(g.segNormal1)) + math::abs(p.cellCoef2) * cellRow(I->getId2(), rdem::dominantAxis<Real>(g.segNormal2));
+		for (int k = 0; k < 2; ++k) {
+			const State& s = *Body::byId(k ? I->getId2() : I->getId1(), sc)->state;
+			if (s.blockedDOFs == State::DOF_ALL) continue;
+			const Vector3r r = s.ori * (k ? g.faceCentre2 : g.faceCentre1);
+			const Vector3r n = s.ori * (k ? g.segNormal2 : g.segNormal1);
+			w2[size_t(k ? I->getId2() : I->getId1())] += 2 * kappa * (1 / s.mass + r.cross(n).squaredNorm() / s.inertia.minCoeff());
+		}
+	}
+	return w2;
 }
 
 } // namespace yade

@@ -37,22 +37,20 @@ namespace {
 		        += rdem::pointSpringOmega2<Real>(point - s.pos, n, area, p.weightNormal * p.kn, p.weightShear * p.ks, s.mass, s.inertia.minCoeff());
 	}
 
-	/// How contacts are made: spring modulus (Ip2) and sample grid (Ig2) of the InteractionLoop; the stiffer modulus and
-	/// the default grid if these functors are not found.
+	/// How contacts are made: the scene's formulation (Ip2_RdemMat_RdemMat_RdemPhys::formulationOf) and the sample grid of
+	/// the Ig2 of the InteractionLoop (the default grid if there is none).
 	struct ContactSetup {
-		rdem::SpringModulus modulus        = rdem::SpringModulus::Consistent;
+		rdem::SpringModulus modulus        = rdem::SpringModulus::Paper;
 		int                 samplesPerEdge = 2;
 	};
 
 	ContactSetup contactSetup(Scene* sc)
 	{
 		ContactSetup c;
+		c.modulus = Ip2_RdemMat_RdemMat_RdemPhys::formulationOf(sc);
 		for (const auto& e : sc->engines) {
 			const auto* loop = dynamic_cast<InteractionLoop*>(e.get());
 			if (!loop) continue;
-			for (const auto& f : loop->physDispatcher->functors)
-				if (const auto* ip2 = dynamic_cast<Ip2_RdemMat_RdemMat_RdemPhys*>(f.get()))
-					c.modulus = static_cast<rdem::SpringModulus>(ip2->springModulus);
 			for (const auto& f : loop->geomDispatcher->functors)
 				if (const auto* ig2 = dynamic_cast<Ig2_RdemBlock_RdemBlock_RdemGeom*>(f.get())) c.samplesPerEdge = ig2->segmentsPerEdge;
 		}
@@ -110,10 +108,10 @@ Real RdemTimeStepper::estimate(Scene* sc) const
 	for (const auto& e : sc->engines) {
 		const auto* poisson = dynamic_cast<RdemPoissonEngine*>(e.get());
 		if (!poisson || poisson->dead) continue;
-		const vector<Real> P = poisson->stiffnessBound();
-		for (size_t id = 0; id < P.size(); ++id) {
+		const vector<Real> P = poisson->omega2Bound();
+		for (size_t id = 0; id < P.size() && id < omega2.size(); ++id) {
 			const auto& b = Body::byId(Body::id_t(id), sc);
-			if (b && P[id] > 0 && b->state->blockedDOFs != State::DOF_ALL) omega2[id] += P[id] / b->state->mass;
+			if (b && b->state->blockedDOFs != State::DOF_ALL) omega2[id] += P[id];
 		}
 	}
 	const Real w2 = *std::max_element(omega2.begin(), omega2.end());

@@ -6,11 +6,13 @@ spring breaks, no Poisson engine when ``poisson=None``.
 """
 import math
 from yade import O, utils, Vector3, Quaternion
-from yade.wrapper import (Body, RdemBlock, RdemMat, ForceResetter, InsertionSortCollider, Bo1_Box_Aabb, InteractionLoop, Ig2_RdemBlock_RdemBlock_RdemGeom,
-                          Ip2_RdemMat_RdemMat_RdemPhys, Law2_RdemGeom_RdemPhys_FaceSprings, RdemPoissonEngine, RdemTimeStepper, NewtonIntegrator,
-                          RdemContactGate, RdemFiniteGuard, RdemForceAssembler)
+from yade.wrapper import (Body, RdemBlock, RdemMat, RdemJoint, ForceResetter, InsertionSortCollider, Bo1_Box_Aabb, InteractionLoop, Ig2_RdemBlock_RdemBlock_RdemGeom,
+                          Ip2_RdemMat_RdemMat_RdemPhys, Law2_RdemGeom_RdemPhys_FaceSprings, RdemPoissonEngine, RdemCellStrainUpdater, RdemTimeStepper,
+                          NewtonIntegrator, RdemContactGate, RdemFiniteGuard, RdemForceAssembler)
 
-POISSON_MODES = {None: None, 'off': None, 'paper': 0, 'consistent': 1}
+#: The values of ``engines(poisson=...)``: the formulation of the springs (:yref:`Ip2_RdemMat_RdemMat_RdemPhys.formulation`, the
+#: scene's one setting) and whether there is a Poisson engine. Without one the springs are the paper's.
+POISSON_MODES = {None: ('paper', False), 'off': ('paper', False), 'paper': ('paper', True), 'consistent': ('consistent', True)}
 
 
 def block(center, halfExtents, material, orientation=Quaternion.Identity, fixed=False, color=None):
@@ -115,9 +117,12 @@ def _aabb(b):
 	return b.state.pos - ext, b.state.pos + ext
 
 
-def bond(ids, tolerance=1e-6):
+def bond(ids, tolerance=1e-6, joint=None):
 	"""Bond every pair of face-adjacent blocks among ``ids`` with restoring springs (through ``utils.createInteraction``,
 	so ``O.engines`` must come from :func:`engines` first). Returns the number of bonds.
+
+	:param joint: an :yref:`RdemJoint` (mortar thickness and elastic constants, bond strengths) given to every bond made, or
+	    ``None``: blocks bonded directly (eq. 12, the weaker material's strengths).
 
 	Raises ValueError if two blocks overlap by more than ``tolerance`` times the smaller half-extent, if ``ids``
 	contains a body that is not a block, or if a block of ``ids`` shares no face with any other (not adjacent: nothing
@@ -172,13 +177,30 @@ def bond(ids, tolerance=1e-6):
 	if len(ids) > 1 and alone:
 		raise ValueError('bond: block %d shares no face with any other of the %d blocks given (ids must be face-adjacent blocks; '
 		                 '%d such blocks: %s)' % (alone[0], len(ids), len(alone), alone[:10]))
+	return bondPairs(candidates, joint=joint, strict=False)
+
+
+def bondPairs(pairs, joint=None, strict=True):
+	"""Bond the given pairs ``(id1, id2)`` of face-adjacent blocks (e.g. ``rdem.wall_layout``'s touching pairs), every bond
+	with the :yref:`RdemJoint` ``joint`` (or none). Returns the number of bonds made.
+
+	:param strict: raise ValueError naming the pair if two blocks of a pair share no face (else such pairs are skipped)."""
+	if joint is not None and not isinstance(joint, RdemJoint):
+		raise ValueError('joint = %r: must be an RdemJoint or None' % (joint, ))
+	ig2 = geomFunctor()
+	ig2.joint = joint
 	n = 0
-	for i, j in candidates:
-		try:
-			utils.createInteraction(i, j)
-			n += 1
-		except RuntimeError:
-			pass  # parallel faces not aligned or no shared area: not bonded
+	try:
+		for i, j in pairs:
+			try:
+				utils.createInteraction(int(i), int(j))
+				n += 1
+			except RuntimeError:
+				if strict:
+					raise ValueError('bondPairs: blocks %d and %d share no face (parallel, aligned faces within bondGapTolerance); '
+					                 'only face-adjacent blocks can be bonded' % (i, j))
+	finally:
+		ig2.joint = None
 	return n
 
 
@@ -201,8 +223,9 @@ def engines(segmentsPerEdge=2,
 	"""The engine list of a refined-DEM scene.
 
 	:param segmentsPerEdge: $n$, each bonded face carries $n\\times n$ springs (paper: 2).
-	:param poisson: ``'paper'`` (springs $E/(1-\\nu^2)$ + $D_p$ elements, as published), ``'consistent'`` (springs $\\lambda+2\\mu$ + $D_p$: the
-	    full isotropic tensor, see doc/theory.md) or ``None`` (refined DEM without the Poisson effect, springs as in the paper).
+	:param poisson: ``'paper'`` (springs $E/(1-\\nu^2)$ + $D_p$ elements on $2\\times2\\times2$ grids, as published), ``'consistent'``
+	    (springs $\\lambda+2\\mu$ + $D_p$ elements on grids, Poisson cells on any other layout: the full isotropic tensor, see
+	    doc/theory.md §5.2, §5.4) or ``None`` (refined DEM without the Poisson effect, springs as in the paper).
 	:param corotational: remove rigid rotations of the Poisson elements (needed for large rotations).
 	:param recontact: ``True``: the collider, so that separated blocks can touch again anywhere, switched on by
 	    :yref:`RdemContactGate` only once contacts can occur (the first broken spring, a free block, a second assembly);
@@ -228,9 +251,9 @@ def engines(segmentsPerEdge=2,
 		raise ValueError('verletDist = %r: must be finite and >= 0 [m] (or None)' % (verletDist, ))
 	if len(gravity) != 3 or not all(math.isfinite(g) for g in gravity):
 		raise ValueError('gravity = %r: must be 3 finite numbers [m/s2]' % (gravity, ))
-	mode = POISSON_MODES[poisson]
-	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge)],
-	                       [Ip2_RdemMat_RdemMat_RdemPhys(springModulus=1 if mode == 1 else 0)], [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True)])
+	formulation, withPoisson = POISSON_MODES[poisson]
+	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge)], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation)],
+	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True)])
 	eng = [ForceResetter()]
 	if recontact not in (True, False, 'always'):
 		raise ValueError("recontact = %r: must be True, False or 'always'" % (recontact, ))
@@ -238,9 +261,11 @@ def engines(segmentsPerEdge=2,
 		eng.append(RdemContactGate())
 	if recontact:
 		eng.append(InsertionSortCollider([Bo1_Box_Aabb()], verletDist=verletDist if verletDist is not None else 0.0))
+	if withPoisson and formulation == 'consistent':
+		eng.append(RdemCellStrainUpdater())  # Poisson cells of layouts that are not grids: strains before the law reads them
 	eng += [loop, RdemForceAssembler()]  # forces summed per body in a fixed order: O.load continues bit for bit
-	if mode is not None:
-		eng.append(RdemPoissonEngine(corotational=corotational, consistent=mode == 1))
+	if withPoisson:
+		eng.append(RdemPoissonEngine(corotational=corotational))
 	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None, contactBound=bool(recontact))
 	eng += [stepper, NewtonIntegrator(damping=damping, gravity=Vector3(gravity))]
 	if finiteGuard:

@@ -92,7 +92,7 @@ class CompressionTest:
 		for i in self.bottom + self.top:
 			O.bodies[i].state.blockedDOFs = 'zXYZ'  # before the Poisson elements: the consistent formulation reads platens
 		self.nElements = 0
-		if build.POISSON_MODES[formulation] is not None:
+		if build.POISSON_MODES[formulation][1]:
 			build.poissonEngine().build(self.ids)
 			self.nElements = build.poissonEngine().nElements
 		for i in self.top:

@@ -3,7 +3,7 @@ import math
 import unittest
 import harness
 from yade import O, Vector3
-from yade.wrapper import RdemMat, Ig2_RdemBlock_RdemBlock_RdemGeom, Ip2_RdemMat_RdemMat_RdemPhys, RdemTimeStepper
+from yade.wrapper import RdemMat, RdemJoint, RdemPoissonEngine, Ig2_RdemBlock_RdemBlock_RdemGeom, Ip2_RdemMat_RdemMat_RdemPhys, RdemTimeStepper
 import rdem
 
 NAN, INF = float('nan'), float('inf')
@@ -45,8 +45,14 @@ class InputValidation(unittest.TestCase):
 		with self.assertRaisesRegex(ValueError, r'prefetchDistance = -2.*-1 \(automatic\), 0 \(off\) or > 0'):
 			Ig2_RdemBlock_RdemBlock_RdemGeom().prefetchDistance = -2
 		ip2 = Ip2_RdemMat_RdemMat_RdemPhys()
-		with self.assertRaisesRegex(ValueError, r'springModulus = 2.*0 \(paper\) or 1'):
-			ip2.springModulus = 2
+		with self.assertRaisesRegex(ValueError, r"formulation = 'concrete'.*'paper' or 'consistent'"):
+			ip2.formulation = 'concrete'
+		with self.assertRaisesRegex(ValueError, r"RdemPoissonEngine.elements = 'tet4'.*'auto', 'hex8' or 'cells'"):
+			RdemPoissonEngine().elements = 'tet4'
+		for name, bad, allowed in (('thickness', -0.01, '>= 0'), ('young', 0, '> 0'), ('poisson', 0.5, r'\(-1, 0.5\)'), ('tensileStrength', -1, '>= 0'),
+		                           ('cohesion', NAN, '>= 0'), ('frictionAngle', 2, r'\[0, pi/2\)')):
+			with self.assertRaisesRegex(ValueError, r'RdemJoint\.%s = .*must be .*%s' % (name, allowed)):
+				setattr(RdemJoint(), name, bad)
 		ts = RdemTimeStepper()
 		for bad in (0, -0.5, 1.5, NAN):
 			with self.assertRaisesRegex(ValueError, r'RdemTimeStepper\.safety = .*\(0, 1\]'):

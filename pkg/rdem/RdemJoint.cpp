@@ -1,0 +1,22 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+#include <pkg/rdem/RdemJoint.hpp>
+#include <pkg/rdem/math/MaterialCheck.hpp>
+#include <stdexcept>
+
+namespace yade {
+
+YADE_PLUGIN((RdemJoint));
+
+void RdemJoint::validate() const
+{
+	const rdem::JointParameters<Real> p { thickness, young, poisson, tensileStrength, cohesion, frictionAngle };
+	const std::string                 err = rdem::checkJoint(p, "RdemJoint" + (label.empty() ? std::string() : " '" + label + "'"));
+	if (!err.empty()) throw std::invalid_argument(err);
+}
+
+} // namespace yade

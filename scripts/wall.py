@@ -1,0 +1,259 @@
+# -*- coding: utf-8 -*-
+"""Vertical compression of a masonry wall of bricks and mortar, with the Poisson effect on any bond pattern.
+
+Problem
+    A wall (default: 1.03 m long, 0.77 m tall, one wythe 0.12 m thick, 12 courses of 250×120×55 mm clay bricks in
+    running bond, 10 mm interface joints, bricks cut into 2×1×2 blocks so that they can crack) between a base beam and a
+    top beam, 100 mm each, of the brick's elastic constants and unbreakable. The base beam is fixed; the top beam moves
+    down at a constant rate and is kept horizontal (no rotation). Consistent formulation: springs λ+2μ and Poisson cells
+    (doc/theory.md §5.4), so the elastic wall has exactly the input E and ν of its bricks and joints. Every geometric,
+    material and loading parameter is an option (rdem.masonry.wall builds the wall).
+
+    Default materials (illustrative, one set for all runs): brick E = 16.7 GPa, ν = 0.15, f_t = 3 MPa, density
+    1800 kg/m³; mortar E = 2 GPa, ν = 0.25; unit–mortar bond f_t = 0.2 MPa, cohesion 0.3 MPa, friction coefficient 0.75.
+
+Expected result
+    Before cracking the stress grows linearly with the shortening, with the wall's stiffness (bricks and joints in series).
+    With a soft mortar the first cracks are vertical, through the bricks above and below the head joints (the
+    brick–mortar mismatch of doc/theory.md §5.5, Hilsdorf 1969), and the bed joints stay closed. results.json gives the
+    stress at the first cracked joint and at the first cracked brick.
+
+How to run
+    build/bin/yade scripts/wall.py                           the default wall (about a minute)
+    build/bin/yade scripts/wall.py --help                    every option
+    build/bin/yade scripts/wall.py --bond english --thickness 0.25 --blocks 1,1,1 --end 0.3
+    build/bin/yade -n scripts/wall.py --openings 0.39,0.26,0.25,0.26   a window; -n: no viewer
+
+Outputs (in --out, default output/wall): results.json, stress_displacement.png, cracks.png (front view of the wall
+with its broken springs), ParaView files in vtk/ (blocks.*.vtu from YADE's VTKRecorder, cracks.pvd).
+"""
+import argparse
+import json
+import math
+import os
+import sys
+import time
+
+
+def floats(text, n=None, name=''):
+	try:
+		v = [float(x) for x in text.split(',')]
+	except ValueError:
+		raise argparse.ArgumentTypeError('%r: expected numbers separated by commas' % text)
+	if n is not None and len(v) != n:
+		raise argparse.ArgumentTypeError('%r: expected %d numbers separated by commas' % (text, n))
+	return v
+
+
+# 1. Options ---------------------------------------------------------------------------------------------------------
+parser = argparse.ArgumentParser(prog='yade scripts/wall.py', description=__doc__.split('\n\n')[0])
+g = parser.add_argument_group('wall (lengths in m)')
+g.add_argument('--length', type=float, default=1.03, help='masonry length (default 1.03: 4 stretchers)')
+g.add_argument('--height', type=float, default=0.77, help='masonry height (default 0.77: 12 courses)')
+g.add_argument('--thickness', type=float, default=0.12, help='masonry thickness (default 0.12: one wythe)')
+g.add_argument('--brick', type=lambda s: floats(s, 3), default=[0.25, 0.12, 0.055], help='brick length,width,height (default 0.25,0.12,0.055)')
+g.add_argument('--joint', type=float, default=0.01, help='mortar joint thickness (default 0.01)')
+g.add_argument('--bond', choices=['stack', 'running', 'english', 'flemish'], default='running', help='bond pattern (default running)')
+g.add_argument('--mortar', choices=['interface', 'layer'], default='interface', help='joint model: interface (zero-thickness joints in series) or layer '
+               '(mortar blocks, needed for the Poisson mismatch of mortar and brick); default interface')
+g.add_argument('--blocks', type=lambda s: [int(x) for x in floats(s, 3)], default=[2, 1, 2], help='blocks per brick along its length,width,height (default 2,1,2)')
+g.add_argument('--openings', type=str, default='', help='rectangles x0,z0,width,height separated by ";" (default none)')
+g.add_argument('--beam', type=float, default=0.1, help='height of the base and top beams (default 0.1)')
+m = parser.add_argument_group('materials (stresses in MPa, moduli in GPa)')
+m.add_argument('--brick-E', type=float, default=16.7, help="brick Young's modulus (default 16.7)")
+m.add_argument('--brick-nu', type=float, default=0.15, help="brick Poisson's ratio (default 0.15)")
+m.add_argument('--brick-ft', type=float, default=3.0, help='brick tensile strength (default 3.0)')
+m.add_argument('--brick-density', type=float, default=1800, help='brick density [kg/m3] (default 1800)')
+m.add_argument('--mortar-E', type=float, default=2.0, help="mortar Young's modulus (default 2.0)")
+m.add_argument('--mortar-nu', type=float, default=0.25, help="mortar Poisson's ratio (default 0.25)")
+m.add_argument('--bond-ft', type=float, default=0.2, help='tensile bond strength of the unit-mortar interface (default 0.2)')
+m.add_argument('--bond-c', type=float, default=0.3, help='cohesion of the joints (default 0.3)')
+m.add_argument('--bond-mu', type=float, default=0.75, help='friction coefficient of the joints (default 0.75)')
+r = parser.add_argument_group('model and loading')
+r.add_argument('--formulation', choices=['consistent', 'paper', 'off'], default='consistent',
+               help="Poisson formulation (default consistent; 'paper' needs a grid of 2x2x2 groups of blocks, e.g. stack bond)")
+r.add_argument('--springs', type=int, default=2, help='springs per face edge (default 2)')
+r.add_argument('--rate', type=float, default=20.0, help='shortening rate of the wall [mm/s] (default 20)')
+r.add_argument('--end', type=float, default=0.5, help='end shortening [mm] (default 0.5)')
+r.add_argument('--damping', type=float, default=0.0, help="Cundall's non-viscous damping of the integrator, in [0, 1) (default 0, as in the paper)")
+r.add_argument('--out', default='output/wall', help='output folder (default output/wall)')
+r.add_argument('--vtk-every', type=float, default=0.05, help='ParaView output every this shortening [mm] (default 0.05; 0 = none)')
+opts = parser.parse_args(sys.argv[1:])
+for name in ('rate', 'end', 'beam'):
+	if not getattr(opts, name) > 0:
+		sys.exit('--%s = %g: must be > 0' % (name, getattr(opts, name)))
+openings = []
+for text in filter(None, opts.openings.split(';')):
+	try:
+		openings.append(floats(text, 4))
+	except argparse.ArgumentTypeError as e:
+		sys.exit('--openings: %s' % e)
+
+import matplotlib
+matplotlib.use('Agg')
+import matplotlib.pyplot as plt
+from yade import O, PyRunner, VTKRecorder, Vector3
+from yade.wrapper import RdemMat, RdemJoint
+import rdem
+
+os.makedirs(opts.out, exist_ok=True)
+
+# 2. Scene ------------------------------------------------------------------------------------------------------------
+O.reset()
+wall0 = time.time()
+try:
+	brick = O.materials.append(
+	        RdemMat(young=opts.brick_E * 1e9, poisson=opts.brick_nu, density=opts.brick_density, tensileStrength=opts.brick_ft * 1e6, label='brick'))
+	joint = RdemJoint(young=opts.mortar_E * 1e9, poisson=opts.mortar_nu, tensileStrength=opts.bond_ft * 1e6, cohesion=opts.bond_c * 1e6,
+	                  frictionAngle=math.atan(opts.bond_mu))
+	O.engines = rdem.engines(segmentsPerEdge=opts.springs, poisson=None if opts.formulation == 'off' else opts.formulation, damping=opts.damping)
+	w = rdem.masonry.wall(opts.length, opts.height, opts.thickness, brick=opts.brick, joint=opts.joint, bond=opts.bond, blocksPerBrick=opts.blocks,
+	                      mortar=opts.mortar, openings=openings, baseBeam=opts.beam, topBeam=opts.beam, brickMaterial=brick, jointMaterial=joint)
+	for i in w.beams['base']:
+		O.bodies[i].state.blockedDOFs = 'xyzXYZ'
+	for i in w.beams['top']:
+		O.bodies[i].state.blockedDOFs = 'xyzXYZ'
+		O.bodies[i].state.vel = Vector3(0, 0, -opts.rate * 1e-3)
+	if opts.formulation != 'off':
+		rdem.poissonEngine().build(w.ids)
+except ValueError as e:
+	sys.exit('wall: %s' % e)
+area = w.layout.length * w.layout.thickness
+dt = rdem.timeStepper().safety * rdem.timeStepper().estimate()
+nSteps = int(math.ceil(opts.end / opts.rate / dt))
+print('wall: %s; %d Poisson elements, %d cells; about %d steps of %.3g s; set-up %.1f s' %
+      (w, rdem.poissonEngine().nElements if opts.formulation != 'off' else 0, rdem.poissonEngine().nCells if opts.formulation != 'off' else 0, nSteps, dt,
+       time.time() - wall0), flush=True)
+
+# 3. Recording -------------------------------------------------------------------------------------------------------
+kindOf = {}
+for kind, pairs in w.joints.items():
+	for a, b in pairs:
+		kindOf[(min(a, b), max(a, b))] = kind
+cracks = rdem.CrackExport(os.path.join(opts.out, 'vtk', ''))
+history = dict(t=[], shortening=[], stress=[], jointBreaks=[], brickBreaks=[])
+first = {}
+
+
+def shortening():
+	return sum(O.bodies[i].state.refPos[2] - O.bodies[i].state.pos[2] for i in w.beams['top']) / len(w.beams['top'])
+
+
+def stress():
+	"""Mean compressive stress on the wall: the force the wall exerts on the top beam over the cross-section [Pa]."""
+	return sum(O.forces.f(i)[2] for i in w.beams['top']) / area
+
+
+def breaks():
+	"""Broken springs of joints (bed, head, collar, beam, mortar) and inside bricks (internal) so far."""
+	segs = rdem.brokenSegments(cracks.snapshot)
+	inBricks = sum(1 for s in segs if kindOf.get((min(s['id1'], s['id2']), max(s['id1'], s['id2']))) == 'internal')
+	return len(segs) - inBricks, inBricks, segs
+
+
+def record():
+	nJ, nB, segs = breaks()
+	history['t'].append(O.time)
+	history['shortening'].append(shortening())
+	history['stress'].append(stress())
+	history['jointBreaks'].append(nJ)
+	history['brickBreaks'].append(nB)
+	for key, n in (('joint', nJ), ('brick', nB)):
+		if n > 0 and key not in first:
+			first[key] = dict(time=O.time, stressMPa=history['stress'][-1] * 1e-6, shorteningMm=history['shortening'][-1] * 1e3)
+
+
+progress = dict(wall=time.time(), iter=0)
+
+
+def report():
+	now = time.time()
+	rate = (O.iter - progress['iter']) / max(now - progress['wall'], 1e-9)
+	progress.update(wall=now, iter=O.iter)
+	left = (nSteps - O.iter) / rate if rate > 0 else float('nan')
+	print('step %7d/%d  shortening %.4f mm  stress %6.2f MPa  broken springs: joints %d, bricks %d  %.0f steps/s  %.0f s left' %
+	      (O.iter, nSteps, 1e3 * shortening(), 1e-6 * stress(), history['jointBreaks'][-1] if history['t'] else 0,
+	       history['brickBreaks'][-1] if history['t'] else 0, rate, left),
+	      flush=True)
+
+
+O.engines += [PyRunner(command='record()', iterPeriod=max(1, nSteps // 400)), PyRunner(command='report()', realPeriod=5)]
+vtkEvery = int(round(opts.vtk_every / opts.rate / dt)) if opts.vtk_every > 0 else 0
+if vtkEvery:
+	O.engines += [
+	        VTKRecorder(fileName=os.path.join(opts.out, 'vtk', 'blocks.'), recorders=['boxes'], iterPeriod=vtkEvery),
+	        PyRunner(command='cracks.write()', iterPeriod=vtkEvery)
+	]
+
+# 4. Run --------------------------------------------------------------------------------------------------------------
+wallRun = time.time()
+while shortening() < opts.end * 1e-3:
+	O.run(max(1, nSteps // 100), True)
+wallTime = time.time() - wallRun
+record()
+cracks.close()
+
+# 5. Results ----------------------------------------------------------------------------------------------------------
+nJ, nB, segs = breaks()
+elastic = [(d, s) for d, s, j, b in zip(history['shortening'], history['stress'], history['jointBreaks'], history['brickBreaks']) if j + b == 0 and d > 0]
+stiffness = sum(s for _, s in elastic[len(elastic) // 2:]) / sum(d for d, _ in elastic[len(elastic) // 2:]) if len(elastic) > 1 else float('nan')
+results = dict(input=vars(opts),
+               blocks=len(w.ids),
+               bonds=w.nBonds,
+               bricks=len(w.bricks),
+               courses=len(w.courses),
+               joints={k: len(v) for k, v in w.joints.items()},
+               cells=rdem.poissonEngine().nCells if opts.formulation != 'off' else 0,
+               poissonElements=rdem.poissonEngine().nElements if opts.formulation != 'off' else 0,
+               elasticStiffnessMPaPerMm=stiffness * 1e-9,
+               firstJointCrack=first.get('joint'),
+               firstBrickCrack=first.get('brick'),
+               peakStressMPa=max(history['stress']) * 1e-6,
+               brokenSprings=dict(joints=nJ, bricks=nB, tension=rdem.breakCounts()[0], shear=rdem.breakCounts()[1]),
+               steps=O.iter,
+               timeStep=O.dt,
+               wallSeconds=wallTime,
+               microsecondsPerBlockStep=1e6 * wallTime / max(1, O.iter * len(w.ids)),
+               history=history)
+with open(os.path.join(opts.out, 'results.json'), 'w') as f:
+	json.dump(results, f, indent=1)
+
+fig, ax = plt.subplots(figsize=(6, 4))
+ax.plot([1e3 * d for d in history['shortening']], [1e-6 * s for s in history['stress']], 'k-')
+for key, colour in (('joint', 'tab:blue'), ('brick', 'tab:red')):
+	if key in first:
+		ax.plot([first[key]['shorteningMm']], [first[key]['stressMPa']], 'o', color=colour, label='first cracked %s, %.2f MPa' % (key, first[key]['stressMPa']))
+if first:
+	ax.legend()
+ax.set_xlabel('shortening of the wall [mm]')
+ax.set_ylabel('mean compressive stress [MPa]')
+fig.tight_layout()
+fig.savefig(os.path.join(opts.out, 'stress_displacement.png'), dpi=120)
+
+fig, ax = plt.subplots(figsize=(6, 6 * (w.layout.height + 2 * opts.beam) / w.layout.length))
+for ids in w.units:
+	b0 = O.bodies[ids[0]]
+	lo = [min(O.bodies[i].state.pos[d] - O.bodies[i].shape.extents[d] for i in ids) for d in (0, 2)]
+	hi = [max(O.bodies[i].state.pos[d] + O.bodies[i].shape.extents[d] for i in ids) for d in (0, 2)]
+	ax.add_patch(plt.Rectangle((lo[0], lo[1]), hi[0] - lo[0], hi[1] - lo[1], fc=tuple(b0.shape.color), ec='k', lw=0.3))
+for s in segs:
+	p, t1, t2 = s['point'], s['t1'], s['t2']
+	if abs(s['normal'][1]) > 0.9:
+		continue  # collar faces are not seen from the front
+	h = s['halfSizes'][0] if abs(t1[1]) < 0.9 else s['halfSizes'][1]
+	t = t1 if abs(t1[1]) < 0.9 else t2
+	ax.plot([p[0] - h * t[0], p[0] + h * t[0]], [p[2] - h * t[2], p[2] + h * t[2]], '-', color='r' if s['state'] == 1 else 'b', lw=1.5)
+ax.set_xlim(-0.02, w.layout.length + 0.02)
+ax.set_ylim(-opts.beam - 0.02, w.layout.height + opts.beam + 0.02)
+ax.set_aspect('equal')
+ax.set_title('%d broken springs at %.2f mm (red tension, blue shear)' % (len(segs), 1e3 * shortening()))
+ax.set_xlabel('x [m]')
+ax.set_ylabel('z [m]')
+fig.tight_layout()
+fig.savefig(os.path.join(opts.out, 'cracks.png'), dpi=120)
+
+fmt = lambda d, k: '%.2f MPa' % d[k] if d else 'none'
+print('wall: elastic stiffness %.1f MPa/mm; first cracked joint %s, first cracked brick %s; peak %.2f MPa; %d steps in %.1f s (%.3f us per block-step); '
+      'results in %s' % (stiffness * 1e-9, fmt(first.get('joint'), 'stressMPa'), fmt(first.get('brick'), 'stressMPa'), results['peakStressMPa'], O.iter,
+                         wallTime, results['microsecondsPerBlockStep'], opts.out))
+sys.exit(0)
