@@ -6,8 +6,9 @@ Problem
     running bond, 10 mm interface joints, bricks cut into 2×1×2 blocks so that they can crack) between a base beam and a
     top beam, 100 mm each, of the brick's elastic constants and unbreakable. The base beam is fixed; the top beam moves
     down at a constant rate and is kept horizontal (no rotation). Consistent formulation: springs λ+2μ and Poisson cells
-    (doc/theory.md §5.4), so the elastic wall has exactly the input E and ν of its bricks and joints. Every geometric,
-    material and loading parameter is an option (rdem.masonry.wall builds the wall).
+    (doc/theory.md §5.4), so that a wall of one material has exactly the input E and ν; springs break on the total
+    normal stress of their face, springs plus cells (doc/theory.md §5.6; --failure-stress spring: the paper's
+    criterion). Every geometric, material and loading parameter is an option (rdem.masonry.wall builds the wall).
 
     Default materials (illustrative, one set for all runs): brick E = 16.7 GPa, ν = 0.15, f_t = 3 MPa, density
     1800 kg/m³; mortar E = 2 GPa, ν = 0.25; unit–mortar bond f_t = 0.2 MPa, cohesion 0.3 MPa, friction coefficient 0.75.
@@ -72,6 +73,9 @@ m.add_argument('--bond-mu', type=float, default=0.75, help='friction coefficient
 r = parser.add_argument_group('model and loading')
 r.add_argument('--formulation', choices=['consistent', 'paper', 'off'], default='consistent',
                help="Poisson formulation (default consistent; 'paper' needs a grid of 2x2x2 groups of blocks, e.g. stack bond)")
+r.add_argument('--failure-stress', choices=['total', 'spring'], default='total',
+               help="springs break on the face's total normal stress, springs plus Poisson cells (default, consistent formulation only), or on "
+               "the springs' own stress as in the paper (whose lateral springs carry tension under compression)")
 r.add_argument('--springs', type=int, default=2, help='springs per face edge (default 2)')
 r.add_argument('--rate', type=float, default=20.0, help='shortening rate of the wall [mm/s] (default 20)')
 r.add_argument('--end', type=float, default=0.5, help='end shortening [mm] (default 0.5)')
@@ -106,7 +110,11 @@ try:
 	        RdemMat(young=opts.brick_E * 1e9, poisson=opts.brick_nu, density=opts.brick_density, tensileStrength=opts.brick_ft * 1e6, label='brick'))
 	joint = RdemJoint(young=opts.mortar_E * 1e9, poisson=opts.mortar_nu, tensileStrength=opts.bond_ft * 1e6, cohesion=opts.bond_c * 1e6,
 	                  frictionAngle=math.atan(opts.bond_mu))
-	O.engines = rdem.engines(segmentsPerEdge=opts.springs, poisson=None if opts.formulation == 'off' else opts.formulation, damping=opts.damping)
+	total = opts.failure_stress == 'total' and opts.formulation == 'consistent'
+	O.engines = rdem.engines(segmentsPerEdge=opts.springs,
+	                         poisson=None if opts.formulation == 'off' else opts.formulation,
+	                         damping=opts.damping,
+	                         failureStress='total' if total else 'spring')
 	w = rdem.masonry.wall(opts.length, opts.height, opts.thickness, brick=opts.brick, joint=opts.joint, bond=opts.bond, blocksPerBrick=opts.blocks,
 	                      mortar=opts.mortar, openings=openings, baseBeam=opts.beam, topBeam=opts.beam, brickMaterial=brick, jointMaterial=joint)
 	for i in w.beams['base']:
@@ -115,6 +123,8 @@ try:
 		O.bodies[i].state.blockedDOFs = 'xyzXYZ'
 		O.bodies[i].state.vel = Vector3(0, 0, -opts.rate * 1e-3)
 	if opts.formulation != 'off':
+		if total:
+			rdem.poissonEngine().elements = 'cells'  # also on a grid (stack bond): the total stress of a face needs the cells
 		rdem.poissonEngine().build(w.ids)
 except ValueError as e:
 	sys.exit('wall: %s' % e)

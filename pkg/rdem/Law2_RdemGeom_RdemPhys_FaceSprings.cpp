@@ -88,6 +88,19 @@ namespace {
 		return slip - slip.dot(n) * n;
 	}
 
+	/* Normal stress the Poisson cells of the two blocks exert on their bonded face, positive in tension [Pa]: the cell
+	   force on the bond, -(c₁S₁ + c₂S₂) on body 2 along n (RdemPoissonEngine), as a traction over the face's weighted area
+	   w_n A, from the cells' elastic stresses of this step (RdemState::cellStress, along each block's axis of the bond).
+	   Added to the springs' σ = k_n u_n it is the total σ_nn of the face (doc/theory.md §5.6). Zero without cells. */
+	Real cellNormalStress(const State& s1, const State& s2, const RdemGeom& g, const RdemPhys& p)
+	{
+		if (p.cellCoef1 == 0 && p.cellCoef2 == 0) return 0;
+		const auto& a = static_cast<const RdemState&>(s1);
+		const auto& b = static_cast<const RdemState&>(s2);
+		const Real  S = p.cellCoef1 * a.cellStress[rdem::dominantAxis<Real>(g.segNormal1)] + p.cellCoef2 * b.cellStress[rdem::dominantAxis<Real>(g.segNormal2)];
+		return S / (p.weightNormal * g.segmentArea() * Real(g.nSegments()));
+	}
+
 	/// Calls f(law) for every Law2_RdemGeom_RdemPhys_FaceSprings in the InteractionLoops of the scene.
 	template <class F> void forEachLaw(const Scene* scene, F f)
 	{
@@ -105,6 +118,13 @@ long Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(const Scene* scene)
 	long n = 0;
 	forEachLaw(scene, [&](const Law2_RdemGeom_RdemPhys_FaceSprings& law) { n += law.tensionBreaks.get() + law.shearBreaks.get(); });
 	return n;
+}
+
+bool Law2_RdemGeom_RdemPhys_FaceSprings::totalStressOf(const Scene* scene)
+{
+	bool total = false;
+	forEachLaw(scene, [&](const Law2_RdemGeom_RdemPhys_FaceSprings& law) { total = total || law.totalStress; });
+	return total;
 }
 
 bool Law2_RdemGeom_RdemPhys_FaceSprings::takeActiveSetChanged(const Scene* scene)
@@ -198,6 +218,8 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		const Matrix3r R12    = offset ? Matrix3r(R1.transpose() * R2) : Matrix3r::Identity();
 		const Vector3r slip   = offset ? cellOffsetSlip(s1, s2, R1, R12, g, p, n) : Vector3r::Zero();
 		Vector3r       tSum   = Vector3r::Zero(); // Σ w_s k_s A (d_t - slip) over the intact segments [N]
+		// With totalStress, the failure criteria add the normal stress the cells exert on the face (tension > 0) [Pa].
+		const Real sigmaCells = totalStress ? cellNormalStress(s1, s2, g, p) : Real(0);
 		// Loop invariants in locals: the stores to the per-segment arrays below could alias them (all doubles).
 		const Real kn = p.kn, ks = p.ks, wn = p.weightNormal, ws = p.weightShear;
 		const Real ft = p.tensileStrength, cohesion = p.cohesion, tanPhi = p.tanFriction;
@@ -211,7 +233,7 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 				const Real     sigma   = kn * un;
 				const Vector3r tau     = ks * ust;
 				const Real     tauNorm = tau.norm();
-				const auto     state   = rdem::restoringSpringState(sigma, tauNorm, ft, cohesion, tanPhi);
+				const auto     state   = rdem::restoringSpringState(sigma + sigmaCells, tauNorm, ft, cohesion, tanPhi);
 				auto           energy  = [&]() { return A * (wn * sigma * sigma / kn + ws * tau.squaredNorm() / ks) / 2; };
 				if (state == rdem::SegmentState::Intact) {
 					applyAt(-(cn * un * n + cs * ust), s, r); // -(w_n σ n + w_s τ) A

@@ -22,6 +22,8 @@ public:
 	/// Whether, since the last call, an interaction started or stopped leaving deferred forces (over every instance of
 	/// this law in the scene); resets the record. Lets RdemForceAssembler keep its per-body lists between such events.
 	static bool takeActiveSetChanged(const Scene* scene);
+	/// Whether a Law2_RdemGeom_RdemPhys_FaceSprings of the scene has totalStress (RdemPoissonEngine::build then needs cells).
+	static bool totalStressOf(const Scene* scene);
 	/// Number of interactions that started or stopped leaving deferred forces since the last takeActiveSetChanged.
 	OpenMPAccumulator<int> activeSetChanges;
 	// clang-format off
@@ -33,6 +35,7 @@ public:
 
 With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemElastic`` (springs, current value), ``rdemDashpot``, ``rdemFriction`` and ``rdemBondBreak`` (cumulated).)""",
 		((bool,deferForces,false,,"Leave the forces and torques in :yref:`RdemPhys` (``force``, ``torque1``, ``torque2``) for :yref:`RdemForceAssembler`, which sums them per body in a fixed order, instead of adding them to the bodies in the order of the interaction container (which ``O.load`` and the collider change; ``rdem.engines()`` sets it)."))
+		((bool,totalStress,false,,"Failure criteria (eqs. 15-16) on the total normal stress of the face: the springs' $\\sigma$ plus the normal stress the Poisson cells exert on it, $(c_1S_1+c_2S_2)/(w_nA)$ (:yref:`RdemState::cellStress`, :yref:`RdemPhys::cellCoef1`; doc/theory.md §5.6); it is the continuum's $\\sigma_{nn}$ of the face, zero on the head joints of a wall in uniform vertical compression. Needs Poisson cells (consistent formulation, :yref:`RdemPoissonEngine::elements` ``'cells'`` or ``'auto'`` on a layout that is not a grid). False (default): the springs' $\\sigma$ alone, the paper's criterion, whose lateral springs carry $M\\nu\\sigma/E$ in tension under uniaxial compression (the paper's splitting mechanism)."))
 		((OpenMPAccumulator<int>,tensionBreaks,,Attr::readonly,"Number of restoring springs broken in tension (eq. 15) so far."))
 		((OpenMPAccumulator<int>,shearBreaks,,Attr::readonly,"Number of restoring springs broken in shear (eq. 16) so far."))
 		((int,elasticIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))

@@ -56,8 +56,9 @@ void RdemCellStrainUpdater::action()
 			eps[rdem::dominantAxis<Real>(side.second ? g.segNormal2 : g.segNormal1)] += (side.second ? p.cellCoef2 : p.cellCoef1) * p.opening;
 			scale = math::min(scale, Real(p.nIntact()) / Real(p.segState.size()));
 		}
-		st.strain    = st.cellCondensation * eps;
-		st.cellScale = scale;
+		st.strain     = st.cellCondensation * eps;
+		st.cellScale  = scale;
+		st.cellStress = scale * (st.cellStiffness * st.strain);
 	}
 }
 

@@ -11,6 +11,7 @@
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
+#include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemCellStrainUpdater.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
@@ -158,6 +159,9 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 	const bool       cellsWanted = elements == "cells" || (elements == "auto" && !defect.empty());
 	if (!cellsWanted && !defect.empty())
 		throw std::invalid_argument("RdemPoissonEngine.build: " + defect + "; the paper's hexahedra need a grid of 2x2x2 groups (one bonded neighbour per face). Poisson cells work on any layout: elements='cells' (or 'auto') with the consistent formulation");
+	if (!cellsWanted && Law2_RdemGeom_RdemPhys_FaceSprings::totalStressOf(scene))
+		throw std::invalid_argument("RdemPoissonEngine.build: Law2_RdemGeom_RdemPhys_FaceSprings.totalStress needs the Poisson normal stress of every bond, "
+		                            "which the cells give and the paper's hexahedra do not: elements = 'cells'");
 	if (cellsWanted && !consistent)
 		throw std::invalid_argument(
 		        "RdemPoissonEngine.build: " + (defect.empty() ? string("elements = 'cells'") : defect)

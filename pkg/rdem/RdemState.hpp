@@ -21,6 +21,7 @@ The cell's normal strains along the block's axes, $\varepsilon_d=\sum_q c_q u_{n
 		((Matrix3r,cellStiffness,Matrix3r::Zero(),Attr::readonly,"$V(D_{cond}-M\\,I)$ on the normal strains along the block's axes [N·m]: the normal block of the isotropic tensor (eq. 18), condensed over the axes without bonds ($\\sigma=0$ there), minus the springs' modulus $M=\\lambda+2\\mu$."))
 		((Matrix3r,cellCondensation,Matrix3r::Zero(),Attr::readonly,"Maps the strains of the axes with bonds to all three ($\\varepsilon_{all}=C\\varepsilon$): identity on axes with bonds, $-D_{UU}^{-1}D_{UR}$ on the others."))
 		((Vector3r,strain,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"Normal strains of the cell along the block's axes in this step, positive in extension (axes without bonds: from ``cellCondensation``) [-]."))
+		((Vector3r,cellStress,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"$\\partial W/\\partial\\varepsilon$ of the cell's elastic energy in this step, $sV(D-M\\,I)\\varepsilon$ along the block's axes [N·m] (without the offset correction's reaction): the Poisson part of the normal stress on the block's faces, read by the law for :yref:`Law2_RdemGeom_RdemPhys_FaceSprings::totalStress`."))
 		((Real,cellScale,1,Attr::readonly,"Crack scale of the cell: the smallest fraction of intact restoring springs among the block's bonds so far (1 intact, 0 once a bond is released); it never increases."))
 		,
 		/* ctor */ createIndex();

@@ -219,7 +219,8 @@ def engines(segmentsPerEdge=2,
             dt=None,
             safety=0.8,
             verletDist=None,
-            finiteGuard=True):
+            finiteGuard=True,
+            failureStress='spring'):
 	"""The engine list of a refined-DEM scene.
 
 	:param segmentsPerEdge: $n$, each bonded face carries $n\\times n$ springs (paper: 2).
@@ -235,6 +236,10 @@ def engines(segmentsPerEdge=2,
 	    only warns if it exceeds the estimate).
 	:param verletDist: collider sweep distance [m] (default: none, the collider runs every step; set it to about 5 % of the
 	    block size for speed).
+	:param failureStress: ``'spring'`` (default, the paper's): restoring springs break on their own stresses (eqs. 15-16);
+	    ``'total'``: on the total normal stress of the face, springs plus Poisson cells
+	    (:yref:`Law2_RdemGeom_RdemPhys_FaceSprings.totalStress`, doc/theory.md §5.6; needs ``poisson='consistent'`` and
+	    cells: set ``rdem.poissonEngine().elements = 'cells'`` before ``build`` on a grid).
 	:param finiteGuard: append :yref:`RdemFiniteGuard` after the integrator: the run stops at the first NaN or infinite
 	    position, velocity or force, naming the body and interactions (costs < 1 % of a step)."""
 	if poisson not in POISSON_MODES:
@@ -251,9 +256,13 @@ def engines(segmentsPerEdge=2,
 		raise ValueError('verletDist = %r: must be finite and >= 0 [m] (or None)' % (verletDist, ))
 	if len(gravity) != 3 or not all(math.isfinite(g) for g in gravity):
 		raise ValueError('gravity = %r: must be 3 finite numbers [m/s2]' % (gravity, ))
+	if failureStress not in ('spring', 'total'):
+		raise ValueError("failureStress = %r: must be 'spring' or 'total'" % (failureStress, ))
+	if failureStress == 'total' and poisson != 'consistent':
+		raise ValueError("failureStress = 'total' needs poisson = 'consistent' (the total stress of a face comes from the Poisson cells), not %r" % (poisson, ))
 	formulation, withPoisson = POISSON_MODES[poisson]
 	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge)], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation)],
-	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True)])
+	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True, totalStress=failureStress == 'total')])
 	eng = [ForceResetter()]
 	if recontact not in (True, False, 'always'):
 		raise ValueError("recontact = %r: must be True, False or 'always'" % (recontact, ))

@@ -133,3 +133,132 @@ class CompressionTest:
 		axial = self.axialPairs()
 		eAx = sum(measure.pairStrain(a, b) for a, b in axial) / len(axial)
 		return -self.stress() / eAx if eAx else float('nan')
+
+
+class MasonryPrism:
+	"""A stack-bonded masonry prism with mortar layers of their own (the *layer* model, doc/theory.md §1.1, §5.5): ``courses``
+	bricks of height ``brickHeight`` and ``courses - 1`` mortar layers of thickness ``mortarThickness``, all of the same
+	``width`` × ``width`` cross-section, each brick cut into ``blocks`` × ``blocks`` × ``blocksPerBrickHeight`` blocks and
+	each mortar layer into ``blocks`` × ``blocks`` × 1, between a bottom (fixed) and a top (loading) plate of one plate
+	block per column (free across the load: frictionless platens). Consistent formulation with Poisson cells, springs
+	breaking on the total normal stress of their face (``failureStress='total'``); brick–mortar faces are
+	:yref:`RdemJoint` interfaces of thickness 0 with the bond's strengths. Lengths in m, stresses in Pa, rate in m/s.
+
+	:meth:`lateralStrain` measures the lateral strain of the middle brick's interior, :meth:`closedForm` gives that of an
+	infinite stack of the same layers (doc/theory.md §5.5)."""
+
+	def __init__(self,
+	             brick,
+	             mortar,
+	             bond,
+	             courses=3,
+	             width=0.2,
+	             brickHeight=0.05,
+	             mortarThickness=0.01,
+	             blocks=4,
+	             blocksPerBrickHeight=1,
+	             plateHeight=0.02,
+	             rate=0.02,
+	             segmentsPerEdge=2,
+	             damping=0.0):
+		for name, value in (('width', width), ('brickHeight', brickHeight), ('mortarThickness', mortarThickness), ('plateHeight', plateHeight), ('rate', rate)):
+			if not (math.isfinite(value) and value > 0):
+				raise ValueError('%s = %r: must be finite and > 0 [m, m/s]' % (name, value))
+		for name, value in (('courses', courses), ('blocks', blocks), ('blocksPerBrickHeight', blocksPerBrickHeight)):
+			if not (isinstance(value, int) and value >= 1):
+				raise ValueError('%s = %r: must be an integer >= 1' % (name, value))
+		if courses < 2:
+			raise ValueError('courses = %d: must be >= 2 (a prism has at least one mortar layer)' % courses)
+		if len(O.bodies) or len(O.interactions):
+			raise RuntimeError('MasonryPrism builds into an empty scene: call O.reset() first')
+		from yade.wrapper import RdemJoint
+		if not isinstance(bond, RdemJoint):
+			raise ValueError('bond = %r: must be an RdemJoint (the strengths of the brick-mortar interface)' % (bond, ))
+		self.brick, self.mortar, self.width, self.rate = brick, mortar, width, rate
+		self.layers = []  # (kind, z0, z1)
+		self.plateMaterial = RdemMat(young=brick.young, poisson=brick.poisson, density=brick.density, tensileStrength=float('inf'), cohesion=float('inf'),
+		                             label='plate')
+		for m in (brick, mortar, self.plateMaterial):
+			if m.id < 0:
+				O.materials.append(m)
+		O.engines = build.engines(segmentsPerEdge=segmentsPerEdge, poisson='consistent', damping=damping, failureStress='total', recontact=True)
+		d = width / blocks
+		z = 0.0
+		self.bottom = build.blockGrid((blocks, blocks, 1), (d, d, plateHeight), self.plateMaterial, origin=(0, 0, -plateHeight))
+		self.brickIds, self.mortarIds = [], []
+		for k in range(courses):
+			ids = build.blockGrid((blocks, blocks, blocksPerBrickHeight), (d, d, brickHeight / blocksPerBrickHeight), brick, origin=(0, 0, z),
+			                      color=Vector3(.72, .33, .22))
+			self.brickIds.append(ids)
+			self.layers.append(('brick', z, z + brickHeight))
+			z += brickHeight
+			if k < courses - 1:
+				self.mortarIds.append(build.blockGrid((blocks, blocks, 1), (d, d, mortarThickness), mortar, origin=(0, 0, z), color=Vector3(.8, .8, .75)))
+				self.layers.append(('mortar', z, z + mortarThickness))
+				z += mortarThickness
+		self.height = z
+		self.top = build.blockGrid((blocks, blocks, 1), (d, d, plateHeight), self.plateMaterial, origin=(0, 0, z))
+		masonry = [i for ids in self.brickIds + self.mortarIds for i in ids]
+		self.ids = self.bottom + masonry + self.top
+		# Bonds: inside bricks, inside mortar layers and to the plates directly; brick-mortar faces with the bond's strengths.
+		mortarSet = set(i for ids in self.mortarIds for i in ids)
+		brickSet = set(i for ids in self.brickIds for i in ids)
+		for ids in self.brickIds + self.mortarIds + [self.bottom, self.top]:
+			build.bond(ids)
+		interfacePairs, platePairs = [], []
+		n = blocks * blocks
+		for k in range(courses):
+			lowest, highest = self.brickIds[k][:n], self.brickIds[k][-n:]
+			if k < courses - 1:
+				interfacePairs += list(zip(highest, self.mortarIds[k]))
+			if k > 0:
+				interfacePairs += list(zip(self.mortarIds[k - 1], lowest))
+		platePairs = list(zip(self.bottom, self.brickIds[0][:n])) + list(zip(self.brickIds[-1][-n:], self.top))
+		self.interface = RdemJoint(thickness=0, young=mortar.young, poisson=mortar.poisson, tensileStrength=bond.tensileStrength, cohesion=bond.cohesion,
+		                           frictionAngle=bond.frictionAngle, label='bed')
+		build.bondPairs(interfacePairs, joint=self.interface)
+		build.bondPairs(platePairs)
+		for i in self.bottom + self.top:
+			O.bodies[i].state.blockedDOFs = 'zXYZ'  # frictionless platens, before the cells: they are half cells
+		build.poissonEngine().elements = 'cells'
+		build.poissonEngine().build(self.ids)
+		for i in self.top:
+			O.bodies[i].state.vel = Vector3(0, 0, -rate)
+		self.area = width * width
+		self.blocks = blocks
+		self.brickSet, self.mortarSet = brickSet, mortarSet
+
+	def stress(self):
+		"""Mean compressive stress on the loading plate [Pa], positive in compression."""
+		return sum(O.forces.f(i)[2] for i in self.top) / self.area
+
+	def displacement(self):
+		"""Downward displacement of the loading plate [m]."""
+		return sum(O.bodies[i].state.refPos[2] - O.bodies[i].state.pos[2] for i in self.top) / len(self.top)
+
+	def lateralStrain(self):
+		"""Lateral strain of the interior of the middle brick: the slope of the x-displacement of the centroids of its two
+		central rows of blocks (along x, at the central y), over x [-] (positive = expansion)."""
+		ids = self.brickIds[len(self.brickIds) // 2]
+		d = self.width / self.blocks
+		centre = self.width / 2
+		pts = [(O.bodies[i].state.refPos[0], O.bodies[i].state.pos[0] - O.bodies[i].state.refPos[0]) for i in ids
+		       if abs(O.bodies[i].state.refPos[1] - centre) < d and abs(O.bodies[i].state.refPos[0] - centre) < 1.01 * d]
+		xs = sorted(set(round(x, 12) for x, _ in pts))
+		if len(xs) < 2:
+			raise ValueError('blocks = %d: the interior lateral strain needs at least 2 blocks across' % self.blocks)
+		lo = [u for x, u in pts if round(x, 12) == xs[0]]
+		hi = [u for x, u in pts if round(x, 12) == xs[-1]]
+		return (sum(hi) / len(hi) - sum(lo) / len(lo)) / (xs[-1] - xs[0])
+
+	def closedForm(self):
+		"""Lateral strain per unit compressive stress of an infinite stack of the prism's brick and mortar layers under uniform
+		vertical stress, bonded (equal lateral strain e in all layers, zero mean lateral stress) [1/Pa] (doc/theory.md §5.5):
+		e/σ = Σ t_i λ_i/M_i / Σ t_i (2(λ_i + μ_i) - 2λ_i²/M_i), over one period of the stack."""
+		num = den = 0.0
+		for m, t in ((self.brick, self.layers[0][2] - self.layers[0][1]), (self.mortar, self.layers[1][2] - self.layers[1][1])):
+			lam, mu = m.young * m.poisson / ((1 + m.poisson) * (1 - 2 * m.poisson)), m.young / (2 * (1 + m.poisson))
+			M = lam + 2 * mu
+			num += t * lam / M
+			den += t * (2 * (lam + mu) - 2 * lam * lam / M)
+		return num / den
