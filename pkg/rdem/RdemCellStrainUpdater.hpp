@@ -7,7 +7,6 @@
 #pragma once
 
 #include <core/GlobalEngine.hpp>
-#include <pkg/rdem/RdemCellBonds.hpp>
 
 namespace yade {
 
@@ -21,9 +20,6 @@ public:
 It must come before the :yref:`InteractionLoop`, because :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` corrects the shear springs of bonds whose centroids are offset along the face with these strains (running bond); :yref:`RdemPoissonEngine` turns them into forces after the loop. ``rdem.engines(poisson='consistent')`` places it. Without cells (no ``build``, or a grid of $2\times2\times2$ groups, which uses the paper's elements) it does nothing.)""");
 	// clang-format on
 	DECLARE_LOGGER;
-
-private:
-	RdemCellBonds cells; // not saved: rebuilt when the scene changes
 };
 REGISTER_SERIALIZABLE(RdemCellStrainUpdater);
 

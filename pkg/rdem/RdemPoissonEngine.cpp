@@ -241,10 +241,10 @@ vector<Real> RdemPoissonEngine::hex8Omega2Bound() const
 	return bound;
 }
 
-vector<Real> RdemPoissonEngine::omega2Bound() const
+vector<Real> RdemPoissonEngine::omega2Bound()
 {
-	vector<Real> w2 = hex8Omega2Bound();
-	const vector<Real> c = cellOmega2Bound();
+	vector<Real>       w2 = hex8Omega2Bound();
+	const vector<Real> c  = cells.omega2Bound(Omega::instance().getScene().get());
 	for (size_t id = 0; id < c.size() && id < w2.size(); ++id)
 		w2[id] += c[id];
 	return w2;
@@ -263,110 +263,19 @@ int RdemPoissonEngine::nCells() const
 
 void RdemPoissonEngine::cellAction()
 {
-	cells.refresh(scene);
-	if (cells.bonds.empty()) return;
-	const long nBodies = long(cells.nBodies());
-	cellStress.assign(size_t(nBodies), Vector3r::Zero());
-	if (cellScalePrev.size() != size_t(nBodies)) {
-		cellScalePrev.assign(size_t(nBodies), 1);
-		for (long b = 0; b < nBodies; ++b)
-			if (const auto* st = dynamic_cast<const RdemState*>(Body::byId(Body::id_t(b), scene) ? Body::byId(Body::id_t(b), scene)->state.get() : nullptr))
-				cellScalePrev[size_t(b)] = st->cellScale;
-	}
-	const bool trackEnergy = scene->trackEnergy;
-	Real       energy = 0, released = 0; // Σ ½ s εᵀKε of the cells; ½ (s_prev - s) εᵀKε lost to cracks in this step [J]
-	/* 1. Per cell: ∂W/∂ε = s K ε (K = V(D - M I), RdemState::cellStiffness) plus the reaction of the offset correction of
-	      its bonds' shear springs, mapped to the axes with bonds by the condensation (RdemState::cellCondensation). */
-#ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static) reduction(+ : energy, released)
-#endif
-	for (long b = 0; b < nBodies; ++b) {
-		if (cells.first[size_t(b)] == cells.first[size_t(b) + 1]) continue;
-		const auto&    st   = *static_cast<const RdemState*>(Body::byId(Body::id_t(b), scene)->state.get());
-		const Real     s    = releaseOnCrack ? st.cellScale : Real(1);
-		const Vector3r Ke   = st.cellStiffness * st.strain;
-		Vector3r       grad = Vector3r::Zero();
-		for (size_t k = cells.first[size_t(b)]; k < cells.first[size_t(b) + 1]; ++k) {
-			const auto& side = cells.sides[k];
-			if (!side.I->isReal()) continue;
-			const auto& p = *static_cast<const RdemPhys*>(side.I->phys.get());
-			if (p.centroidOffset != Vector3r::Zero()) grad += side.second ? p.offsetGrad2 : p.offsetGrad1;
-		}
-		cellStress[size_t(b)] = s * Ke + st.cellCondensation.transpose() * grad;
-		if (trackEnergy) {
-			energy += s * st.strain.dot(Ke) / 2;
-			released += (cellScalePrev[size_t(b)] - s) * st.strain.dot(Ke) / 2;
-		}
-		cellScalePrev[size_t(b)] = s;
-	}
-	/* 2. Per block: the normal force -∂W/∂u_n = -(c₁∂W/∂ε₁ + c₂∂W/∂ε₂) of each of its bonds, on body 2 along the bond's
-	      normal and on body 1 against it, at the face centre; summed body by body in the fixed order of the lists. */
-	RdemForceAssembler::prepareDirectSums(scene, nBodies);
-#ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static)
-#endif
-	for (long b = 0; b < nBodies; ++b) {
-		if (cells.first[size_t(b)] == cells.first[size_t(b) + 1]) continue;
-		const State&   sb = *Body::byId(Body::id_t(b), scene)->state;
-		const Matrix3r Rb = sb.ori.toRotationMatrix();
-		Vector3r       f = Vector3r::Zero(), t = Vector3r::Zero();
-		for (size_t k = cells.first[size_t(b)]; k < cells.first[size_t(b) + 1]; ++k) {
-			const auto& side = cells.sides[k];
-			if (!side.I->isReal()) continue;
-			const auto& g = *static_cast<const RdemGeom*>(side.I->geom.get());
-			if (!g.bonded) continue;
-			const auto&    p  = *static_cast<const RdemPhys*>(side.I->phys.get());
-			const Real     F  = -(p.cellCoef1 * cellStress[size_t(side.I->getId1())][rdem::dominantAxis<Real>(g.segNormal1)]
-                                 + p.cellCoef2 * cellStress[size_t(side.I->getId2())][rdem::dominantAxis<Real>(g.segNormal2)]);
-			const Vector3r fb = (side.second ? F : -F) * g.normal;
-			f += fb;
-			t += (Rb * (side.second ? g.faceCentre2 : g.faceCentre1)).cross(fb);
-		}
-		scene->forces.addForceUnsynced(Body::id_t(b), f);
-		scene->forces.addTorqueUnsynced(Body::id_t(b), t);
-	}
-	if (trackEnergy) {
+	Real energy = 0, released = 0;
+	cells.applyForces(scene, releaseOnCrack, energy, released);
+	if (scene->trackEnergy && cells.nCells() > 0) {
 		scene->energy->add(energy, "rdemPoisson", energyIx, /*reset every step*/ true);
 		scene->energy->add(released, "rdemPoissonRelease", releaseIx, /*reset every step*/ false);
 	}
 }
 
-vector<Real> RdemPoissonEngine::cellOmega2Bound() const
+RdemPoissonEngine* RdemPoissonEngine::of(const Scene* scene)
 {
-	/* The cells' stiffness on the bond openings is K_qr = Σ_b s_b c_bq K_b(d_q, d_r) c_br over the cells b the two bonds
-	   share. Each bond q is bounded like a normal spring of stiffness κ_q = Σ_r |K_qr| at its face centre, with the
-	   Gershgorin terms 2κ(1/m + |r×n|²/I_min) of each of its free blocks (as RdemTimeStepper does for springs) [1/s²]. */
-	Scene*       sc = Omega::instance().getScene().get();
-	vector<Real> w2(sc->bodies->size(), 0);
-	RdemCellBonds lists;
-	lists.refresh(sc);
-	auto cellRow = [&](Body::id_t b, int axis) { // Σ_r |K_b(axis, d_r)| |c_br| over the bonds r of b's cell
-		const auto& st  = *static_cast<const RdemState*>(Body::byId(b, sc)->state.get());
-		Real        sum = 0;
-		for (size_t k = lists.first[size_t(b)]; k < lists.first[size_t(b) + 1]; ++k) {
-			const auto& side = lists.sides[k];
-			if (!side.I->isReal()) continue;
-			const auto& g = *static_cast<const RdemGeom*>(side.I->geom.get());
-			const auto& p = *static_cast<const RdemPhys*>(side.I->phys.get());
-			sum += math::abs(st.cellStiffness(axis, rdem::dominantAxis<Real>(side.second ? g.segNormal2 : g.segNormal1))) * math::abs(side.second ? p.cellCoef2 : p.cellCoef1);
-		}
-		return st.cellScale * sum;
-	};
-	for (const auto& I : lists.bonds) {
-		if (!I->isReal()) continue;
-		const auto& g = *static_cast<const RdemGeom*>(I->geom.get());
-		const auto& p = *static_cast<const RdemPhys*>(I->phys.get());
-		if (!g.bonded) continue;
-		const Real kappa = math::abs(p.cellCoef1) * cellRow(I->getId1(), rdem::dominantAxis<Real>(g.segNormal1)) + math::abs(p.cellCoef2) * cellRow(I->getId2(), rdem::dominantAxis<Real>(g.segNormal2));
-		for (int k = 0; k < 2; ++k) {
-			const State& s = *Body::byId(k ? I->getId2() : I->getId1(), sc)->state;
-			if (s.blockedDOFs == State::DOF_ALL) continue;
-			const Vector3r r = s.ori * (k ? g.faceCentre2 : g.faceCentre1);
-			const Vector3r n = s.ori * (k ? g.segNormal2 : g.segNormal1);
-			w2[size_t(k ? I->getId2() : I->getId1())] += 2 * kappa * (1 / s.mass + r.cross(n).squaredNorm() / s.inertia.minCoeff());
-		}
-	}
-	return w2;
+	for (const auto& e : scene->engines)
+		if (auto* p = dynamic_cast<RdemPoissonEngine*>(e.get())) return p;
+	return nullptr;
 }
 
 } // namespace yade

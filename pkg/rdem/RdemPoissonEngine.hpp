@@ -8,7 +8,7 @@
 
 #include <core/GlobalEngine.hpp>
 #include <core/Interaction.hpp>
-#include <pkg/rdem/RdemCellBonds.hpp>
+#include <pkg/rdem/RdemCellNetwork.hpp>
 #include <pkg/rdem/math/Hex8.hpp>
 #include <map>
 #include <set>
@@ -25,11 +25,15 @@ public:
 	/// Python front of build: a list of ids, empty (default) for all blocks.
 	void buildPy(const py::list& ids);
 	/// Per body, an upper bound of the squared eigenfrequency the Poisson forces add (Gershgorin) [1/s²] (RdemTimeStepper).
-	vector<Real> omega2Bound() const;
+	vector<Real> omega2Bound();
 	/// Number of elements (paper's hexahedra).
 	int nElements() const { return int(nodes.size() / 8); }
 	/// Number of blocks with a Poisson cell.
 	int nCells() const;
+	/// The cells at run time (RdemCellStrainUpdater updates their strains before the interaction loop).
+	RdemCellNetwork& cellNetwork() { return cells; }
+	/// The RdemPoissonEngine of the scene, or nullptr.
+	static RdemPoissonEngine* of(const Scene* scene);
 	/// Current scale factor of each element (1 intact, 0 released by a crack or an erased block).
 	vector<Real> elementScales();
 	void         postLoad(RdemPoissonEngine&);
@@ -79,7 +83,6 @@ private:
 	void                    hex8Action();
 	void                    cellAction();
 	vector<Real>            hex8Omega2Bound() const;
-	vector<Real>            cellOmega2Bound() const;
 	vector<rdem::Mat24<Real>> stiffness;   // the distinct K_p of the elements, rebuilt from refPos, lambda, skin (not saved)
 	vector<size_t>          stiffnessOf; // per element, its K_p in stiffness (not saved)
 	vector<shared_ptr<Interaction>> bonds;     // the 12 bonds of each element, looked up once (not saved)
@@ -91,9 +94,7 @@ private:
 	vector<Vector3r>        nodePos;           // per body: its position in this step, copied once per step for the elements (not saved)
 	long                    scalesBroken = -1; // broken springs in the scene when scales were computed
 	long                    scalesIntrs  = -1; // number of interactions then
-	RdemCellBonds           cells;             // the bonds of the cells, per body (not saved)
-	vector<Vector3r>        cellStress;        // per body: ∂W/∂ε of its cell in this step [N·m] (not saved)
-	vector<Real>            cellScalePrev;     // per body: the cell's scale in the last step, for rdemPoissonRelease (not saved)
+	RdemCellNetwork         cells;             // the cells at run time (not saved: rebuilt from the states and interactions)
 	void                    prepare();
 	rdem::Mat24<Real>       elementStiffness(size_t e) const;
 	bool                    prepared() const { return stiffnessOf.size() == size_t(nElements()); }

@@ -175,7 +175,7 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 	if (cellsWanted) buildCells(ids);
 	else
 		buildHex8(ids, nbr, consistent);
-	RdemCellBonds::generation++;
+	RdemCellNetwork::generation++;
 	scalePrev.clear(); // the first step takes the current scales
 	prepare();
 }

@@ -105,13 +105,13 @@ Real RdemTimeStepper::estimate(Scene* sc) const
 		}
 	}
 	if (contactBound) addContactBound(omega2, bonded, sc);
-	for (const auto& e : sc->engines) {
-		const auto* poisson = dynamic_cast<RdemPoissonEngine*>(e.get());
-		if (!poisson || poisson->dead) continue;
-		const vector<Real> P = poisson->omega2Bound();
-		for (size_t id = 0; id < P.size() && id < omega2.size(); ++id) {
-			const auto& b = Body::byId(Body::id_t(id), sc);
-			if (b && b->state->blockedDOFs != State::DOF_ALL) omega2[id] += P[id];
+	if (RdemPoissonEngine* poisson = RdemPoissonEngine::of(sc)) {
+		if (!poisson->dead) {
+			const vector<Real> P = poisson->omega2Bound();
+			for (size_t id = 0; id < P.size() && id < omega2.size(); ++id) {
+				const auto& b = Body::byId(Body::id_t(id), sc);
+				if (b && b->state->blockedDOFs != State::DOF_ALL) omega2[id] += P[id];
+			}
 		}
 	}
 	const Real w2 = *std::max_element(omega2.begin(), omega2.end());

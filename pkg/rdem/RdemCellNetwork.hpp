@@ -1,0 +1,71 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+#pragma once
+
+#include <core/Interaction.hpp>
+#include <core/Scene.hpp>
+#include <pkg/rdem/RdemState.hpp>
+
+namespace yade {
+
+/* The Poisson cells at run time (doc/theory.md §5.4): their bonds and blocks in compact arrays, built from the scene's
+   interactions and states when they change (a new RdemPoissonEngine.build, bodies or interactions added or removed),
+   then two passes per step that follow no pointer to an interaction: updateStrains before the interaction loop (the
+   blocks' poses, the bonds' openings and normals, the cells' strains and elastic stresses, written to each block's
+   RdemState for the law) and applyForces after it (the cells' normal forces on their bonds, summed per block).
+   Not a YADE class: RdemPoissonEngine owns one; RdemCellStrainUpdater calls updateStrains on it. */
+class RdemCellNetwork {
+public:
+	/// Rebuilds the arrays if the scene changed since the last call; false if there is no cell.
+	bool refresh(Scene* scene);
+	/// Before the law: poses, openings u_n = n·(P₂ - P₁) at the face centres, crack scales, RdemState::strain,
+	/// ::cellScale and ::cellStress of every cell.
+	void updateStrains(Scene* scene);
+	/// After the law: ∂W/∂ε of every cell (its elastic stress plus the reaction of its bonds' offset correction), then the
+	/// normal force -Σ c ∂W/∂ε of every bond at its face centre, added to the blocks in a fixed order. Adds the cells'
+	/// energy ½ s εᵀKε and the energy released by a drop of s [J].
+	void applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released);
+	/// Per body id, the Gershgorin bound of the squared eigenfrequency the cells add [1/s²] (see the definition).
+	vector<Real> omega2Bound(Scene* scene);
+	/// Number of blocks with a cell.
+	size_t nCells() const { return nCellBlocks; }
+	/// Incremented by RdemPoissonEngine::build: arrays made before it are rebuilt.
+	static long generation;
+
+private:
+	struct Bond {                      // constant between rebuilds
+		size_t   i1, i2;                 // compact indices of the two blocks
+		int      ax1, ax2;               // the bond's axis in each block's frame
+		Real     c1, c2;                 // cell coefficients ∂ε/∂u_n of the two blocks [1/m] (RdemPhys::cellCoef1, 2)
+		Vector3r n1, n2, fc1, fc2;       // face normal and face centre in each block's frame
+	};
+	vector<Bond>                    bond;
+	vector<shared_ptr<Interaction>> intr;       // per bond, to see it released and read its intact fraction
+	vector<Real>                    opening;    // per bond, this step [m]
+	vector<Vector3r>                normal;     // per bond, this step: body 1's rotated face normal
+	vector<Vector3r>                arm1, arm2; // per bond, this step: moment about each block's centroid of a unit force along normal at the face centre [m]
+	vector<Real>                    intact;     // per bond, fraction of intact restoring springs (0 once released)
+	vector<Body::id_t>              body;       // per compact block: its id
+	vector<RdemState*>              state;      // per compact block
+	vector<char>                    hasCell;    // per compact block: whether it has a cell (else it only moves bonds)
+	vector<size_t>                  first;      // compact block i: sides first[i] … first[i+1]-1
+	vector<size_t>                  sideBond;   // the bond of each side
+	vector<char>                    sideSecond; // whether the block is the bond's second block
+	vector<char>                    sideOffset; // whether the bond has a centroid offset (its law writes RdemPhys::offsetGrad)
+	vector<Matrix3r>                rot;        // per compact block, this step
+	vector<Vector3r>                pos;
+	vector<Matrix3r>                stiffness;    // per compact block: RdemState::cellStiffness (constant between builds)
+	vector<Matrix3r>                condensation; // per compact block: RdemState::cellCondensation
+	vector<Vector3r>                stress;     // per compact block: ∂W/∂ε this step [N·m]
+	vector<Real>                    scalePrev;  // per compact block: cell scale of the last step
+	size_t                          nCellBlocks = 0;
+	long builtGeneration = -1, builtInteractions = -1, builtBodies = -1, brokenSeen = -1;
+	void rebuild(Scene* scene);
+	void updateIntact(Scene* scene);
+};
+
+} // namespace yade
