@@ -78,7 +78,7 @@ r.add_argument('--failure-stress', choices=['total', 'spring'], default='total',
                "the springs' own stress as in the paper (whose lateral springs carry tension under compression)")
 r.add_argument('--springs', type=int, default=2, help='springs per face edge (default 2)')
 r.add_argument('--rate', type=float, default=20.0, help='shortening rate of the wall [mm/s] (default 20)')
-r.add_argument('--end', type=float, default=0.5, help='end shortening [mm] (default 0.5)')
+r.add_argument('--end', type=float, default=1.5, help='end shortening [mm] (default 1.5)')
 r.add_argument('--damping', type=float, default=0.0, help="Cundall's non-viscous damping of the integrator, in [0, 1) (default 0, as in the paper)")
 r.add_argument('--out', default='output/wall', help='output folder (default output/wall)')
 r.add_argument('--vtk-every', type=float, default=0.05, help='ParaView output every this shortening [mm] (default 0.05; 0 = none)')
