@@ -123,6 +123,10 @@ void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom
 {
 	if (segmentsPerEdge < 1)
 		throw std::invalid_argument("Ig2_RdemBlock_RdemBlock_RdemGeom.segmentsPerEdge = " + std::to_string(segmentsPerEdge) + ": must be an integer >= 1");
+	if (contactSamplesPerEdge < 0)
+		throw std::invalid_argument(
+		        "Ig2_RdemBlock_RdemBlock_RdemGeom.contactSamplesPerEdge = " + std::to_string(contactSamplesPerEdge)
+		        + ": must be an integer >= 1 (or 0: segmentsPerEdge)");
 	if (!(bondGapTolerance >= 0))
 		throw std::invalid_argument("Ig2_RdemBlock_RdemBlock_RdemGeom.bondGapTolerance = " + std::to_string(bondGapTolerance) + ": must be >= 0");
 	if (prefetchDistance < -1)
@@ -176,8 +180,8 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 		} else {
 			if (!rdem::blocksOverlap<Real>(pair, tol)) return false;
 			RdemGeom probe;
-			probe.samplesPerEdge = segmentsPerEdge;
-			sampleContacts(pair, state1, state2, tol, segmentsPerEdge, probe);
+			probe.samplesPerEdge = contactSamples();
+			sampleContacts(pair, state1, state2, tol, contactSamples(), probe);
 			if (probe.sampleKey.empty()) return false;
 			auto g  = shared_ptr<RdemGeom>(new RdemGeom(probe));
 			g->ell1 = faceDistance(A, probe.sampleNormal[0]);

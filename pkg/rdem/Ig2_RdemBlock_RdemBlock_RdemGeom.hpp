@@ -22,8 +22,10 @@ public:
 	        const Vector3r&                shift2,
 	        const bool&                    force,
 	        const shared_ptr<Interaction>& I) override;
-	/// Throws std::invalid_argument (Python: ValueError) for segmentsPerEdge < 1, a negative bondGapTolerance or prefetchDistance < -1.
+	/// Throws std::invalid_argument (Python: ValueError) for segmentsPerEdge < 1, contactSamplesPerEdge < 0, a negative bondGapTolerance or prefetchDistance < -1.
 	void postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom&);
+	/// The sample grid of sampled contacts: contactSamplesPerEdge, or segmentsPerEdge if that is 0.
+	int contactSamples() const { return contactSamplesPerEdge > 0 ? contactSamplesPerEdge : segmentsPerEdge; }
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(Ig2_RdemBlock_RdemBlock_RdemGeom,IGeomFunctor,R"""(Geometry functor of two :yref:`RdemBlock`, producing :yref:`RdemGeom`.
 
@@ -33,6 +35,7 @@ public:
 
 Not for periodic cells with shear (``shift2`` of the cell is honoured, the cell's shear is not).)""",
 		((int,segmentsPerEdge,2,Attr::triggerPostLoad,"$n$: each bonded face is cut into $n\\times n$ segments (paper: 4 springs per face, $n=2$); also the density of the contact sample grid. $n\\ge 1$."))
+		((int,contactSamplesPerEdge,0,Attr::triggerPostLoad,"$m$: the sample grid of sampled contacts (blocks that are not bonded) is $(m+1)\\times(m+1)$ points per face, trapezoid weights; 0 (default): $m$ = ``segmentsPerEdge``. $m=1$ samples the vertices only, as the contacts of the distinct element codes (UDEC, 3DEC): rocking impacts then follow Housner's angular momentum balance about the new corner (doc/theory.md §4.2), while interior samples of the base face store impact energy in their springs and give it back as the block rolls onto the new corner. $m\\ge 0$."))
 		((Real,bondGapTolerance,1e-6,Attr::triggerPostLoad,"Largest gap or overlap between two faces that are bonded, relative to the smaller half-extent of the two blocks."))
 		((shared_ptr<RdemJoint>,joint,,,"The :yref:`RdemJoint` given to the bonds made from now on (by ``utils.createInteraction``), or None (default): blocks bonded directly. ``rdem.bond(..., joint=...)`` sets it for its bonds and resets it."))
 		((int,prefetchDistance,-1,Attr::triggerPostLoad,"How many interactions ahead of the one being processed this functor asks the processor to fetch the data of (interaction, geometry, physics, bodies and their states, in stages; ``pkg/rdem/RdemPrefetch.hpp``), to hide the memory latency of scenes larger than the cache (doc/performance.md, fifth round). $-1$ (default): automatic, 8 once the interactions' data exceed the last-level cache, else off; 0: off; $>0$: always, at this distance. A hint only: results do not depend on it. $\\ge -1$."))

@@ -52,7 +52,7 @@ namespace {
 			const auto* loop = dynamic_cast<InteractionLoop*>(e.get());
 			if (!loop) continue;
 			for (const auto& f : loop->geomDispatcher->functors)
-				if (const auto* ig2 = dynamic_cast<Ig2_RdemBlock_RdemBlock_RdemGeom*>(f.get())) c.samplesPerEdge = ig2->segmentsPerEdge;
+				if (const auto* ig2 = dynamic_cast<Ig2_RdemBlock_RdemBlock_RdemGeom*>(f.get())) c.samplesPerEdge = ig2->contactSamples();
 		}
 		return c;
 	}

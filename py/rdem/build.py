@@ -220,7 +220,8 @@ def engines(segmentsPerEdge=2,
             safety=0.8,
             verletDist=None,
             finiteGuard=True,
-            failureStress='spring'):
+            failureStress='spring',
+            contactSamples=None):
 	"""The engine list of a refined-DEM scene.
 
 	:param segmentsPerEdge: $n$, each bonded face carries $n\\times n$ springs (paper: 2).
@@ -236,6 +237,10 @@ def engines(segmentsPerEdge=2,
 	    only warns if it exceeds the estimate).
 	:param verletDist: collider sweep distance [m] (default: none, the collider runs every step; set it to about 5 % of the
 	    block size for speed).
+	:param contactSamples: $m$, sample grid of the contacts of blocks that are not bonded, $(m+1)^2$ points per face
+	    (:yref:`Ig2_RdemBlock_RdemBlock_RdemGeom.contactSamplesPerEdge`); ``None``: ``segmentsPerEdge``; 1: the vertices only, as
+	    UDEC and 3DEC, which makes rocking impacts follow Housner's (doc/theory.md §4.2): use it for rocking, overturning
+	    and collapse.
 	:param failureStress: ``'spring'`` (default, the paper's): restoring springs break on their own stresses (eqs. 15-16);
 	    ``'total'``: on the total normal stress of the face, springs plus Poisson cells
 	    (:yref:`Law2_RdemGeom_RdemPhys_FaceSprings.totalStress`, doc/theory.md §5.6; needs ``poisson='consistent'`` and
@@ -261,7 +266,9 @@ def engines(segmentsPerEdge=2,
 	if failureStress == 'total' and poisson != 'consistent':
 		raise ValueError("failureStress = 'total' needs poisson = 'consistent' (the total stress of a face comes from the Poisson cells), not %r" % (poisson, ))
 	formulation, withPoisson = POISSON_MODES[poisson]
-	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge)], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation)],
+	if contactSamples is not None and not (isinstance(contactSamples, int) and contactSamples >= 1):
+		raise ValueError('contactSamples = %r: must be an integer >= 1 (or None: segmentsPerEdge)' % (contactSamples, ))
+	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0)], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation)],
 	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True, totalStress=failureStress == 'total')])
 	eng = [ForceResetter()]
 	if recontact not in (True, False, 'always'):

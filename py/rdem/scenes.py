@@ -8,7 +8,7 @@ top plate moves down at ``rate``. The plates are of the specimen's material unle
 give them their own (joints then combine both materials by eq. 12).
 """
 import math
-from yade import O, Vector3
+from yade import O, Vector3, Quaternion
 from yade.wrapper import RdemMat
 import rdem.build as build
 import rdem.measure as measure
@@ -262,3 +262,71 @@ class MasonryPrism:
 			num += t * lam / M
 			den += t * (2 * (lam + mu) - 2 * lam * lam / M)
 		return num / den
+
+
+class RockingBlock:
+	"""Housner's rigid block (Housner 1963, Bull. Seismol. Soc. Am. 53(2):403-417): a block of half-width ``b``, half-height
+	``h`` and half-depth ``depth`` standing on a fixed base block, the two touching through sampled contacts only (no bond),
+	released at rest tilted by ``theta0`` about its +x corner (positive: resting on that corner). Contact springs with
+	critical dashpots (eq. 13, ``dampingConstant``) and Coulomb friction; the contact sample grid ``contactSamples`` (1: the
+	vertices, doc/theory.md §4.2). Lengths in m, angles in rad, SI units.
+
+	:meth:`angle` is the block's rotation about y (positive: tilted onto the +x corner)."""
+
+	def __init__(self, b=0.1, h=0.5, depth=0.1, theta0=0.0, young=30e9, poisson=0.2, density=2500, friction=0.8, dampingConstant=1.0,
+	             contactSamples=1, gravity=9.81):
+		for name, value in (('b', b), ('h', h), ('depth', depth), ('young', young), ('density', density), ('gravity', gravity)):
+			if not (math.isfinite(value) and value > 0):
+				raise ValueError('%s = %r: must be finite and > 0' % (name, value))
+		self.b, self.h, self.g = b, h, gravity
+		self.alpha, self.R = math.atan(b / h), math.hypot(b, h)
+		if not (0 <= theta0 < self.alpha):
+			raise ValueError('theta0 = %r: must be in [0, alpha) = [0, %.4f) rad (beyond alpha the block falls over)' % (theta0, self.alpha))
+		if len(O.bodies) or len(O.interactions):
+			raise RuntimeError('RockingBlock builds into an empty scene: call O.reset() first')
+		self.material = O.materials.append(
+		        RdemMat(young=young, poisson=poisson, density=density, tensileStrength=float('inf'), cohesion=float('inf'), frictionAngle=math.atan(friction),
+		                dampingNormal=dampingConstant, dampingShear=dampingConstant, label='block'))
+		O.engines = build.engines(poisson=None, recontact='always', contactSamples=contactSamples, gravity=(0, 0, -gravity))
+		self.base = O.bodies.append(build.block((0, 0, -0.1), (4 * b + 0.5, depth + 0.2, 0.1), self.material, fixed=True))
+		q = Quaternion(Vector3(0, 1, 0), theta0)
+		pivot = Vector3(b, 0, 0)
+		self.block = O.bodies.append(build.block(pivot + q * (Vector3(0, 0, h) - pivot), (b, depth, h), self.material, orientation=q))
+		O.dt = -1
+
+	def angle(self):
+		"""Rotation of the block about y [rad], positive when it rests on its +x corner."""
+		axis, angle = O.bodies[self.block].state.ori.toAxisAngle()
+		return angle * axis[1]
+
+	def eta(self):
+		"""Housner's ratio of angular velocities across an impact, η = 1 - (3/2) sin²α (angular momentum about the new corner)."""
+		return 1 - 1.5 * math.sin(self.alpha)**2
+
+	def upliftAcceleration(self):
+		"""Horizontal ground acceleration above which the block lifts off a corner, g tan α [m/s²]."""
+		return self.g * math.tan(self.alpha)
+
+	def energyRatio(self, theta0, theta1):
+		"""Energy kept through an impact, from the amplitudes before and after it: (cos(α-θ1) - cos α)/(cos(α-θ0) - cos α)."""
+		return (math.cos(self.alpha - theta1) - math.cos(self.alpha)) / (math.cos(self.alpha - theta0) - math.cos(self.alpha))
+
+	def quarterCycle(self, theta0, steps=20000):
+		"""Time for the rigid block released at rest from theta0 to reach θ = 0 [s]: the exact equation of motion about the
+		corner, I_O θ̈ = -m g R sin(α - θ) with I_O = (4/3) m R², integrated by fourth-order Runge-Kutta (``steps`` steps over
+		a first guess of the duration, then refined by interpolation at the crossing)."""
+		p2 = 3 * self.g / (4 * self.R)  # p², Housner's frequency parameter
+		f = lambda th, om: (om, -p2 * math.sin(self.alpha - th))
+		th, om, t = theta0, 0.0, 0.0
+		dt = 4.0 / math.sqrt(p2) / steps
+		while th > 0:
+			k1 = f(th, om)
+			k2 = f(th + dt / 2 * k1[0], om + dt / 2 * k1[1])
+			k3 = f(th + dt / 2 * k2[0], om + dt / 2 * k2[1])
+			k4 = f(th + dt * k3[0], om + dt * k3[1])
+			thNew = th + dt / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
+			omNew = om + dt / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
+			if thNew <= 0:
+				return t + dt * th / (th - thNew)
+			th, om, t = thNew, omNew, t + dt
+		return t
