@@ -57,11 +57,15 @@ void RdemGroundShaker::action()
 		return;
 	}
 	// Velocity over this step that puts the base on the ground displacement at its end (exact at every step).
-	const Vector3r v = (displacementAt(t + dt) - displacementAt(t)) / dt;
+	const Vector3r v    = (displacementAt(t + dt) - displacementAt(t)) / dt;
+	Real           work = 0; // done on the base by the rest of the scene over this step [J]
 	for (int id : ids) {
 		const auto& b = Body::byId(Body::id_t(id), scene);
-		if (b) b->state->vel = v;
+		if (!b) continue;
+		b->state->vel = v;
+		if (scene->trackEnergy) work += scene->forces.getForce(Body::id_t(id)).dot(v) * dt;
 	}
+	if (scene->trackEnergy) scene->energy->add(work, "groundWork", workIx, /*reset every step*/ false);
 }
 
 } // namespace yade

@@ -26,6 +26,8 @@ public:
 * ``mode='prescribed'``: the base blocks ``ids`` move with the ground. Their translations are blocked (``xyz`` of :yref:`State::blockedDOFs`, set by ``rdem.earthquake.shaker``) and at every step their velocity is set to $(\mathbf{u}_g(t+\Delta t)-\mathbf{u}_g(t))/\Delta t$, so that :yref:`NewtonIntegrator` puts them exactly on the ground displacement $\mathbf{u}_g$ at every step. The structure is shaken through its bonds and contacts with the base, as on a shaking table: right for anything that rocks, slides or lifts off its base (rocking, overturning, a wall standing on a footing).
 * ``mode='inertial'``: the ground does not move; every body feels the inertial load $-m\,\mathbf{a}_g(t)$, added to :yref:`NewtonIntegrator::gravity` (``gravity`` $-\mathbf{a}_g$). Displacements are then relative to the ground: right for a structure bonded to a rigid base that does not lift off, and what building codes' spectra and most frame analyses assume; it avoids following large ground displacements.
 
+With :yref:`O.trackEnergy<Omega.trackEnergy>` and ``mode='prescribed'``, ``groundWork`` in :yref:`O.energy<Scene.energy>` is minus the work the moving base has done on the rest of the scene (cumulated; in the leapfrog pairing, the force of a step times the base's displacement over it), so that the total energy stays constant in a conservative scene; in ``mode='inertial'`` the work of the inertial load is in :yref:`NewtonIntegrator`'s ``gravWork``.
+
 Before ``times[0]`` the ground is at rest at zero displacement, after the last time at rest at its last displacement. ``scale`` multiplies the motion.)""",
 		((string,mode,"prescribed",Attr::triggerPostLoad,"``'prescribed'`` (base blocks move) or ``'inertial'`` (inertial load on every body)."))
 		((vector<Real>,times,,Attr::triggerPostLoad,"Sampling times of the motion, increasing [s] (``O.time`` is the time axis)."))
@@ -35,6 +37,7 @@ Before ``times[0]`` the ground is at rest at zero displacement, after the last t
 		((vector<int>,ids,,,"Base blocks moved with the ground (``mode='prescribed'``)."))
 		((Vector3r,gravity,Vector3r(0,0,-9.81),,"Gravity of the scene [m/s²]; with ``mode='inertial'`` :yref:`NewtonIntegrator::gravity` is set to ``gravity`` $-$ ``scale`` $\\mathbf{a}_g(t)$ every step."))
 		((Real,scale,1,,"Factor on the whole motion."))
+		((int,workIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 		,
 		/* ctor */,
 		.def("accelerationAt",&RdemGroundShaker::accelerationAt,(py::arg("t")),"Ground acceleration at time t, scaled [m/s²].")

@@ -17,6 +17,7 @@ Modules: :mod:`rdem.build` (blocks, bonds, engine lists), :mod:`rdem.measure` (s
 mortar and their touching pairs as plain boxes; pure Python: without YADE, ``import rdem`` gives only this module).
 """
 from rdem.wall_layout import wallLayout, WallLayout
+from rdem import ground_motion
 
 try:
 	import yade as _yade
@@ -27,11 +28,11 @@ except ModuleNotFoundError as e:  # plain Python: only the YADE-free modules (rd
 
 if _yade is not None:
 	from rdem.build import block, blockGrid, bond, bondPairs, engines, poissonEngine, timeStepper, law, geomFunctor, contactGate
-	from rdem import masonry
+	from rdem import masonry, earthquake
 	from rdem.measure import segmentTable, bondSnapshot, brokenSegments, breakCounts, apparentPoisson
 	from rdem.export import CrackExport
 
-__all__ = ['wallLayout', 'WallLayout'] + ([
-        'block', 'blockGrid', 'bond', 'bondPairs', 'masonry', 'engines', 'poissonEngine', 'timeStepper', 'law', 'geomFunctor', 'contactGate', 'segmentTable', 'bondSnapshot', 'brokenSegments', 'breakCounts',
+__all__ = ['wallLayout', 'WallLayout', 'ground_motion'] + ([
+        'block', 'blockGrid', 'bond', 'bondPairs', 'masonry', 'earthquake', 'engines', 'poissonEngine', 'timeStepper', 'law', 'geomFunctor', 'contactGate', 'segmentTable', 'bondSnapshot', 'brokenSegments', 'breakCounts',
         'apparentPoisson', 'CrackExport'
 ] if _yade is not None else [])

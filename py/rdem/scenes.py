@@ -288,7 +288,8 @@ class RockingBlock:
 		        RdemMat(young=young, poisson=poisson, density=density, tensileStrength=float('inf'), cohesion=float('inf'), frictionAngle=math.atan(friction),
 		                dampingNormal=dampingConstant, dampingShear=dampingConstant, label='block'))
 		O.engines = build.engines(poisson=None, recontact='always', contactSamples=contactSamples, gravity=(0, 0, -gravity))
-		self.base = O.bodies.append(build.block((0, 0, -0.1), (4 * b + 0.5, depth + 0.2, 0.1), self.material, fixed=True))
+		# A base wide enough for the block to land on when it overturns either way (falling about a corner, it reaches 2h + b).
+		self.base = O.bodies.append(build.block((0, 0, -0.1), (2 * h + 2 * b + 0.2, depth + 0.2, 0.1), self.material, fixed=True))
 		q = Quaternion(Vector3(0, 1, 0), theta0)
 		pivot = Vector3(b, 0, 0)
 		self.block = O.bodies.append(build.block(pivot + q * (Vector3(0, 0, h) - pivot), (b, depth, h), self.material, orientation=q))
