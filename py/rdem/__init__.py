@@ -14,7 +14,9 @@ Typical use inside a YADE script (``yade script.py`` with the launcher made by t
 Modules: :mod:`rdem.build` (blocks, bonds, engine lists), :mod:`rdem.measure` (stresses, apparent moduli, cracks),
 :mod:`rdem.export` (ParaView files of cracks and Poisson elements), :mod:`rdem.scenes` (the paper's compression test),
 :mod:`rdem.batch` (cases of a study in fresh YADE processes), :mod:`rdem.wall_layout` (masonry wall geometry: bricks,
-mortar and their touching pairs as plain boxes; pure Python: without YADE, ``import rdem`` gives only this module).
+mortar and their touching pairs as plain boxes; pure Python: without YADE, ``import rdem`` gives only this module),
+:mod:`rdem.ground_motion` (earthquake records, their velocity and displacement, baseline correction, synthetic pulses;
+numpy only, imported on its own: ``from rdem.ground_motion import readAT2, GroundMotion``).
 """
 from rdem.wall_layout import wallLayout, WallLayout
 from rdem import ground_motion

@@ -49,7 +49,7 @@ _UNIT_SPELLINGS = {
 }
 _KNOWN_UNITS = 'G, CM/S/S, CM/S^2, M/S/S, M/S^2 (any case, SEC for S; also GAL)'
 
-_SNAP = 1e-9  # times within this fraction of a step of a node are taken at the node
+_SNAP = 1e-9  # times within this fraction of a step of a node (plus the round-off of t/dt) are taken at the node
 _NUMBER = r'[-+]?(?:\d+\.?\d*|\.\d+)(?:[EeDd][-+]?\d+)?'
 _NEXT_NUMBER = re.compile(r'\s*(' + _NUMBER + r')')
 
@@ -105,9 +105,10 @@ def _samples(name, values):
 
 
 def _steps(x):
-	"""``x`` rounded to the nearest integer if within 1e-9 of it (relative to max(1, |x|))."""
+	"""``x`` (a number of steps) rounded to the nearest integer if within 1e-9 of it, plus 1e-14 |x| for the
+	round-off of a time divided by a step."""
 	r = np.rint(x)
-	return np.where(np.abs(x - r) <= _SNAP * np.maximum(1.0, np.abs(x)), r, x)
+	return np.where(np.abs(x - r) <= _SNAP + 1e-14 * np.abs(x), r, x)
 
 
 def _stepCount(length, dt):
@@ -225,7 +226,7 @@ class Record:
 		if _finite(t):
 			s = (t - self._t0) / self._dt
 			r = round(s)
-			if abs(s - r) <= _SNAP * max(1.0, abs(s)):
+			if abs(s - r) <= _SNAP + 1e-14 * abs(s):
 				s = r
 			last = len(y) - 1
 			if s < 0:
