@@ -59,9 +59,12 @@ void RdemGroundShaker::action()
 	// Velocity over this step that puts the base on the ground displacement at its end (exact at every step).
 	const Vector3r v    = (displacementAt(t + dt) - displacementAt(t)) / dt;
 	Real           work = 0; // done on the base by the rest of the scene over this step [J]
+	if (scene->trackEnergy) scene->forces.sync(); // NewtonIntegrator, next, syncs too: nothing more is added in between
 	for (int id : ids) {
 		const auto& b = Body::byId(Body::id_t(id), scene);
 		if (!b) continue;
+		if (scene->trackEnergy) // the base's kinetic energy, which NewtonIntegrator books, comes from the motion too
+			work -= b->state->mass * (v.squaredNorm() - b->state->vel.squaredNorm()) / 2;
 		b->state->vel = v;
 		if (scene->trackEnergy) work += scene->forces.getForce(Body::id_t(id)).dot(v) * dt;
 	}

@@ -16,7 +16,7 @@ Modules: :mod:`rdem.build` (blocks, bonds, engine lists), :mod:`rdem.measure` (s
 :mod:`rdem.batch` (cases of a study in fresh YADE processes), :mod:`rdem.wall_layout` (masonry wall geometry: bricks,
 mortar and their touching pairs as plain boxes; pure Python: without YADE, ``import rdem`` gives only this module),
 :mod:`rdem.ground_motion` (earthquake records, their velocity and displacement, baseline correction, synthetic pulses;
-numpy only, imported on its own: ``from rdem.ground_motion import readAT2, GroundMotion``).
+numpy only; without YADE ``import rdem`` gives it and rdem.wall_layout).
 """
 from rdem.wall_layout import wallLayout, WallLayout
 from rdem import ground_motion
