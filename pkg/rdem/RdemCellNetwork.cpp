@@ -29,6 +29,7 @@ void RdemCellNetwork::rebuild(Scene* scene)
 {
 	bond.clear();
 	intr.clear();
+	phys.clear();
 	body.clear();
 	state.clear();
 	hasCell.clear();
@@ -54,6 +55,7 @@ void RdemCellNetwork::rebuild(Scene* scene)
 			     g->segNormal2,        g->faceCentre1,       g->faceCentre2 };
 		bond.push_back(b);
 		intr.push_back(I);
+		phys.push_back(I->phys);
 		blockOfSide.push_back(b.i1);
 		blockOfSide.push_back(b.i2);
 	}
@@ -181,10 +183,9 @@ void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energ
 		const Vector3r   Ke   = stiffness[size_t(i)] * st.strain;
 		Vector3r         grad = Vector3r::Zero();
 		for (size_t j = first[size_t(i)]; j < first[size_t(i) + 1]; ++j) {
-			if (!sideOffset[j]) continue;
-			const Interaction& I = *intr[sideBond[j]];
-			if (!I.isReal()) continue;
-			const auto& p = *static_cast<const RdemPhys*>(I.phys.get());
+			// a released bond has intact 0 (and a fully broken one no intact shear spring: its gradients are zero)
+			if (!sideOffset[j] || intact[sideBond[j]] == 0) continue;
+			const auto& p = *static_cast<const RdemPhys*>(phys[sideBond[j]].get());
 			grad += sideSecond[j] ? p.offsetGrad2 : p.offsetGrad1;
 		}
 		stress[size_t(i)] = s * Ke + condensation[size_t(i)].transpose() * grad;

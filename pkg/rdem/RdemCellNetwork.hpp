@@ -45,6 +45,7 @@ private:
 	};
 	vector<Bond>                    bond;
 	vector<shared_ptr<Interaction>> intr;       // per bond, to see it released and read its intact fraction
+	vector<shared_ptr<IPhys>>       phys;       // per bond, held directly (one pointer less to follow, alive after a release)
 	vector<Real>                    opening;    // per bond, this step [m]
 	vector<Vector3r>                normal;     // per bond, this step: body 1's rotated face normal
 	vector<Vector3r>                arm1, arm2; // per bond, this step: moment about each block's centroid of a unit force along normal at the face centre [m]
