@@ -104,7 +104,7 @@ except ValueError as e:
 for i in wall.beams['base']:
 	O.bodies[i].state.blockedDOFs = 'xyzXYZ'
 O.dt = -1
-newton = [e for e in O.engines if type(e).__name__ == 'NewtonIntegrator'][0]
+newton = rdem.newtonIntegrator()
 settle = 0.05  # [s] with Cundall's damping: the wall comes to rest under its weight
 while O.time < settle:
 	O.step()

@@ -61,21 +61,6 @@ def advance(n):
 		O.step()
 
 
-def totalNormalStress(I):
-	"""Total normal stress of a bond's face, tension > 0 [Pa]: its springs' largest σ plus the cells' (c₁S₁ + c₂S₂)/(w_n A),
-	what the springs break on (doc/theory.md §5.6)."""
-	g, p = I.geom, I.phys
-	a, b = O.bodies[I.id1].state, O.bodies[I.id2].state
-	ax1 = max(range(3), key=lambda k: abs(g.segNormal1[k]))
-	ax2 = max(range(3), key=lambda k: abs(g.segNormal2[k]))
-	return max(p.segSigma) + (p.cellCoef1 * a.cellStress[ax1] + p.cellCoef2 * b.cellStress[ax2]) / (p.weightNormal * g.segArea[0] * len(g.segArea))
-
-
-def firstBrickCrack(prism, snapshot):
-	"""The broken springs inside bricks (bonds between two brick blocks) so far."""
-	return [s for s in rdem.brokenSegments(snapshot) if s['id1'] in prism.brickSet and s['id2'] in prism.brickSet]
-
-
 def run(label, mortarYoung, mortarNu):
 	"""Elastic check, then loading to the first brick crack or --max-stress. Returns a dict of results."""
 	O.reset()
@@ -91,21 +76,13 @@ def run(label, mortarYoung, mortarNu):
 		advance(50)
 		history['disp'].append(p.displacement())
 		history['stress'].append(p.stress())
-	newton = [e for e in O.engines if type(e).__name__ == 'NewtonIntegrator'][0]
-	for i in p.top:
-		O.bodies[i].state.vel = Vector3.Zero
-	newton.damping = 0.5
-	previous = float('nan')
-	while not abs(p.lateralStrain() / previous - 1) < 1e-5:  # at rest: the measure no longer moves
-		previous = p.lateralStrain()
-		O.run(500, True)
+	p.settle(1e-5)  # at rest: the measure no longer moves
 	elastic = dict(stressMPa=p.stress() * 1e-6, lateralStrain=p.lateralStrain(), closedForm=p.closedForm() * p.stress())
 	elastic['ratio'] = elastic['lateralStrain'] / elastic['closedForm']
 	inside = [I for I in O.interactions if I.id1 in p.brickSet and I.id2 in p.brickSet]
-	elastic['brickLateralStressPerStress'] = max(totalNormalStress(I) for I in inside) / p.stress()
+	elastic['brickLateralStressPerStress'] = max(rdem.measure.totalNormalStress(I) for I in inside) / p.stress()
 	elastic['predictedCrackStressMPa'] = BRICK['tensileStrength'] / elastic['brickLateralStressPerStress'] * 1e-6 if elastic[
 	        'brickLateralStressPerStress'] > 0 else None
-	newton.damping = 0.0
 	for i in p.top:
 		O.bodies[i].state.vel = Vector3(0, 0, -opts.rate * 1e-3)
 	# 2. Loading to the first crack inside a brick (or --max-stress).
@@ -114,7 +91,7 @@ def run(label, mortarYoung, mortarNu):
 		advance(50)
 		history['disp'].append(p.displacement())
 		history['stress'].append(p.stress())
-		cracks = firstBrickCrack(p, snapshot)
+		cracks = p.brickCracks(snapshot)
 		if cracks and first is None:
 			first = dict(stressMPa=history['stress'][-2] * 1e-6, displacementMm=history['disp'][-2] * 1e3, springs=len(cracks),
 			             vertical=all(abs(s['normal'][2]) < 0.05 for s in cracks))  # faces within 3° of vertical

@@ -29,12 +29,12 @@ except ModuleNotFoundError as e:  # plain Python: only the YADE-free modules (rd
 	_yade = None
 
 if _yade is not None:
-	from rdem.build import block, blockGrid, bond, bondPairs, engines, poissonEngine, timeStepper, law, geomFunctor, contactGate
+	from rdem.build import block, blockGrid, bond, bondPairs, engines, poissonEngine, newtonIntegrator, timeStepper, law, geomFunctor, contactGate
 	from rdem import masonry, earthquake
 	from rdem.measure import segmentTable, bondSnapshot, brokenSegments, breakCounts, apparentPoisson
 	from rdem.export import CrackExport
 
 __all__ = ['wallLayout', 'WallLayout', 'ground_motion'] + ([
-        'block', 'blockGrid', 'bond', 'bondPairs', 'masonry', 'earthquake', 'engines', 'poissonEngine', 'timeStepper', 'law', 'geomFunctor', 'contactGate', 'segmentTable', 'bondSnapshot', 'brokenSegments', 'breakCounts',
+        'block', 'blockGrid', 'bond', 'bondPairs', 'masonry', 'earthquake', 'engines', 'poissonEngine', 'newtonIntegrator', 'timeStepper', 'law', 'geomFunctor', 'contactGate', 'segmentTable', 'bondSnapshot', 'brokenSegments', 'breakCounts',
         'apparentPoisson', 'CrackExport'
 ] if _yade is not None else [])

@@ -104,6 +104,11 @@ def contactGate():
 	return _engine(RdemContactGate, ': make the engines with rdem.engines(recontact=True)')
 
 
+def newtonIntegrator():
+	"""The :yref:`NewtonIntegrator` of the current engine list (its ``damping`` and ``gravity``)."""
+	return _engine(NewtonIntegrator, ': set O.engines = rdem.engines(...) first')
+
+
 def timeStepper():
 	"""The :yref:`RdemTimeStepper` of the current engine list."""
 	return _engine(RdemTimeStepper, '')

@@ -9,8 +9,9 @@ Typical use::
     O.run(int(motion.duration / O.dt))
 """
 from yade import O, Vector3
-from yade.wrapper import RdemGroundShaker, NewtonIntegrator
+from yade.wrapper import RdemGroundShaker
 from rdem import ground_motion
+import rdem.build as build
 
 MODES = ('prescribed', 'inertial')
 
@@ -31,9 +32,7 @@ def shaker(motion, ids=None, mode='prescribed', scale=1.0):
 		raise ValueError('motion = %r: must be an rdem.ground_motion.GroundMotion or Record' % (motion, ))
 	if mode not in MODES:
 		raise ValueError('mode = %r: must be one of %s' % (mode, MODES))
-	newton = [e for e in O.engines if isinstance(e, NewtonIntegrator)]
-	if not newton:
-		raise RuntimeError('no NewtonIntegrator in O.engines: set O.engines = rdem.engines(...) first')
+	newton = build.newtonIntegrator()
 	ids = list(ids or [])
 	if mode == 'prescribed':
 		if not ids:
@@ -45,8 +44,8 @@ def shaker(motion, ids=None, mode='prescribed', scale=1.0):
 	toVectors = lambda a: [Vector3(float(r[0]), float(r[1]), float(r[2])) for r in a]
 	eng = RdemGroundShaker(mode=mode, times=[float(t) for t in motion.times()], accelerations=toVectors(motion.accelerations()),
 	                       velocities=toVectors(motion.velocities()), displacements=toVectors(motion.displacements()), ids=ids,
-	                       gravity=Vector3(newton[0].gravity), scale=float(scale), label='groundShaker')
+	                       gravity=Vector3(newton.gravity), scale=float(scale), label='groundShaker')
 	engines = list(O.engines)
-	engines.insert(engines.index(newton[0]), eng)
+	engines.insert(engines.index(newton), eng)
 	O.engines = engines
 	return eng

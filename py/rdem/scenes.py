@@ -236,6 +236,25 @@ class MasonryPrism:
 		"""Downward displacement of the loading plate [m]."""
 		return sum(O.bodies[i].state.refPos[2] - O.bodies[i].state.pos[2] for i in self.top) / len(self.top)
 
+	def settle(self, tolerance=1e-5):
+		"""Hold the loading plate and let the prism come to rest with Cundall's damping (0.5), until the interior lateral
+		strain changes by less than ``tolerance`` relative over 500 steps; then the damping is off again and the plate
+		stays held (set the velocity of :attr:`top` to load further)."""
+		newton = build.newtonIntegrator()
+		for i in self.top:
+			O.bodies[i].state.vel = Vector3.Zero
+		newton.damping = 0.5
+		previous = float('nan')
+		while not abs(self.lateralStrain() / previous - 1) < tolerance:
+			previous = self.lateralStrain()
+			for _ in range(500):
+				O.step()
+		newton.damping = 0.0
+
+	def brickCracks(self, snapshot):
+		"""The springs broken inside bricks (bonds between two brick blocks) since ``snapshot`` (rdem.measure.bondSnapshot)."""
+		return [s for s in measure.brokenSegments(snapshot) if s['id1'] in self.brickSet and s['id2'] in self.brickSet]
+
 	def lateralStrain(self):
 		"""Lateral strain of the interior of the middle brick: the slope of the x-displacement of the centroids of its two
 		central rows of blocks (along x, at the central y), over x [-] (positive = expansion)."""

@@ -53,7 +53,7 @@ class GroundShaker(unittest.TestCase):
 		sh = rdem.earthquake.shaker(motion, mode='inertial')
 		O.dt = 1e-5
 		O.run(1000, True)
-		newton = [e for e in O.engines if type(e).__name__ == 'NewtonIntegrator'][0]
+		newton = rdem.newtonIntegrator()
 		self.assertAlmostEqual(newton.gravity[0], -2.0, delta=1e-12)
 		self.assertAlmostEqual(newton.gravity[2], -9.81, delta=1e-12)
 

@@ -38,19 +38,7 @@ def atRest(p, stress):
 	"""Load to ``stress``, hold the plate and damp until the interior lateral strain no longer changes (1e-5 relative)."""
 	while p.stress() < stress:
 		advance(50)
-	newton = [e for e in O.engines if type(e).__name__ == 'NewtonIntegrator'][0]
-	for i in p.top:
-		O.bodies[i].state.vel = Vector3.Zero
-	newton.damping = 0.5
-	previous = float('nan')
-	while not abs(p.lateralStrain() / previous - 1) < 1e-5:
-		previous = p.lateralStrain()
-		O.run(500, True)
-	newton.damping = 0.0
-
-
-def brickCracks(p, snapshot):
-	return [s for s in rdem.brokenSegments(snapshot) if s['id1'] in p.brickSet and s['id2'] in p.brickSet]
+	p.settle(1e-5)
 
 
 class Prism(unittest.TestCase):
@@ -72,7 +60,7 @@ class Prism(unittest.TestCase):
 		p = prism(2e9, 0.25, ft)
 		atRest(p, 1e6)
 		inside = [I for I in O.interactions if I.id1 in p.brickSet and I.id2 in p.brickSet]
-		predicted = ft / max(totalNormalStress(I) for I in inside) * p.stress()
+		predicted = ft / max(rdem.measure.totalNormalStress(I) for I in inside) * p.stress()
 		self.assertAlmostEqual(predicted / (ft / 0.0549), 1, delta=0.2)  # near the infinite stack's estimate
 		for i in p.top:
 			O.bodies[i].state.vel = Vector3(0, 0, -0.01)
@@ -81,28 +69,19 @@ class Prism(unittest.TestCase):
 		while p.stress() < 3 * predicted and crackStress is None:
 			before = p.stress()
 			advance(20)
-			if brickCracks(p, snapshot):
+			if p.brickCracks(snapshot):
 				crackStress = before
 		self.assertIsNotNone(crackStress, 'no brick cracked up to 3 times the predicted stress')
 		self.assertAlmostEqual(crackStress / predicted, 1, delta=0.1)
-		self.assertTrue(all(abs(s['normal'][2]) < 0.05 for s in brickCracks(p, snapshot)), 'brick cracks must be vertical')
+		self.assertTrue(all(abs(s['normal'][2]) < 0.05 for s in p.brickCracks(snapshot)), 'brick cracks must be vertical')
 		same = prism(BRICK['young'], BRICK['poisson'], ft)
 		for i in same.top:
 			O.bodies[i].state.vel = Vector3(0, 0, -0.01)
 		snapshot = rdem.measure.bondSnapshot()
 		while same.stress() < 1.5 * crackStress:
 			advance(50)
-		self.assertEqual(brickCracks(same, snapshot), [])
+		self.assertEqual(same.brickCracks(snapshot), [])
 
-
-def totalNormalStress(I):
-	"""Total normal stress of a bond's face, tension > 0 [Pa]: its springs' largest σ plus the cells' normal stress
-	(c₁S₁ + c₂S₂)/(w_n A), what Law2_RdemGeom_RdemPhys_FaceSprings.totalStress checks (doc/theory.md §5.6)."""
-	g, p = I.geom, I.phys
-	a, b = O.bodies[I.id1].state, O.bodies[I.id2].state
-	ax1 = max(range(3), key=lambda k: abs(g.segNormal1[k]))
-	ax2 = max(range(3), key=lambda k: abs(g.segNormal2[k]))
-	return max(p.segSigma) + (p.cellCoef1 * a.cellStress[ax1] + p.cellCoef2 * b.cellStress[ax2]) / (p.weightNormal * g.segArea[0] * len(g.segArea))
 
 
 if __name__ == '__main__':

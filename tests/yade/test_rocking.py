@@ -72,7 +72,7 @@ class Rocking(unittest.TestCase):
 		for factor, lifts in ((0.98, False), (1.02, True)):
 			O.reset()
 			rock = RockingBlock(b=0.1, h=0.5)
-			newton = [e for e in O.engines if type(e).__name__ == 'NewtonIntegrator'][0]
+			newton = rdem.newtonIntegrator()
 			largest = 0
 			while O.time < 1.0 and largest < 1e-3:
 				# the ground accelerates towards -x: ramped over 0.5 s (the block rocks on its contact springs at about
