@@ -32,6 +32,16 @@ rdem::SpringModulus Ip2_RdemMat_RdemMat_RdemPhys::formulationOf(const Scene* sce
 	return rdem::SpringModulus::Paper;
 }
 
+Vector2r Ip2_RdemMat_RdemMat_RdemPhys::normalCompliances(const RdemMat& a, const RdemMat& b, const RdemGeom& g, rdem::SpringModulus modulus)
+{
+	const RdemJoint* joint = g.nSegments() > 0 ? g.joint.get() : nullptr;
+	const Real       t     = joint ? joint->thickness : Real(0);
+	const Real       Mm    = joint ? rdem::springNormalModulus(joint->young, joint->poisson, modulus) : Real(1);
+	return Vector2r(
+	        rdem::bondSideCompliance(rdem::springNormalModulus(a.young, a.poisson, modulus), g.ell1, Mm, t),
+	        rdem::bondSideCompliance(rdem::springNormalModulus(b.young, b.poisson, modulus), g.ell2, Mm, t));
+}
+
 void Ip2_RdemMat_RdemMat_RdemPhys::go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I)
 {
 	if (I->phys) return; // constants are fixed when the interaction is made
@@ -45,14 +55,11 @@ void Ip2_RdemMat_RdemMat_RdemPhys::go(const shared_ptr<Material>& m1, const shar
 		        "RdemJoint.thickness = " + std::to_string(t) + ": must be less than twice the centroid-to-face distance of both blocks it joins ("
 		        + std::to_string(g.ell1) + " and " + std::to_string(g.ell2) + " m for bodies " + std::to_string(I->getId1()) + " and "
 		        + std::to_string(I->getId2()) + "): each block reaches the joint's mid-plane");
-	const Real Mm = joint ? rdem::springNormalModulus(joint->young, joint->poisson, modulus) : Real(1);
 	const Real Gm = joint ? rdem::shearModulus(joint->young, joint->poisson) : Real(1);
 
 	auto p = shared_ptr<RdemPhys>(new RdemPhys);
 	// Eqs. (11)-(12), with the mortar of the joint in series [N/m³].
-	p->kn = 1
-	        / (rdem::bondSideCompliance(rdem::springNormalModulus(a.young, a.poisson, modulus), g.ell1, Mm, t)
-	           + rdem::bondSideCompliance(rdem::springNormalModulus(b.young, b.poisson, modulus), g.ell2, Mm, t));
+	p->kn = 1 / normalCompliances(a, b, g, modulus).sum();
 	p->ks = 1 / (rdem::bondSideCompliance(rdem::shearModulus(a.young, a.poisson), g.ell1, Gm, t) + rdem::bondSideCompliance(rdem::shearModulus(b.young, b.poisson), g.ell2, Gm, t));
 	// Eq. (13) [N·s/m³].
 	const Real mAve = rdem::equivalentMassPerArea(a.density, g.ell1, b.density, g.ell2);

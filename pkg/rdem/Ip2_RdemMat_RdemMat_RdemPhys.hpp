@@ -7,6 +7,7 @@
 #pragma once
 
 #include <core/Dispatching.hpp>
+#include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemMat.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
 #include <pkg/rdem/math/Elasticity.hpp>
@@ -24,6 +25,9 @@ public:
 	/// The formulation of the scene: that of its Ip2_RdemMat_RdemMat_RdemPhys (the one place it is set; paper if there is
 	/// none). RdemPoissonEngine and RdemTimeStepper read it here.
 	static rdem::SpringModulus formulationOf(const Scene* scene);
+	/// Normal compliances per area (C₁, C₂) of the two sides of the bond g between blocks of materials a and b, from each
+	/// centroid to the joint's mid-plane, the joint's mortar included (rdem::bondSideCompliance) [m³/N]: k̄_n = 1/(C₁ + C₂).
+	static Vector2r normalCompliances(const RdemMat& a, const RdemMat& b, const RdemGeom& g, rdem::SpringModulus modulus);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(Ip2_RdemMat_RdemMat_RdemPhys,IPhysFunctor,R"""(Physics functor of two :yref:`RdemMat`, producing :yref:`RdemPhys` once per interaction.
 

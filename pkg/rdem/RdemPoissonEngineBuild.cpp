@@ -342,21 +342,17 @@ void RdemPoissonEngine::buildCells(const std::set<Body::id_t>& ids)
 	};
 	std::map<Body::id_t, rdem::CellInput<Real>> input;
 	vector<Side>                                sides;
-	const auto                                  modulus = rdem::SpringModulus::Consistent;
 	forEachBond(scene, ids, [&](const Interaction& I, const RdemGeom& g, RdemPhys& p) {
 		const auto& ma = *static_cast<RdemMat*>(Body::byId(I.getId1(), scene)->material.get());
 		const auto& mb = *static_cast<RdemMat*>(Body::byId(I.getId2(), scene)->material.get());
-		const Real  t  = g.joint ? g.joint->thickness : Real(0);
-		const Real  Mm = g.joint ? rdem::springNormalModulus(g.joint->young, g.joint->poisson, modulus) : Real(1);
-		const Real  C1 = rdem::bondSideCompliance(rdem::springNormalModulus(ma.young, ma.poisson, modulus), g.ell1, Mm, t);
-		const Real  C2 = rdem::bondSideCompliance(rdem::springNormalModulus(mb.young, mb.poisson, modulus), g.ell2, Mm, t);
+		const Vector2r C = Ip2_RdemMat_RdemMat_RdemPhys::normalCompliances(ma, mb, g, rdem::SpringModulus::Consistent); // the share of each side
 		const Real  area = g.segmentArea() * Real(g.nSegments());
 		for (int k = 0; k < 2; ++k) {
 			const Body::id_t id     = k ? I.getId2() : I.getId1();
 			const Vector3r&  normal = k ? g.segNormal2 : g.segNormal1;
 			const int        axis   = rdem::dominantAxis<Real>(normal);
 			auto& in = input[id];
-			in.bonds.push_back({ axis, normal[axis] > 0 ? 1 : -1, area, (k ? C2 : C1) / (C1 + C2), g.ell1 + g.ell2 });
+			in.bonds.push_back({ axis, normal[axis] > 0 ? 1 : -1, area, C[k] / C.sum(), g.ell1 + g.ell2 });
 			sides.push_back({ &p, id, in.bonds.size() - 1 });
 		}
 		// The centroid offset along the face, in body 1's frame: nonzero where the shear springs need the correction.
