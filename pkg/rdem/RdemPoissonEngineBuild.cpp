@@ -138,8 +138,6 @@ string RdemPoissonEngine::gridDefect(const Neighbours& nbr) const
 void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 {
 	scene = Omega::instance().getScene().get();
-	if (elements != "auto" && elements != "hex8" && elements != "cells")
-		throw std::invalid_argument("RdemPoissonEngine.elements = '" + elements + "': must be 'auto', 'hex8' or 'cells'");
 	const std::set<Body::id_t> ids        = collectBlocks(idsIn);
 	const bool                 consistent = Ip2_RdemMat_RdemMat_RdemPhys::formulationOf(scene) == rdem::SpringModulus::Consistent;
 	// The paper's springs E/(1-ν²) plus D_p are an indefinite tensor for ν > (3-√5)/2 ≈ 0.382 (doc/theory.md §5.3): an
