@@ -1,10 +1,9 @@
 /*************************************************************************
- *  Copyright (C) 2026 yade-rdem authors                                  *
- *                                                                        *
- *  This program is free software; it is licensed under the terms of the  *
- *  GNU General Public License v2 or later. See file LICENSE for details. *
- *************************************************************************/
-#include <algorithm>
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/RdemCellNetwork.hpp>
 #include <pkg/rdem/RdemForceAssembler.hpp>
@@ -12,287 +11,250 @@
 #include <pkg/rdem/RdemPhys.hpp>
 #include <pkg/rdem/math/BlockCells.hpp>
 #include <pkg/rdem/math/GroupByKey.hpp>
+#include <algorithm>
 #include <unordered_map>
 
 namespace yade {
 
 long RdemCellNetwork::generation = 0;
 
-bool RdemCellNetwork::refresh(Scene *scene) {
-  // A scene without cells (the paper's hexahedra, or no build) stays without
-  // them until the next build: its interactions, which come and go at nearly
-  // every step once contacts form, are then never scanned.
-  if (builtGeneration == generation && nCellBlocks == 0)
-    return false;
-  const long nB = long(scene->bodies->size()),
-             nI = long(scene->interactions->size());
-  if (builtGeneration != generation || builtInteractions != nI ||
-      builtBodies != nB)
-    rebuild(scene);
-  return nCellBlocks > 0;
+bool RdemCellNetwork::refresh(Scene* scene)
+{
+	// A scene without cells (the paper's hexahedra, or no build) stays without them until the next build: its
+	// interactions, which come and go at nearly every step once contacts form, are then never scanned.
+	if (builtGeneration == generation && nCellBlocks == 0) return false;
+	const long nB = long(scene->bodies->size()), nI = long(scene->interactions->size());
+	if (builtGeneration != generation || builtInteractions != nI || builtBodies != nB) rebuild(scene);
+	return nCellBlocks > 0;
 }
 
-void RdemCellNetwork::rebuild(Scene *scene) {
-  bond.clear();
-  intr.clear();
-  phys.clear();
-  body.clear();
-  state.clear();
-  hasCell.clear();
-  std::unordered_map<Body::id_t, size_t> compact;
-  auto indexOf = [&](Body::id_t id) {
-    const auto it = compact.find(id);
-    if (it != compact.end())
-      return it->second;
-    auto *st = static_cast<RdemState *>(Body::byId(id, scene)->state.get());
-    compact.emplace(id, body.size());
-    body.push_back(id);
-    state.push_back(st);
-    hasCell.push_back(st->cellVolume > 0);
-    return body.size() - 1;
-  };
-  vector<size_t> blockOfSide;
-  for (const auto &I : *scene->interactions) {
-    if (!I->isReal())
-      continue;
-    const auto *p = dynamic_cast<const RdemPhys *>(I->phys.get());
-    const auto *g = dynamic_cast<const RdemGeom *>(I->geom.get());
-    if (!p || !g || !g->bonded || (p->cellCoef1 == 0 && p->cellCoef2 == 0))
-      continue;
-    Bond b{indexOf(I->getId1()),
-           indexOf(I->getId2()),
-           rdem::dominantAxis<Real>(g->segNormal1),
-           rdem::dominantAxis<Real>(g->segNormal2),
-           p->cellCoef1,
-           p->cellCoef2,
-           g->segNormal1,
-           g->segNormal2,
-           g->faceCentre1,
-           g->faceCentre2};
-    bond.push_back(b);
-    intr.push_back(I);
-    phys.push_back(I->phys);
-    blockOfSide.push_back(b.i1);
-    blockOfSide.push_back(b.i2);
-  }
-  vector<size_t> order;
-  rdem::groupByKey(blockOfSide, body.size(), first, order);
-  sideBond.resize(order.size());
-  sideSecond.resize(order.size());
-  sideOffset.resize(order.size());
-  for (size_t k = 0; k < order.size(); ++k) {
-    sideBond[k] = order[k] / 2;
-    sideSecond[k] = order[k] % 2;
-    sideOffset[k] = static_cast<const RdemPhys *>(intr[sideBond[k]]->phys.get())
-                        ->centroidOffset != Vector3r::Zero();
-  }
-  nCellBlocks = size_t(std::count(hasCell.begin(), hasCell.end(), char(1)));
-  opening.assign(bond.size(), 0);
-  normal.assign(bond.size(), Vector3r::Zero());
-  arm1.assign(bond.size(), Vector3r::Zero());
-  arm2.assign(bond.size(), Vector3r::Zero());
-  stiffness.resize(body.size());
-  condensation.resize(body.size());
-  for (size_t i = 0; i < body.size(); ++i) {
-    stiffness[i] = state[i]->cellStiffness;
-    condensation[i] = state[i]->cellCondensation;
-  }
-  intact.assign(bond.size(), 1);
-  rot.assign(body.size(), Matrix3r::Identity());
-  pos.assign(body.size(), Vector3r::Zero());
-  stress.assign(body.size(), Vector3r::Zero());
-  scalePrev.assign(body.size(), 1);
-  for (size_t i = 0; i < body.size(); ++i)
-    scalePrev[i] = state[i]->cellScale;
-  builtGeneration = generation;
-  builtInteractions = long(scene->interactions->size());
-  builtBodies = long(scene->bodies->size());
-  brokenSeen = -1;
+void RdemCellNetwork::rebuild(Scene* scene)
+{
+	bond.clear();
+	intr.clear();
+	phys.clear();
+	body.clear();
+	state.clear();
+	hasCell.clear();
+	std::unordered_map<Body::id_t, size_t> compact;
+	auto indexOf = [&](Body::id_t id) {
+		const auto it = compact.find(id);
+		if (it != compact.end()) return it->second;
+		auto* st = static_cast<RdemState*>(Body::byId(id, scene)->state.get());
+		compact.emplace(id, body.size());
+		body.push_back(id);
+		state.push_back(st);
+		hasCell.push_back(st->cellVolume > 0);
+		return body.size() - 1;
+	};
+	vector<size_t> blockOfSide;
+	for (const auto& I : *scene->interactions) {
+		if (!I->isReal()) continue;
+		const auto* p = dynamic_cast<const RdemPhys*>(I->phys.get());
+		const auto* g = dynamic_cast<const RdemGeom*>(I->geom.get());
+		if (!p || !g || !g->bonded || (p->cellCoef1 == 0 && p->cellCoef2 == 0)) continue;
+		Bond b { indexOf(I->getId1()), indexOf(I->getId2()), rdem::dominantAxis<Real>(g->segNormal1), rdem::dominantAxis<Real>(g->segNormal2),
+			     p->cellCoef1,         p->cellCoef2,         g->segNormal1,
+			     g->segNormal2,        g->faceCentre1,       g->faceCentre2 };
+		bond.push_back(b);
+		intr.push_back(I);
+		phys.push_back(I->phys);
+		blockOfSide.push_back(b.i1);
+		blockOfSide.push_back(b.i2);
+	}
+	vector<size_t> order;
+	rdem::groupByKey(blockOfSide, body.size(), first, order);
+	sideBond.resize(order.size());
+	sideSecond.resize(order.size());
+	sideOffset.resize(order.size());
+	for (size_t k = 0; k < order.size(); ++k) {
+		sideBond[k]   = order[k] / 2;
+		sideSecond[k] = order[k] % 2;
+		sideOffset[k] = static_cast<const RdemPhys*>(intr[sideBond[k]]->phys.get())->centroidOffset != Vector3r::Zero();
+	}
+	nCellBlocks = size_t(std::count(hasCell.begin(), hasCell.end(), char(1)));
+	opening.assign(bond.size(), 0);
+	normal.assign(bond.size(), Vector3r::Zero());
+	arm1.assign(bond.size(), Vector3r::Zero());
+	arm2.assign(bond.size(), Vector3r::Zero());
+	stiffness.resize(body.size());
+	condensation.resize(body.size());
+	for (size_t i = 0; i < body.size(); ++i) {
+		stiffness[i]    = state[i]->cellStiffness;
+		condensation[i] = state[i]->cellCondensation;
+	}
+	intact.assign(bond.size(), 1);
+	rot.assign(body.size(), Matrix3r::Identity());
+	pos.assign(body.size(), Vector3r::Zero());
+	stress.assign(body.size(), Vector3r::Zero());
+	scalePrev.assign(body.size(), 1);
+	for (size_t i = 0; i < body.size(); ++i)
+		scalePrev[i] = state[i]->cellScale;
+	builtGeneration   = generation;
+	builtInteractions = long(scene->interactions->size());
+	builtBodies       = long(scene->bodies->size());
+	brokenSeen        = -1;
 }
 
-void RdemCellNetwork::updateIntact(Scene *scene) {
-  // Intact fractions change only when a spring breaks or a bond is released:
-  // recompute them only then.
-  const long broken = Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(scene);
-  if (broken == brokenSeen)
-    return;
-  brokenSeen = broken;
-  for (size_t k = 0; k < bond.size(); ++k) {
-    const Interaction &I = *intr[k];
-    if (!I.isReal() ||
-        !static_cast<const RdemGeom *>(I.geom.get())
-             ->bonded) { // released (then maybe a contact): off for good
-      intact[k] = 0;
-      continue;
-    }
-    const auto &p = *static_cast<const RdemPhys *>(I.phys.get());
-    intact[k] = Real(p.nIntact()) / Real(p.segState.size());
-  }
+void RdemCellNetwork::updateIntact(Scene* scene)
+{
+	// Intact fractions change only when a spring breaks or a bond is released: recompute them only then.
+	const long broken = Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(scene);
+	if (broken == brokenSeen) return;
+	brokenSeen = broken;
+	for (size_t k = 0; k < bond.size(); ++k) {
+		const Interaction& I = *intr[k];
+		if (!I.isReal() || !static_cast<const RdemGeom*>(I.geom.get())->bonded) { // released (then maybe a contact): off for good
+			intact[k] = 0;
+			continue;
+		}
+		const auto& p = *static_cast<const RdemPhys*>(I.phys.get());
+		intact[k]     = Real(p.nIntact()) / Real(p.segState.size());
+	}
 }
 
-void RdemCellNetwork::updateStrains(Scene *scene) {
-  if (!refresh(scene))
-    return;
-  updateIntact(scene);
-  const long nBlocks = long(body.size()), nBonds = long(bond.size());
+void RdemCellNetwork::updateStrains(Scene* scene)
+{
+	if (!refresh(scene)) return;
+	updateIntact(scene);
+	const long nBlocks = long(body.size()), nBonds = long(bond.size());
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static)
 #endif
-  for (long i = 0; i < nBlocks; ++i) {
-    rot[size_t(i)] = state[size_t(i)]->ori.toRotationMatrix();
-    pos[size_t(i)] = state[size_t(i)]->pos;
-  }
-  /* Openings at the face centres: u_n = n·d0, d0 = P₂ - P₁ of the centre
-     (rdem::BondKinematics at s = r = 0), along body 1's rotated face normal n =
-     R₁n₁ (the law's mean of both blocks' normals differs from it at second
-     order in their relative rotation, which the opening multiplies); and the
-     moments about both centroids of a unit normal force at the face centre, for
-     applyForces. */
+	for (long i = 0; i < nBlocks; ++i) {
+		rot[size_t(i)] = state[size_t(i)]->ori.toRotationMatrix();
+		pos[size_t(i)] = state[size_t(i)]->pos;
+	}
+	/* Openings at the face centres: u_n = n·d0, d0 = P₂ - P₁ of the centre (rdem::BondKinematics at s = r = 0), along
+	   body 1's rotated face normal n = R₁n₁ (the law's mean of both blocks' normals differs from it at second order in
+	   their relative rotation, which the opening multiplies); and the moments about both centroids of a unit normal
+	   force at the face centre, for applyForces. */
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static)
 #endif
-  for (long k = 0; k < nBonds; ++k) {
-    const Bond &b = bond[size_t(k)];
-    const Matrix3r &R1 = rot[b.i1], &R2 = rot[b.i2];
-    const Vector3r n = R1 * b.n1;
-    const Vector3r r1 = R1 * b.fc1, r2 = R2 * b.fc2;
-    normal[size_t(k)] = n;
-    opening[size_t(k)] = n.dot(pos[b.i2] + r2 - pos[b.i1] - r1);
-    arm1[size_t(k)] = r1.cross(n);
-    arm2[size_t(k)] = r2.cross(n);
-  }
-  // Per cell: ε_d = Σ c_q u_n,q over its bonds along d, completed by the
-  // condensation; the crack scale never increases.
+	for (long k = 0; k < nBonds; ++k) {
+		const Bond&    b   = bond[size_t(k)];
+		const Matrix3r &R1 = rot[b.i1], &R2 = rot[b.i2];
+		const Vector3r n   = R1 * b.n1;
+		const Vector3r r1  = R1 * b.fc1, r2 = R2 * b.fc2;
+		normal[size_t(k)]  = n;
+		opening[size_t(k)] = n.dot(pos[b.i2] + r2 - pos[b.i1] - r1);
+		arm1[size_t(k)]    = r1.cross(n);
+		arm2[size_t(k)]    = r2.cross(n);
+	}
+	// Per cell: ε_d = Σ c_q u_n,q over its bonds along d, completed by the condensation; the crack scale never increases.
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static)
 #endif
-  for (long i = 0; i < nBlocks; ++i) {
-    if (!hasCell[size_t(i)])
-      continue;
-    RdemState &st = *state[size_t(i)];
-    Vector3r eps = Vector3r::Zero();
-    Real scale = st.cellScale;
-    for (size_t j = first[size_t(i)]; j < first[size_t(i) + 1]; ++j) {
-      const Bond &b = bond[sideBond[j]];
-      if (sideSecond[j])
-        eps[b.ax2] += b.c2 * opening[sideBond[j]];
-      else
-        eps[b.ax1] += b.c1 * opening[sideBond[j]];
-      scale = math::min(scale, intact[sideBond[j]]);
-    }
-    st.strain = condensation[size_t(i)] * eps;
-    st.cellScale = scale;
-    st.cellStress = scale * (stiffness[size_t(i)] * st.strain);
-  }
+	for (long i = 0; i < nBlocks; ++i) {
+		if (!hasCell[size_t(i)]) continue;
+		RdemState& st    = *state[size_t(i)];
+		Vector3r   eps   = Vector3r::Zero();
+		Real       scale = st.cellScale;
+		for (size_t j = first[size_t(i)]; j < first[size_t(i) + 1]; ++j) {
+			const Bond& b = bond[sideBond[j]];
+			if (sideSecond[j]) eps[b.ax2] += b.c2 * opening[sideBond[j]];
+			else
+				eps[b.ax1] += b.c1 * opening[sideBond[j]];
+			scale = math::min(scale, intact[sideBond[j]]);
+		}
+		st.strain     = condensation[size_t(i)] * eps;
+		st.cellScale  = scale;
+		st.cellStress = scale * (stiffness[size_t(i)] * st.strain);
+	}
 }
 
-void RdemCellNetwork::applyForces(Scene *scene, bool releaseOnCrack,
-                                  Real &energy, Real &released) {
-  if (!refresh(scene))
-    return;
-  const long nBlocks = long(body.size());
-  const bool trackEnergy = scene->trackEnergy;
-  Real e = 0, rel = 0;
-  /* 1. Per cell: ∂W/∂ε = s K ε (K = V(D - M I), RdemState::cellStiffness) plus
-     the reaction of the offset correction of its bonds' shear springs
-     (RdemPhys::offsetGrad, written by the law), mapped to the axes with bonds
-     by the condensation (RdemState::cellCondensation). */
+void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released)
+{
+	if (!refresh(scene)) return;
+	const long nBlocks     = long(body.size());
+	const bool trackEnergy = scene->trackEnergy;
+	Real       e = 0, rel = 0;
+	/* 1. Per cell: ∂W/∂ε = s K ε (K = V(D - M I), RdemState::cellStiffness) plus the reaction of the offset correction
+	      of its bonds' shear springs (RdemPhys::offsetGrad, written by the law), mapped to the axes with bonds by the
+	      condensation (RdemState::cellCondensation). */
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static) reduction(+ : e, rel)
 #endif
-  for (long i = 0; i < nBlocks; ++i) {
-    if (!hasCell[size_t(i)]) {
-      stress[size_t(i)] = Vector3r::Zero();
-      continue;
-    }
-    const RdemState &st = *state[size_t(i)];
-    const Real s = releaseOnCrack ? st.cellScale : Real(1);
-    const Vector3r Ke = stiffness[size_t(i)] * st.strain;
-    Vector3r grad = Vector3r::Zero();
-    for (size_t j = first[size_t(i)]; j < first[size_t(i) + 1]; ++j) {
-      // a released bond has intact 0 (and a fully broken one no intact shear
-      // spring: its gradients are zero)
-      if (!sideOffset[j] || intact[sideBond[j]] == 0)
-        continue;
-      const auto &p = *static_cast<const RdemPhys *>(phys[sideBond[j]].get());
-      grad += sideSecond[j] ? p.offsetGrad2 : p.offsetGrad1;
-    }
-    stress[size_t(i)] = s * Ke + condensation[size_t(i)].transpose() * grad;
-    if (trackEnergy) {
-      e += s * st.strain.dot(Ke) / 2;
-      rel += (scalePrev[size_t(i)] - s) * st.strain.dot(Ke) / 2;
-    }
-    scalePrev[size_t(i)] = s;
-  }
-  energy += e;
-  released += rel;
-  /* 2. Per block: the normal force -∂W/∂u_n = -(c₁∂W/∂ε₁ + c₂∂W/∂ε₂) of each of
-     its bonds, on body 2 along the bond's normal and on body 1 against it, at
-     the face centre; summed block by block in the fixed order of the lists. */
-  RdemForceAssembler::prepareDirectSums(scene, long(scene->bodies->size()));
+	for (long i = 0; i < nBlocks; ++i) {
+		if (!hasCell[size_t(i)]) {
+			stress[size_t(i)] = Vector3r::Zero();
+			continue;
+		}
+		const RdemState& st   = *state[size_t(i)];
+		const Real       s    = releaseOnCrack ? st.cellScale : Real(1);
+		const Vector3r   Ke   = stiffness[size_t(i)] * st.strain;
+		Vector3r         grad = Vector3r::Zero();
+		for (size_t j = first[size_t(i)]; j < first[size_t(i) + 1]; ++j) {
+			// a released bond has intact 0 (and a fully broken one no intact shear spring: its gradients are zero)
+			if (!sideOffset[j] || intact[sideBond[j]] == 0) continue;
+			const auto& p = *static_cast<const RdemPhys*>(phys[sideBond[j]].get());
+			grad += sideSecond[j] ? p.offsetGrad2 : p.offsetGrad1;
+		}
+		stress[size_t(i)] = s * Ke + condensation[size_t(i)].transpose() * grad;
+		if (trackEnergy) {
+			e += s * st.strain.dot(Ke) / 2;
+			rel += (scalePrev[size_t(i)] - s) * st.strain.dot(Ke) / 2;
+		}
+		scalePrev[size_t(i)] = s;
+	}
+	energy += e;
+	released += rel;
+	/* 2. Per block: the normal force -∂W/∂u_n = -(c₁∂W/∂ε₁ + c₂∂W/∂ε₂) of each of its bonds, on body 2 along the bond's
+	      normal and on body 1 against it, at the face centre; summed block by block in the fixed order of the lists. */
+	RdemForceAssembler::prepareDirectSums(scene, long(scene->bodies->size()));
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static)
 #endif
-  for (long i = 0; i < nBlocks; ++i) {
-    if (first[size_t(i)] == first[size_t(i) + 1])
-      continue;
-    Vector3r f = Vector3r::Zero(), t = Vector3r::Zero();
-    for (size_t j = first[size_t(i)]; j < first[size_t(i) + 1]; ++j) {
-      const size_t k = sideBond[j];
-      if (intact[k] == 0 && !intr[k]->isReal())
-        continue; // released
-      const Bond &b = bond[k];
-      const Real F = -(b.c1 * stress[b.i1][b.ax1] + b.c2 * stress[b.i2][b.ax2]);
-      const Real Fb = sideSecond[j] ? F : -F; // along the normal, on this block
-      f += Fb * normal[k];
-      t += Fb * (sideSecond[j] ? arm2[k] : arm1[k]);
-    }
-    scene->forces.addForceUnsynced(body[size_t(i)], f);
-    scene->forces.addTorqueUnsynced(body[size_t(i)], t);
-  }
+	for (long i = 0; i < nBlocks; ++i) {
+		if (first[size_t(i)] == first[size_t(i) + 1]) continue;
+		Vector3r f = Vector3r::Zero(), t = Vector3r::Zero();
+		for (size_t j = first[size_t(i)]; j < first[size_t(i) + 1]; ++j) {
+			const size_t k = sideBond[j];
+			if (intact[k] == 0 && !intr[k]->isReal()) continue; // released
+			const Bond& b  = bond[k];
+			const Real  F  = -(b.c1 * stress[b.i1][b.ax1] + b.c2 * stress[b.i2][b.ax2]);
+			const Real  Fb = sideSecond[j] ? F : -F; // along the normal, on this block
+			f += Fb * normal[k];
+			t += Fb * (sideSecond[j] ? arm2[k] : arm1[k]);
+		}
+		scene->forces.addForceUnsynced(body[size_t(i)], f);
+		scene->forces.addTorqueUnsynced(body[size_t(i)], t);
+	}
 }
 
-vector<Real> RdemCellNetwork::omega2Bound(Scene *scene) {
-  /* The cells' stiffness on the bond openings is K_qr = Σ_b s_b c_bq K_b(d_q,
-     d_r) c_br over the cells b the two bonds share. Each bond q is bounded like
-     a normal spring of stiffness κ_q = Σ_r |K_qr| at its face centre, with the
-     Gershgorin terms 2κ(1/m + |r×n|²/I_min) of each of its free blocks (as
-     RdemTimeStepper does for springs) [1/s²]. */
-  vector<Real> w2(scene->bodies->size(), 0);
-  if (!refresh(scene))
-    return w2;
-  vector<Vector3r> row(
-      body.size(),
-      Vector3r::Zero()); // per cell and axis d: Σ_r |K(d, d_r)| |c_r|
-  for (size_t i = 0; i < body.size(); ++i) {
-    if (!hasCell[i])
-      continue;
-    const RdemState &st = *state[i];
-    for (size_t j = first[i]; j < first[i + 1]; ++j) {
-      const Bond &b = bond[sideBond[j]];
-      const int a = sideSecond[j] ? b.ax2 : b.ax1;
-      const Real c = math::abs(sideSecond[j] ? b.c2 : b.c1);
-      for (int d = 0; d < 3; ++d)
-        row[i][d] += math::abs(st.cellStiffness(d, a)) * c;
-    }
-    row[i] *= st.cellScale;
-  }
-  for (size_t k = 0; k < bond.size(); ++k) {
-    const Bond &b = bond[k];
-    const Real kappa =
-        math::abs(b.c1) * row[b.i1][b.ax1] + math::abs(b.c2) * row[b.i2][b.ax2];
-    for (int side = 0; side < 2; ++side) {
-      const State &s = *state[side ? b.i2 : b.i1];
-      if (s.blockedDOFs == State::DOF_ALL)
-        continue;
-      const Vector3r r = s.ori * (side ? b.fc2 : b.fc1);
-      const Vector3r n = s.ori * (side ? b.n2 : b.n1);
-      w2[size_t(body[side ? b.i2 : b.i1])] +=
-          2 * kappa *
-          (1 / s.mass + r.cross(n).squaredNorm() / s.inertia.minCoeff());
-    }
-  }
-  return w2;
+vector<Real> RdemCellNetwork::omega2Bound(Scene* scene)
+{
+	/* The cells' stiffness on the bond openings is K_qr = Σ_b s_b c_bq K_b(d_q, d_r) c_br over the cells b the two bonds
+	   share. Each bond q is bounded like a normal spring of stiffness κ_q = Σ_r |K_qr| at its face centre, with the
+	   Gershgorin terms 2κ(1/m + |r×n|²/I_min) of each of its free blocks (as RdemTimeStepper does for springs) [1/s²]. */
+	vector<Real> w2(scene->bodies->size(), 0);
+	if (!refresh(scene)) return w2;
+	vector<Vector3r> row(body.size(), Vector3r::Zero()); // per cell and axis d: Σ_r |K(d, d_r)| |c_r|
+	for (size_t i = 0; i < body.size(); ++i) {
+		if (!hasCell[i]) continue;
+		const RdemState& st = *state[i];
+		for (size_t j = first[i]; j < first[i + 1]; ++j) {
+			const Bond& b = bond[sideBond[j]];
+			const int   a = sideSecond[j] ? b.ax2 : b.ax1;
+			const Real  c = math::abs(sideSecond[j] ? b.c2 : b.c1);
+			for (int d = 0; d < 3; ++d)
+				row[i][d] += math::abs(st.cellStiffness(d, a)) * c;
+		}
+		row[i] *= st.cellScale;
+	}
+	for (size_t k = 0; k < bond.size(); ++k) {
+		const Bond& b     = bond[k];
+		const Real  kappa = math::abs(b.c1) * row[b.i1][b.ax1] + math::abs(b.c2) * row[b.i2][b.ax2];
+		for (int side = 0; side < 2; ++side) {
+			const State& s = *state[side ? b.i2 : b.i1];
+			if (s.blockedDOFs == State::DOF_ALL) continue;
+			const Vector3r r = s.ori * (side ? b.fc2 : b.fc1);
+			const Vector3r n = s.ori * (side ? b.n2 : b.n1);
+			w2[size_t(body[side ? b.i2 : b.i1])] += 2 * kappa * (1 / s.mass + r.cross(n).squaredNorm() / s.inertia.minCoeff());
+		}
+	}
+	return w2;
 }
 
 } // namespace yade
