@@ -1,0 +1,106 @@
+# -*- coding: utf-8 -*-
+"""What a shear-wall run costs and what its accuracy depends on: scripts/shear_wall.py for a list of settings.
+
+Problem
+    The Magenes & Calvi wall MI1 (or MI2, --wall) of scripts/shear_wall.py is run once per setting, each in its own YADE
+    process (one after the other, never two at once): a base setting, then one knob changed at a time, blocks per brick
+    along its length (1, 2, 4), springs per face edge (1, 2, 3), the Poisson effect off, softening on (when the build
+    has it), half the loading rate (is the run quasi-static?), and the base setting on two threads. Every run writes
+    its own folder under --out.
+
+Expected result
+    A table (markdown on stdout and in --table) of the peak load, the drift at the peak, their change against the finest
+    run, the number of blocks, steps, wall-clock time, µs per block-step and threads; the cheapest setting within 5 % and
+    10 % of the finest run's peak.
+
+How to run (each MI1 run takes minutes: the whole sweep about an hour on this 2-core machine)
+    build/bin/yade -n scripts/shear_wall_sweep.py --cases base,rate,j2
+    build/bin/yade -n scripts/shear_wall_sweep.py --cases all --table doc/shear-wall-sweep.md
+    build/bin/yade -n scripts/shear_wall_sweep.py --replot        the table again from the runs' results.json
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import time
+
+LAUNCHER = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'build', 'bin', 'yade')
+SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'shear_wall.py')
+#: name -> (description, options of shear_wall.py beyond the common ones, threads)
+CASES = {
+        'base': ('base: 1 block per brick, 2x2 springs, Poisson cells, brittle, 10 mm/s', [], 1),
+        'rate': ('half the loading rate (5 mm/s)', ['--rate', '5'], 1),
+        'j2': ('base on two threads', [], 2),
+        'blocks2': ('2 blocks per brick along its length', ['--blocks', '2,1,1'], 1),
+        'blocks4': ('4 blocks per brick along its length', ['--blocks', '4,1,1'], 1),
+        'springs1': ('1x1 spring per face', ['--springs', '1'], 1),
+        'springs3': ('3x3 springs per face', ['--springs', '3'], 1),
+        'poissonOff': ('Poisson effect off', ['--formulation', 'off', '--failure-stress', 'spring'], 1),
+        'softening': ('softening law on', ['--softening', 'on'], 1),
+}
+
+parser = argparse.ArgumentParser(prog='yade scripts/shear_wall_sweep.py', description=__doc__.split('\n\n')[0])
+parser.add_argument('--cases', default='base,rate,j2', help='comma-separated names among %s, or all (default base,rate,j2)' % ', '.join(CASES))
+parser.add_argument('--wall', choices=['MI1', 'MI2'], default='MI1', help='the wall (default MI1)')
+parser.add_argument('--extra', default='', help='further options for every run of shear_wall.py, as one string (default none)')
+parser.add_argument('--out', default='output/shear_wall_sweep', help='folder of the runs (default output/shear_wall_sweep)')
+parser.add_argument('--table', default=None, help='also write the markdown table to this file')
+parser.add_argument('--replot', action='store_true', help='do not run: make the table from the results.json already in --out')
+opts = parser.parse_args(sys.argv[1:])
+names = list(CASES) if opts.cases == 'all' else [c for c in opts.cases.split(',') if c]
+unknown = [c for c in names if c not in CASES]
+if unknown:
+	sys.exit('--cases: unknown %s; choose among %s or all' % (', '.join(unknown), ', '.join(CASES)))
+
+
+def folder(name):
+	return os.path.join(opts.out, '%s_%s' % (opts.wall, name))
+
+
+def run(name):
+	desc, extra, threads = CASES[name]
+	cmd = [LAUNCHER, '-j%d' % threads, '-n', '-x', SCRIPT, '--wall', opts.wall, '--out', folder(name), '--vtk-every', '0'] + extra + opts.extra.split()
+	print('sweep: %s (%s): %s' % (name, desc, ' '.join(cmd[1:])), flush=True)
+	start = time.time()
+	proc = subprocess.run(cmd, env=dict(os.environ, OMP_NUM_THREADS=str(threads)), stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+	last = [l for l in proc.stdout.splitlines() if l.startswith('shear_wall:')]
+	print('sweep: %s done in %.0f s, exit %d: %s' % (name, time.time() - start, proc.returncode, last[-1] if last else proc.stdout[-2000:]), flush=True)
+
+
+if not opts.replot:
+	for name in names:
+		run(name)
+
+rows = []
+for name in names:
+	path = os.path.join(folder(name), 'results.json')
+	if not os.path.exists(path):
+		print('sweep: no %s (the run failed or was not made)' % path)
+		continue
+	with open(path) as f:
+		r = json.load(f)
+	c = r['cost']
+	rows.append(dict(name=name, desc=CASES[name][0], peak=abs(r['peak']['shearKN']), drift=abs(r['peak']['driftPercent']), blocks=r['blocks'],
+	                 steps=c['compressSteps'] + c['pushSteps'], wall=c['compressSeconds'] + c['pushSeconds'], us=c['microsecondsPerBlockStep'],
+	                 threads=c['threads'], error=(r['comparison'] or {}).get('peakError')))
+finest = max((x for x in rows if x['threads'] == 1), key=lambda x: (x['blocks'], x['steps']), default=None)
+lines = ['| setting | blocks | peak [kN] | vs measured mean | drift at peak [%] | peak vs finest | steps | wall [s] | µs per block-step | threads |',
+         '|---|---|---|---|---|---|---|---|---|---|']
+for x in rows:
+	change = x['peak'] / finest['peak'] - 1 if finest else float('nan')
+	lines.append('| %s | %d | %.1f | %s | %.3f | %+.1f %% | %d | %.0f | %.3f | %d |' % (x['desc'], x['blocks'], x['peak'], '%+.1f %%' % (100 * x['error'])
+	                                                                                    if x['error'] is not None else '-', x['drift'], 100 * change, x['steps'],
+	                                                                                    x['wall'], x['us'], x['threads']))
+if finest:
+	for target in (0.05, 0.10):
+		ok = [x for x in rows if x['threads'] == 1 and abs(x['peak'] / finest['peak'] - 1) <= target]
+		best = min(ok, key=lambda x: x['wall']) if ok else None
+		lines.append('')
+		lines.append('Cheapest within %d %% of the finest run (%s): %s' % (100 * target, finest['desc'], '%s, %.0f s' % (best['desc'], best['wall']) if best else 'none'))
+text = '\n'.join(lines)
+print(text)
+if opts.table:
+	with open(opts.table, 'w') as f:
+		f.write(text + '\n')
+sys.exit(0)

@@ -1,0 +1,118 @@
+"""rdem.walltest, the machinery of scripts/shear_wall.py, on a small wall of one material (running bond, one wythe, two
+bricks long, 16 courses: 0.51 × 1.03 × 0.12 m; E = 3 GPa, ν = 0, unbreakable; beams 1000 times stiffer, so rigid):
+
+* the elastic lateral stiffness, pushed to 0.01 mm and brought to rest, against the Timoshenko beam clamped at its base
+  (rdem.walltest.timoshenkoStiffness), for both boundary conditions; ν = 0 because a wall one block thick has no strain
+  through its thickness (doc/masonry.md), so with ν ≠ 0 it is neither in plane stress nor the beam of the closed form;
+* the top beam kept horizontal with both ends fixed (its rotation exactly 0), and rotating as the cantilever's tip,
+  V H²/(2EI) for bending plus nothing for shear, when free;
+* the reaction: the actuator's force equals the base shear at rest, and the vertical load reaches the base;
+* the vertical stress sigma0 gives the settlement N H/(E A) of a bar;
+* the closed form itself against numbers worked by hand, and the argument checks.
+
+Tolerances. The Timoshenko beam is not the exact plane solution of a wall twice as tall as long: the clamped base
+restrains the warping of the section, which the beam's shear factor 5/6 ignores, and the rigid-block model has one block
+per brick (two across the wall). Measured: see the assertions; the bounds are about twice the measured deviations.
+"""
+import math
+import unittest
+import harness
+from yade import O, Vector3
+from yade.wrapper import RdemMat, RdemJoint
+import rdem
+from rdem import walltest
+
+E, L, H, T = 3e9, 0.51, 1.03, 0.12  # [Pa], [m]
+
+
+def tinyWall(boundary, sigma0=0.0, beamBlocks=1, topBeam=0.1, gravity=0.0):
+	"""The wall of the module docstring in a fresh scene, with its ShearWallTest."""
+	harness.freshScene()
+	O.engines = rdem.engines(poisson='consistent', failureStress='total', damping=0.5, gravity=(0, 0, -gravity))
+	brick = O.materials.append(RdemMat(young=E, poisson=0.0, density=1800, tensileStrength=float('inf'), cohesion=float('inf'), label='brick'))
+	beam = O.materials.append(RdemMat(young=1e3 * E, poisson=0.0, density=2400, tensileStrength=float('inf'), cohesion=float('inf'), label='beam'))
+	joint = RdemJoint(young=E, poisson=0.0, tensileStrength=float('inf'), cohesion=float('inf'))
+	w = rdem.masonry.wall(L, H, T, bond='running', baseBeam=0.1, topBeam=topBeam, beamBlocks=beamBlocks, brickMaterial=brick, jointMaterial=joint,
+	                      beamMaterial=beam)
+	rdem.poissonEngine().elements = 'cells'
+	rdem.poissonEngine().build(w.ids)
+	O.dt = rdem.timeStepper().safety * rdem.timeStepper().estimate()
+	return w, walltest.ShearWallTest(w, sigma0, boundary=boundary)
+
+
+class ShearWall(unittest.TestCase):
+
+	def pushed(self, boundary, u=1e-5):
+		"""The tiny wall pushed to u [m] and held until at rest."""
+		w, test = tinyWall(boundary)
+		test.compress(0.002)
+		test.push([u], rate=1e-3, ramp=0.002)
+		test.hold(4000)
+		return w, test
+
+	def testClosedForm(self):
+		# Worked by hand: I = 0.12 * 0.51^3 / 12 = 1.326510e-3 m^4, G = 1.5e9 Pa, kappa G A = 0.765e8 N.
+		I = 0.12 * 0.51**3 / 12
+		bend, shear = 1.03**3 / (3 * 3e9 * I), 1.03 / (5 / 6 * 1.5e9 * 0.51 * 0.12)
+		self.assertAlmostEqual(walltest.timoshenkoStiffness(3e9, 0.0, 0.51, 0.12, 1.03, 'cantilever') / (1 / (bend + shear)), 1.0, delta=1e-14)
+		self.assertAlmostEqual(walltest.timoshenkoStiffness(3e9, 0.0, 0.51, 0.12, 1.03, 'fixed') / (1 / (bend / 4 + shear)), 1.0, delta=1e-14)
+		for kw, name in ((dict(E=-1), 'E'), (dict(nu=0.5), 'nu'), (dict(boundary='pinned'), 'boundary'), (dict(height=float('nan')), 'height')):
+			args = dict(E=3e9, nu=0.0, length=0.51, thickness=0.12, height=1.03, boundary='fixed')
+			args.update(kw)
+			with self.assertRaisesRegex(ValueError, '^' + name):
+				walltest.timoshenkoStiffness(**args)
+
+	def testStiffnessFixed(self):
+		w, test = self.pushed('fixed')
+		K = test.shear() / test.topDisplacement()
+		ref = walltest.timoshenkoStiffness(E, 0.0, L, T, H, 'fixed')
+		self.assertAlmostEqual(K / ref, 1.0, delta=TOL_FIXED, msg='K = %.4g N/m, Timoshenko %.4g' % (K, ref))
+		self.assertEqual(test.topRotation(), 0.0)
+		self.assertAlmostEqual(test.baseShear() / test.shear(), 1.0, delta=1e-3)
+
+	def testStiffnessCantilever(self):
+		w, test = self.pushed('cantilever')
+		V, u = test.shear(), test.topDisplacement()
+		ref = walltest.timoshenkoStiffness(E, 0.0, L, T, H, 'cantilever')
+		self.assertAlmostEqual(V / u / ref, 1.0, delta=TOL_CANTILEVER, msg='K = %.4g N/m, Timoshenko %.4g' % (V / u, ref))
+		# Tip rotation of a clamped beam under a tip load, about +y (the top tilts towards +x): V H^2 / (2 E I).
+		theta = V * H**2 / (2 * E * T * L**3 / 12)
+		self.assertAlmostEqual(test.topRotation() / theta, 1.0, delta=TOL_ROTATION, msg='rotation %.4g rad, beam %.4g' % (test.topRotation(), theta))
+		self.assertAlmostEqual(test.baseShear() / V, 1.0, delta=1e-3)
+
+	def testVerticalLoad(self):
+		sigma0 = 1e6
+		w, test = tinyWall('fixed', sigma0=sigma0, gravity=9.81)
+		test.compress(0.005)
+		N = sigma0 * L * T
+		self.assertAlmostEqual(test.axialLoad() / N, 1.0, delta=1e-12)
+		weight = 9.81 * sum(O.bodies[i].state.mass for i in w.masonry())
+		base = -sum(O.forces.f(i)[2] for i in test.base)
+		self.assertAlmostEqual(base / (N + weight), 1.0, delta=1e-3, msg='base %.6g N, N + weight %.6g N' % (base, N + weight))
+		# Settlement of a bar under N (plus half its own weight), uniaxial stress (nu = 0): (N + W/2) H / (E A).
+		bar = (N + weight / 2) * H / (E * L * T)
+		self.assertAlmostEqual(-test.verticalDisplacement() / bar, 1.0, delta=TOL_SETTLEMENT, msg='settlement %.5g m, bar %.5g m' % (-test.verticalDisplacement(), bar))
+		self.assertEqual(test.topDisplacement(), 0.0)
+
+	def testArguments(self):
+		w, test = tinyWall('fixed')
+		for kw, name in ((dict(boundary='pinned'), 'boundary'), (dict(sigma0=-1.0), 'sigma0'), (dict(sigma0=float('inf')), 'sigma0')):
+			args = dict(sigma0=0.0, boundary='fixed')
+			args.update(kw)
+			with self.assertRaisesRegex(ValueError, '^' + name):
+				walltest.ShearWallTest(w, **args)
+		with self.assertRaisesRegex(ValueError, 'beamBlocks=1'):
+			tinyWall('fixed', beamBlocks=2)
+		with self.assertRaisesRegex(ValueError, '^rate'):
+			test.push([1e-3], rate=0.0, ramp=0.0)
+		with self.assertRaisesRegex(ValueError, '^duration'):
+			test.compress(-1.0)
+		self.assertEqual(walltest.cycleTargets([1, 2], 2), [1, -1, 1, -1, 2, -2, 2, -2, 0.0])
+		with self.assertRaisesRegex(ValueError, 'amplitude'):
+			walltest.cycleTargets([1, -2])
+
+
+TOL_FIXED, TOL_CANTILEVER, TOL_ROTATION, TOL_SETTLEMENT = 0.05, 0.05, 0.05, 0.02
+
+if __name__ == '__main__':
+	harness.run(ShearWall)
