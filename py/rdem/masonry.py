@@ -75,9 +75,11 @@ def _material(value, name):
 
 
 def _jointLike(template, thickness, label):
-	"""A copy of the RdemJoint ``template`` with the given thickness and label."""
-	return RdemJoint(thickness=thickness, young=template.young, poisson=template.poisson, tensileStrength=template.tensileStrength, cohesion=template.cohesion,
-	                 frictionAngle=template.frictionAngle, label=label)
+	"""A copy of the RdemJoint ``template`` (every attribute: elastic constants, strengths, fracture energies, ...) with the
+	given thickness and label."""
+	attrs = template.dict()
+	attrs.update(thickness=thickness, label=label)
+	return RdemJoint(**attrs)
 
 
 def _joints(jointMaterial, mortar, t):
