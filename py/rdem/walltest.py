@@ -45,7 +45,7 @@ def timoshenkoStiffness(E, nu, length, thickness, height, boundary, shearFactor=
 	$1/K = H^3/(c E I) + H/(\\kappa G A)$, $I = tL^3/12$, $A = Lt$, $G = E/(2(1+\\nu))$,
 
 	$c = 3$ for a cantilever (no moment at the top) and $c = 12$ for both ends fixed (the top kept horizontal), $\\kappa$
-	the shear correction factor, 5/6 for a rectangle (Timoshenko & Gere 1972, Mechanics of Materials, §§9.1, 10.1).
+	the shear correction factor, 5/6 for a rectangle ([TimoshenkoGere1972]_).
 	Lengths in m, E in Pa.
 
 	ValueError naming the argument if one is out of range."""
@@ -263,16 +263,16 @@ MAGENES_CALVI = {
                 'joint thickness 10 mm': 'assumed: the usual thickness of a bed joint (not in the database)',
                 'E = 2991 MPa for brick and mortar': 'the masonry modulus of the database; brick and mortar moduli are not given, so both get the '
                 'masonry modulus and the model wall has exactly the measured E',
-                'nu = 0.25 for brick and mortar': 'EN 1996-1-1 (Eurocode 6) 3.7.3: G = 0.4 E, i.e. nu = 0.25',
+                'nu = 0.25 for brick and mortar': 'EN1996-1-1 (Eurocode 6) 3.7.3: G = 0.4 E, i.e. nu = 0.25',
                 'joint cohesion 0.21 MPa, friction 0.81': 'f_v0 and mu of the database (MagenesCalvi1992)',
                 'joint tensile bond strength 0.15 MPa': 'c = 1.4 f_t (LourencoRots1997, the TU Eindhoven walls: f_t = 0.25, c = 0.35 MPa), '
                 'so f_t = 0.21/1.4',
                 'brick tensile strength 1.28 MPa': '0.065 f_b, f_b = 19.72 MPa (database): the middle of the range 0.03-0.10 of the ratio of a '
-                "unit's tensile to compressive strength (Schubert 1988, quoted by Lourenco1996, ch. 2)",
+                "unit's tensile to compressive strength (Schubert1988, quoted by Lourenco1996, ch. 2)",
                 'brick cohesion 1.79 MPa, friction 0.81': 'c = 1.4 f_t as for the joints (LourencoRots1997, potential cracks in the units); friction '
                 'of the joints (database)',
                 'density 1800 kg/m3': 'assumed, solid clay brick masonry (self-weight 0.035 MPa at the base)',
-                'beams: concrete, E = 30 GPa, nu = 0.2, 2400 kg/m3, 0.2 m tall': 'assumed: reinforced concrete beams (EN 1992-1-1 Table 3.1, C25/30: '
+                'beams: concrete, E = 30 GPa, nu = 0.2, 2400 kg/m3, 0.2 m tall': 'assumed: reinforced concrete beams (EN1992-1-1 Table 3.1, C25/30: '
                 'E_cm = 31 GPa); they are rigid against the wall (0.2 % of its compliance)',
         }
 }
