@@ -91,6 +91,7 @@ r.add_argument('--drift', type=float, default=0.6, help='monotonic test: end dri
 r.add_argument('--cycles', type=str, default='', help='cyclic test instead: drift amplitudes [%%] separated by commas, e.g. 0.05,0.1,0.2 (default none)')
 r.add_argument('--repeat', type=int, default=1, help='cycles per amplitude (default 1)')
 r.add_argument('--stop-drop', type=float, default=0.3, help='monotonic test: stop once the load has dropped by this fraction of the peak (default 0.3; 0 = never)')
+r.add_argument('--max-wall', type=float, default=0, help='end the loading after this wall-clock time [s] and write the results so far (default 0: no limit)')
 r.add_argument('--rate', type=float, default=10.0, help='speed of the top beam [mm/s] (default 10)')
 r.add_argument('--ramp', type=float, default=0.05, help='duration of the velocity ramp at the start and at reversals [s] (default 0.05)')
 r.add_argument('--compress-time', type=float, default=0.05, help='duration of the vertical-load ramp [s] (default 0.05)')
@@ -236,6 +237,9 @@ def stop(t):
 	"""Monotonic test: the load has dropped by --stop-drop of the peak, once past the first crack (before it, the peak is
 	the residual of the vertical loading)."""
 	p = state['peak']
+	if opts.max_wall > 0 and time.time() - t1 > opts.max_wall:
+		print('shear_wall: --max-wall %g s reached; results so far' % opts.max_wall, flush=True)
+		return True
 	return (not amplitudes and opts.stop_drop > 0 and state['first'] is not None and abs(p['driftPercent']) > 0.01
 	        and abs(history['shear'][-1]) < (1 - opts.stop_drop) * abs(p['shearKN']) * 1e3)
 
