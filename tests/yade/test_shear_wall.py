@@ -16,7 +16,10 @@ Tolerances, from the deviations measured (2026-11-24; the runs are at rest to 1e
   rigid block per brick, two across the wall, the model is softer in bending than the beam; bound 15 % and 12 %;
 * settlement: 0.978 of the bar's; the interior courses shorten by exactly sigma/E per course (3.333e-4), the
   difference is at the two brick-beam interfaces, each about 1.6 times as stiff as eq. 12 with the bricks'
-  half-height; bound 3 %. The actuator's force and the base shear agree to 1e-6 at rest; bound 1e-3.
+  half-height; bound 3 %. The actuator's force and the base shear agree to 1e-6 at rest; bound 1e-3;
+* energy (both ends fixed): elastic energy + Cundall's damping = 1.024 times the actuator's work (the work by the
+  trapezoid rule over chunks of 100 steps while the force oscillates, the damping booked per component by
+  NewtonIntegrator); bound 5 %.
 """
 import math
 import unittest
@@ -49,6 +52,7 @@ class ShearWall(unittest.TestCase):
 	def pushed(self, boundary, u=1e-5):
 		"""The tiny wall pushed to u [m] and held until at rest."""
 		w, test = tinyWall(boundary)
+		O.trackEnergy = True
 		test.push([u], rate=1e-3, ramp=0.002)
 		test.hold(3000)
 		return w, test
@@ -72,6 +76,10 @@ class ShearWall(unittest.TestCase):
 		self.assertAlmostEqual(K / ref, 1.0, delta=TOL_FIXED, msg='K = %.4g N/m, Timoshenko %.4g' % (K, ref))
 		self.assertEqual(test.topRotation(), 0.0)
 		self.assertAlmostEqual(test.baseShear() / test.shear(), 1.0, delta=1e-3)
+		# Energy: the actuator's work = elastic energy + Cundall's damping (+ kinetic, ~0 at rest); the driven top beam is
+		# not damped (NewtonIntegrator would book its |F||v| as a loss).
+		booked = sum(O.energy[k] for k in O.energy.keys() if k in ('rdemElastic', 'rdemPoisson', 'nonviscDamp', 'kinetic'))
+		self.assertAlmostEqual(booked / test.work['horizontal'], 1.0, delta=TOL_ENERGY, msg='booked %.6g J, work %.6g J' % (booked, test.work['horizontal']))
 
 	def testStiffnessCantilever(self):
 		w, test = self.pushed('cantilever')
@@ -114,7 +122,7 @@ class ShearWall(unittest.TestCase):
 			walltest.cycleTargets([1, -2])
 
 
-TOL_FIXED, TOL_CANTILEVER, TOL_ROTATION, TOL_SETTLEMENT = 0.02, 0.15, 0.12, 0.03
+TOL_FIXED, TOL_CANTILEVER, TOL_ROTATION, TOL_SETTLEMENT, TOL_ENERGY = 0.02, 0.15, 0.12, 0.03, 0.05
 
 if __name__ == '__main__':
 	harness.run(ShearWall)
