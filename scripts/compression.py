@@ -38,7 +38,7 @@ parser.add_argument('--corotational', action='store_true', help='corotational Po
 parser.add_argument('--plate-young', type=float, default=None, help="Young's modulus of the plates [GPa] (default: the concrete's, 30)")
 parser.add_argument('--rate', type=float, default=1.0, help='loading rate [mm/s] (default 1.0)')
 parser.add_argument('--end', type=float, default=0.25, help='end displacement of the loading plate [mm] (default 0.25)')
-parser.add_argument('--dt', type=float, default=2.0e-6, help='time step [s] (default 2e-6, as in the paper)')
+parser.add_argument('--dt', default='2e-6', help="time step [s] (default 2e-6, as in the paper), or 'auto': RdemTimeStepper's, 0.8 of the critical step")
 parser.add_argument('--out', default='output/compression', help='output folder (default output/compression)')
 parser.add_argument('--vtk-every', type=float, default=0.05, help='ParaView output every this displacement [mm] (default 0.05; 0 = none)')
 parser.add_argument('--threads', type=int, default=None, help='OpenMP threads; same as yade -jN (given here, it must match -j)')
@@ -46,9 +46,13 @@ opts = parser.parse_args(sys.argv[1:])
 if opts.threads is not None and opts.threads != yade.runtime.ompThreads:  # noqa: F821 (yade is in the launcher's globals)
 	sys.exit('--threads %d given but YADE runs %d threads: start it as  build/bin/yade -j%d scripts/compression.py' %
 	         (opts.threads, yade.runtime.ompThreads, opts.threads))  # noqa: F821
-for name in ('rate', 'end', 'dt'):
-	if not getattr(opts, name) > 0:
-		sys.exit('--%s = %g: must be > 0' % (name, getattr(opts, name)))
+try:
+	dt = None if opts.dt == 'auto' else float(opts.dt)
+except ValueError:
+	sys.exit("--dt = %s: must be a number of seconds > 0 or 'auto'" % opts.dt)
+for name, value in (('rate', opts.rate), ('end', opts.end), ('dt', 1 if dt is None else dt)):
+	if not value > 0:
+		sys.exit('--%s = %g: must be > 0' % (name, value))
 
 import matplotlib
 matplotlib.use('Agg')
@@ -69,15 +73,18 @@ test = CompressionTest(blocksPerEdge=opts.blocks,
                        corotational=opts.corotational,
                        plateYoung=opts.plate_young * 1e9 if opts.plate_young is not None else None,
                        rate=opts.rate * 1e-3,
-                       dt=opts.dt)
-nSteps = int(round(opts.end * 1e-3 / (opts.rate * 1e-3) / opts.dt))
-print('compression: %d blocks, %d bonds, %d Poisson elements, %d steps of %.3g s (critical step estimate %.3g s), set-up %.1f s' %
-      (len(test.ids), test.nBonds, test.nElements, nSteps, O.dt, rdem.timeStepper().estimate(), time.time() - wall0))
+                       dt=dt)
+tEnd = opts.end / opts.rate  # [s]
+critical = rdem.timeStepper().estimate()
+dtRun = dt if dt is not None else rdem.timeStepper().safety * critical  # the automatic step is updated every 100 steps
+nSteps = int(round(tEnd / dtRun))  # exact for a fixed step; about, for the automatic one
+print('compression: %d blocks, %d bonds, %d Poisson elements, %d steps of %.3g s (critical step %.3g s), set-up %.1f s' %
+      (len(test.ids), test.nBonds, test.nElements, nSteps, dtRun, critical, time.time() - wall0))
 
 # 3. Recording -------------------------------------------------------------------------------------------------------
 history = dict(t=[], disp=[], stress=[], nu=[], tension=[], shear=[])
 first = {}
-vtkEvery = int(round(opts.vtk_every * 1e-3 / (opts.rate * 1e-3) / opts.dt)) if opts.vtk_every > 0 else 0
+vtkEvery = int(round(opts.vtk_every * 1e-3 / (opts.rate * 1e-3) / dtRun)) if opts.vtk_every > 0 else 0
 cracks = rdem.CrackExport(os.path.join(opts.out, 'vtk', ''))
 
 
@@ -116,7 +123,8 @@ if vtkEvery:
 
 # 4. Run --------------------------------------------------------------------------------------------------------------
 wallRun = time.time()
-O.run(nSteps, True)
+while O.time < tEnd - 0.5 * O.dt:  # to the end displacement, whatever the step
+	O.run(max(1, min(nSteps, int((tEnd - O.time) / O.dt))), True)
 wall = time.time() - wallRun
 record()
 cracks.close()
@@ -158,6 +166,8 @@ results = dict(
                                segments=[dict(point=list(s['point']), normal=list(s['normal']), state=s['state']) for s in firstSegs]),
         breaks=dict(zip(('tension', 'shear'), rdem.breakCounts())),
         steps=O.iter,
+        dt=O.dt,
+        criticalDt=rdem.timeStepper().criticalDt,
         wallSeconds=wall,
         stepsPerSecond=O.iter / wall,
         microsecondsPerBlockStep=1e6 * wall / (O.iter * len(test.ids)),

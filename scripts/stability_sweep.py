@@ -1,19 +1,20 @@
 # -*- coding: utf-8 -*-
-"""Largest stable time step of each stability case, as a fraction of RdemTimeStepper's estimate (doc/stability.md).
+"""Largest stable time step of each stability case, as a fraction of RdemTimeStepper's Lanczos estimate (doc/stability.md).
 
 Problem
     The elastic cases of tests/yade/test_stability.py (free bonded grids of 2 cm concrete cubes at ν = 0.2, 0.45, 0.49
     and a brick/mortar stack with a 1:100 and 1:1000 stiffness contrast, all perturbed by random velocities without
-    rigid motion) are run for ``--steps`` steps at O.dt = f × estimate. A run is stable when the state stays finite and
-    the shadow energy of leapfrog (tests/yade/stability_cases.py) stays within ``--tol`` of its start. f goes up in
-    steps of 0.25 until a run is unstable, then is bisected to 0.01. The fast compression scene (4×4×4 blocks,
-    0.1 m/s) is swept the same way with its energy balance (work of the platen) in place of the shadow energy.
-    For each elastic case the linear limit 2/ω_max is also computed exactly, from the eigenvalues of the
-    mass-normalised stiffness matrix assembled by finite differences of the forces.
+    rigid motion) are run for ``--steps`` steps at O.dt = f × estimate (RdemTimeStepper's default, Lanczos). A run is
+    stable when the state stays finite and the shadow energy of leapfrog (tests/yade/stability_cases.py) stays within
+    ``--tol`` of its start. f goes 0.5, 0.9, 0.95, 0.99, then up in steps of 0.02 until a run is unstable, then is
+    bisected to 0.002. The fast compression scene (4×4×4 blocks, 0.1 m/s) is swept the same way with its energy balance
+    (work of the platen) in place of the shadow energy. For each elastic case the linear limit 2/ω_max is also computed
+    exactly (stability_cases.exactCriticalDt: the eigenvalues of the mass-normalised stiffness matrix assembled by
+    finite differences of the forces), and the Gershgorin bound (the fallback) is given as a fraction of it.
 
 Expected result
-    Stable at and below f = 1 for every case (the estimate is a Gershgorin bound, doc/theory.md §6); the largest stable
-    f close to the linear limit divided by the estimate.
+    Stable at and below f = 1 for every elastic case, unstable just above (the estimate is within 0.1 % below the
+    exact limit); Gershgorin 2.2–2.7 times below the limit.
 
 How to run (about 5 minutes on one core)
     build/bin/yade -n scripts/stability_sweep.py [--steps 20000] [--out output/stability] [--guard-cost]
@@ -80,7 +81,7 @@ def compressionRun(fraction):
 	PLATEN.update(work=0.0, top=test.top)
 	O.engines = O.engines + [PyRunner(iterPeriod=1, command='platenWork()')]
 	O.step()
-	O.dt = fraction * rdem.timeStepper().estimate()
+	sc.setDtFraction(fraction)
 	kin0, worst = O.energy['kinetic'], 0
 	while test.displacement() < 0.3e-3:
 		try:
@@ -95,65 +96,43 @@ def compressionRun(fraction):
 
 
 def linearFraction(build):
-	"""(2/omega_max) / estimate, omega_max from the finite-difference stiffness of the reference configuration."""
+	"""(exact limit 2/omega_max, Lanczos estimate, Gershgorin estimate, Lanczos steps) of a fresh scene [s]."""
 	ids = build()
-	est = rdem.timeStepper().estimate()
-	O.dt = 1e-12
-	for i in ids:
-		O.bodies[i].state.blockedDOFs = 'xyzXYZ'
-	base = [(Vector3(O.bodies[i].state.pos), Quaternion(O.bodies[i].state.ori)) for i in ids]
-	h = 1e-9  # [m] and h/0.01 [rad]: linear range, 7 digits above round-off of the forces
-
-	def forces():
-		O.step()
-		return np.array([c for i in ids for c in list(O.forces.f(i)) + list(O.forces.t(i))])
-
-	f0 = forces()
-	K = np.zeros((6 * len(ids), 6 * len(ids)))
-	for a, i in enumerate(ids):
-		s = O.bodies[i].state
-		for d in range(6):
-			axis = Vector3(*[1.0 if k == d % 3 else 0.0 for k in range(3)])
-			if d < 3:
-				s.pos, step = base[a][0] + axis * h, h
-			else:
-				s.ori, step = Quaternion(axis, h / 0.01) * base[a][1], h / 0.01
-			K[:, 6 * a + d] = -(forces() - f0) / step
-			s.pos, s.ori = base[a]
-	m = np.array([c for i in ids for c in [O.bodies[i].state.mass] * 3 + list(O.bodies[i].state.inertia)])
-	A = K / np.sqrt(np.outer(m, m))
-	w2 = np.linalg.eigvalsh((A + A.T) / 2)
-	return 2 / math.sqrt(w2.max()) / est, w2.min() / w2.max()
+	ts = rdem.timeStepper()
+	lanczos, gershgorin = ts.estimate('lanczos'), ts.estimate('gershgorin')
+	steps = ts.lanczosSteps
+	return sc.exactCriticalDt(ids), lanczos, gershgorin, steps
 
 
 def sweep(run):
-	"""Runs at 0.5, 0.9, 1.0, then up by 0.25 to the first unstable fraction, then bisection to 0.01."""
+	"""Runs at 0.5, 0.9, 0.95, 0.99, then up by 0.02 to the first unstable fraction, then bisection to 0.002."""
 	runs = {}
-	for f in (0.5, 0.9, 1.0):
+	for f in (0.5, 0.9, 0.95, 0.99):
 		runs[f] = run(f)
-	f = 1.0
-	while runs[f][1] is None and f < 6:
-		f += 0.25
+	f = 0.99
+	while runs[f][1] is None and f < 3:
+		f = round(f + 0.02, 4)
 		runs[f] = run(f)
-	lo, hi = f - 0.25, f
-	while hi - lo > 0.01 and runs[hi][1] is not None:
+	lo, hi = max(k for k in runs if k < f), f
+	while hi - lo > 0.002 and runs[hi][1] is not None:
 		mid = round((lo + hi) / 2, 4)
 		runs[mid] = run(mid)
 		lo, hi = (mid, hi) if runs[mid][1] is None else (lo, mid)
 	stable = max(k for k, v in runs.items() if v[1] is None)
 	beyond = min((k for k, v in runs.items() if v[1] is not None and k > stable), default=None)
-	return dict(runs={str(k): v for k, v in sorted(runs.items())}, largestStable=stable, firstUnstable=beyond, worstBelow1=max(runs[f][0] for f in (0.5, 0.9, 1.0)))
+	return dict(runs={str(k): v for k, v in sorted(runs.items())}, largestStable=stable, firstUnstable=beyond, worstBelow1=max(runs[f][0] for f in (0.5, 0.9, 0.95, 0.99)))
 
 
 results = {}
 t0 = time.time()
 for name, build in ELASTIC.items():
 	r = sweep(lambda f: elasticRun(build, f))
-	r['linear'], r['minEigRatio'] = linearFraction(build)
+	exact, lanczos, gershgorin, steps = linearFraction(build)
+	r.update(exactLimit=exact, lanczos=lanczos, gershgorin=gershgorin, lanczosSteps=steps, linear=exact / lanczos)
 	results[name] = r
-	print('%-28s worst(<=1) %.2g  stable up to %.2f  unstable at %s (after %s steps)  linear limit %.2f  [%.0f s]' %
-	      (name, r['worstBelow1'], r['largestStable'], r['firstUnstable'], r['runs'].get(str(r['firstUnstable']), [0, None])[1], r['linear'],
-	       time.time() - t0),
+	print('%-28s worst(<1) %.2g  stable up to %.3f  unstable at %s (after %s steps)  Lanczos/exact %.5f (%d steps)  Gershgorin/exact %.3f  [%.0f s]' %
+	      (name, r['worstBelow1'], r['largestStable'], r['firstUnstable'], r['runs'].get(str(r['firstUnstable']), [0, None])[1], lanczos / exact,
+	       steps, gershgorin / exact, time.time() - t0),
 	      flush=True)
 r = sweep(compressionRun)
 results['fast compression 4x4x4, 0.1 m/s'] = r

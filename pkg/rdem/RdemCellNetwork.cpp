@@ -257,4 +257,29 @@ vector<Real> RdemCellNetwork::omega2Bound(Scene* scene)
 	return w2;
 }
 
+void RdemCellNetwork::addStiffness(Scene* scene, bool releaseOnCrack, rdem::BlockStiffness<Real>& K)
+{
+	if (!refresh(scene)) return;
+	updateIntact(scene);
+	// the openings u_n = n·(P₂ - P₁) at the face centres, as updateStrains, linearised: gradients n and r×n
+	vector<size_t> openingOf(bond.size());
+	for (size_t k = 0; k < bond.size(); ++k) {
+		const Bond&    b  = bond[k];
+		const Matrix3r R1 = state[b.i1]->ori.toRotationMatrix(), R2 = state[b.i2]->ori.toRotationMatrix();
+		const Vector3r n = R1 * b.n1;
+		openingOf[k]     = K.addOpening(body[b.i1], body[b.i2], n, (R1 * b.fc1).cross(n), (R2 * b.fc2).cross(n));
+	}
+	for (size_t i = 0; i < body.size(); ++i) {
+		const Real s = releaseOnCrack ? state[i]->cellScale : Real(1);
+		if (!hasCell[i] || !(s > 0)) continue;
+		vector<std::tuple<size_t, int, Real>> terms;
+		for (size_t j = first[i]; j < first[i + 1]; ++j) {
+			const Bond& b = bond[sideBond[j]];
+			terms.emplace_back(openingOf[sideBond[j]], sideSecond[j] ? b.ax2 : b.ax1, sideSecond[j] ? b.c2 : b.c1);
+		}
+		// W = ½ s strainᵀ K strain with strain = C ε (the condensation), so ½ εᵀ (s CᵀKC) ε
+		K.addCell(s * condensation[i].transpose() * stiffness[i] * condensation[i], terms);
+	}
+}
+
 } // namespace yade

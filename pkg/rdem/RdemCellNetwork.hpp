@@ -9,6 +9,7 @@
 #include <core/Interaction.hpp>
 #include <core/Scene.hpp>
 #include <pkg/rdem/RdemState.hpp>
+#include <pkg/rdem/math/StiffnessSpectrum.hpp>
 
 namespace yade {
 
@@ -31,6 +32,9 @@ public:
 	void applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released);
 	/// Per body id, the Gershgorin bound of the squared eigenfrequency the cells add [1/s²] (see the definition).
 	vector<Real> omega2Bound(Scene* scene);
+	/// Adds the cells' linear stiffness ½ s εᵀ CᵀKC ε on the bond openings at the current poses to K (RdemTimeStepper);
+	/// the offset correction of running bond is left out (it acts through the shear springs, of lower stiffness).
+	void addStiffness(Scene* scene, bool releaseOnCrack, rdem::BlockStiffness<Real>& K);
 	/// Number of blocks with a cell.
 	size_t nCells() const { return nCellBlocks; }
 	/// Incremented by RdemPoissonEngine::build: arrays made before it are rebuilt.

@@ -250,6 +250,21 @@ vector<Real> RdemPoissonEngine::omega2Bound()
 	return w2;
 }
 
+void RdemPoissonEngine::addStiffness(rdem::BlockStiffness<Real>& K)
+{
+	scene = Omega::instance().getScene().get();
+	if (nElements() > 0) {
+		const vector<Real> s = elementScales(); // prepares the matrices
+		for (size_t e = 0; e < s.size(); ++e) {
+			std::array<long, 8> n;
+			for (size_t a = 0; a < 8; ++a)
+				n[a] = nodes[8 * e + a];
+			K.addElement(n, &stiffness[stiffnessOf[e]], s[e]);
+		}
+	}
+	cells.addStiffness(scene, releaseOnCrack, K);
+}
+
 int RdemPoissonEngine::nCells() const
 {
 	int    n  = 0;

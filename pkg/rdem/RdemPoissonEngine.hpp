@@ -10,6 +10,7 @@
 #include <core/Interaction.hpp>
 #include <pkg/rdem/RdemCellNetwork.hpp>
 #include <pkg/rdem/math/Hex8.hpp>
+#include <pkg/rdem/math/StiffnessSpectrum.hpp>
 #include <map>
 #include <set>
 
@@ -26,6 +27,9 @@ public:
 	void buildPy(const py::list& ids);
 	/// Per body, an upper bound of the squared eigenfrequency the Poisson forces add (Gershgorin) [1/s²] (RdemTimeStepper).
 	vector<Real> omega2Bound();
+	/// Adds the linear stiffness of the elements (s K_p on their nodes' translations, without the corotational frame's
+	/// rotation) and of the cells to K, for RdemTimeStepper; K points to this engine's matrices until the next build.
+	void addStiffness(rdem::BlockStiffness<Real>& K);
 	/// Number of elements (paper's hexahedra).
 	int nElements() const { return int(nodes.size() / 8); }
 	/// Number of blocks with a Poisson cell.

@@ -4,7 +4,6 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
-#include <pkg/rdem/RdemTimeStepper.hpp>
 #include <core/InteractionLoop.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
@@ -15,11 +14,13 @@
 #include <pkg/rdem/RdemMat.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
 #include <pkg/rdem/RdemPoissonEngine.hpp>
+#include <pkg/rdem/RdemTimeStepper.hpp>
 #include <pkg/rdem/math/ContactBound.hpp>
 #include <pkg/rdem/math/Elasticity.hpp>
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -81,7 +82,7 @@ namespace {
 	}
 }
 
-Real RdemTimeStepper::estimate(Scene* sc) const
+Real RdemTimeStepper::gershgorin(Scene* sc) const
 {
 	vector<Real> omega2(sc->bodies->size(), 0);
 	vector<char> bonded(sc->bodies->size(), 0);
@@ -118,17 +119,145 @@ Real RdemTimeStepper::estimate(Scene* sc) const
 	return w2 > 0 ? 2 / math::sqrt(w2) : std::numeric_limits<Real>::infinity();
 }
 
-Real RdemTimeStepper::estimatePy() const { return estimate(Omega::instance().getScene().get()); }
+namespace {
+	/// The springs of one interaction (its bonded segments and contact samples) as point springs of K [N/m].
+	void addInteraction(rdem::BlockStiffness<Real>& K, const Interaction& I, const RdemGeom& g, const RdemPhys& p, Scene* sc)
+	{
+		const State& s1 = *Body::byId(I.getId1(), sc)->state;
+		const State& s2 = *Body::byId(I.getId2(), sc)->state;
+		const long   b1 = I.getId1(), b2 = I.getId2();
+		if (g.nSegments() == 0 && g.sampleKey.empty()) return;
+		K.beginPair(b1, b2);
+		const Real     kn = p.weightNormal * p.kn, ks = p.weightShear * p.ks; // [N/m³]
+		const Vector3r normal = g.normal.squaredNorm() > 0 ? g.normal : Vector3r(s1.ori * g.segNormal1);
+		const Real     A      = g.segmentArea();
+		for (const Vector3r& p1 : g.segmentPoints1()) {
+			const Vector3r arm1 = s1.ori * p1;
+			K.addPointSpring(b1, b2, arm1, s1.pos + arm1 - s2.pos, normal, kn * A, ks * A);
+		}
+		for (size_t k = 0; k < g.sampleKey.size(); ++k)
+			K.addPointSpring(
+			        b1, b2, g.samplePoint[k] - s1.pos, g.samplePoint[k] - s2.pos, g.sampleNormal[k], kn * g.sampleArea[k], ks * g.sampleArea[k]);
+	}
+
+	/* The contacts a free block without bonds can still make (contactBound, doc/theory.md §6): springs to fixed points at
+	   the trapezoid sample grid of each of its six faces, at its own stiffness per area for its smallest half-extent
+	   (eq. 11). A flush contact with an equal block (springs in series, half as stiff, on half the mass in relative
+	   motion) has the same frequency; with a fixed block, this bound. */
+	void addContactsToCome(rdem::BlockStiffness<Real>& K, const Body& b, const ContactSetup& setup)
+	{
+		const auto* shape = dynamic_cast<const RdemBlock*>(b.shape.get());
+		const auto* mat   = dynamic_cast<const RdemMat*>(b.material.get());
+		if (!shape || !mat) return;
+		const Real      ell = shape->extents.minCoeff();
+		const Real      kn  = rdem::normalStiffnessPerArea(mat->young, mat->poisson, ell, setup.modulus);
+		const Real      ks  = rdem::shearStiffnessPerArea(mat->young, mat->poisson, ell);
+		const Matrix3r  R   = b.state->ori.toRotationMatrix();
+		const Vector3r& h   = shape->extents;
+		for (int face = 0; face < 6; ++face) {
+			const int      k = face / 2, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+			const Vector3r n = (face % 2 ? 1 : -1) * Vector3r::Unit(k);
+			for (const auto& p : rdem::faceSamplePoints<Real>(h[k] * n, Vector3r::Unit(k1), Vector3r::Unit(k2), h[k1], h[k2], setup.samplesPerEdge))
+				K.addPointSpring(b.id, -1, R * p.pos, Vector3r::Zero(), R * n, kn * p.weight, ks * p.weight);
+		}
+	}
+}
+
+void RdemTimeStepper::assemble(Scene* sc, rdem::BlockStiffness<Real>& K, vector<rdem::BodyScale<Real>>& scale) const
+{
+	const size_t nB = sc->bodies->size();
+	vector<char> bonded(nB, 0);
+	for (const auto& I : *sc->interactions) {
+		if (!I->isReal()) continue;
+		const auto* g = dynamic_cast<RdemGeom*>(I->geom.get());
+		const auto* p = dynamic_cast<RdemPhys*>(I->phys.get());
+		if (!g || !p) continue;
+		if (g->nSegments() > 0) bonded[size_t(I->getId1())] = bonded[size_t(I->getId2())] = 1;
+		addInteraction(K, *I, *g, *p, sc);
+	}
+	scale.assign(nB, rdem::BodyScale<Real>());
+	const ContactSetup setup = contactBound ? contactSetup(sc) : ContactSetup();
+	for (const auto& b : *sc->bodies) {
+		if (!b) continue;
+		const State& s       = *b->state;
+		scale[size_t(b->id)] = rdem::bodyScale<Real>(s.mass, s.inertia, s.ori.toRotationMatrix(), unsigned(s.blockedDOFs));
+		if (contactBound && s.blockedDOFs != State::DOF_ALL && !bonded[size_t(b->id)]) addContactsToCome(K, *b, setup);
+	}
+	if (RdemPoissonEngine* poisson = RdemPoissonEngine::of(sc))
+		if (!poisson->dead) poisson->addStiffness(K);
+}
+
+Real RdemTimeStepper::lanczos(Scene* sc)
+{
+	rdem::BlockStiffness<Real>    K(sc->bodies->size());
+	vector<rdem::BodyScale<Real>> scale;
+	assemble(sc, K, scale);
+	const size_t n = 6 * scale.size();
+	vector<char> mask(n, 0);
+	for (size_t b = 0; b < scale.size(); ++b)
+		for (size_t k = 0; k < 6; ++k)
+			mask[6 * b + k] = scale[b].free[k];
+	vector<Real> w(n);
+	auto         apply = [&](const Real* x, Real* y) { // y = P S K S P x
+                w.assign(x, x + n);
+                rdem::scaleDofs(scale, w.data());
+                K.multiply(w.data(), y);
+                rdem::scaleDofs(scale, y);
+	};
+	// warm start mixed with 10 % of a generic vector: a new stiff spot (a contact) far from the old mode is still found
+	const auto est  = rdem::lanczosLargest<Real>(apply, n, mask, ritzVector, 2, lanczosMaxSteps, lanczosTolerance, Real(0.1));
+	lanczosSteps    = est.steps;
+	lanczosResidual = est.ritz > 0 ? est.residual / est.ritz : Real(0);
+	const Real w2   = est.upper();
+	return w2 > 0 ? 2 / math::sqrt(w2) : std::numeric_limits<Real>::infinity();
+}
+
+Real RdemTimeStepper::estimate(Scene* sc) { return method == "gershgorin" ? gershgorin(sc) : lanczos(sc); }
+
+Real RdemTimeStepper::estimatePy(const string& how)
+{
+	if (how.empty()) return estimate(Omega::instance().getScene().get());
+	if (how != "lanczos" && how != "gershgorin") throw std::invalid_argument("method = '" + how + "': must be 'lanczos' or 'gershgorin'");
+	const string saved = method;
+	method             = how;
+	const Real dt      = estimate(Omega::instance().getScene().get());
+	method             = saved;
+	return dt;
+}
 
 void RdemTimeStepper::postLoad(RdemTimeStepper&)
 {
 	if (!(safety > 0 && safety <= 1)) throw std::invalid_argument("RdemTimeStepper.safety = " + std::to_string(safety) + ": must be in (0, 1]");
+	if (method != "lanczos" && method != "gershgorin")
+		throw std::invalid_argument("RdemTimeStepper.method = '" + method + "': must be 'lanczos' or 'gershgorin'");
+	if (!(lanczosTolerance > 0 && lanczosTolerance <= 0.1))
+		throw std::invalid_argument("RdemTimeStepper.lanczosTolerance = " + std::to_string(lanczosTolerance) + ": must be in (0, 0.1]");
+	if (lanczosMaxSteps < 2) throw std::invalid_argument("RdemTimeStepper.lanczosMaxSteps = " + std::to_string(lanczosMaxSteps) + ": must be >= 2");
 }
 
 bool RdemTimeStepper::isActivated()
 {
 	if (timeStepUpdateInterval < 1) throw std::invalid_argument("RdemTimeStepper.timeStepUpdateInterval = 0: must be an integer >= 1 [steps]");
-	return scene->iter % timeStepUpdateInterval == 0 || !(scene->dt > 0 && std::isfinite(scene->dt));
+	return scene->iter % timeStepUpdateInterval == 0 || !(scene->dt > 0 && std::isfinite(scene->dt)) || (!active && scene->dt != checkedDt);
+}
+
+void RdemTimeStepper::checkFixedDt(Scene* sc)
+{
+	const bool firstSeen = sc->dt != checkedDt;
+	checkedDt            = sc->dt;
+	if (!(sc->dt > criticalDt)) return;
+	std::ostringstream msg;
+	msg << "O.dt = " << sc->dt << " s exceeds the critical time step " << criticalDt << " s (2/omega_max, " << method
+	    << " estimate of RdemTimeStepper) of this block assembly: the explicit integration is unstable ";
+	if (firstSeen && method == "lanczos" && refuseUnstableDt) {
+		msg << "and would blow up. Set O.dt <= " << criticalDt
+		    << " s, or O.dt = -1 to let RdemTimeStepper choose (RdemTimeStepper.refuseUnstableDt = False to run anyway).";
+		throw std::invalid_argument(msg.str());
+	}
+	if (warned) return;
+	msg << "or may become so. Use O.dt = -1 to let RdemTimeStepper choose.";
+	LOG_WARN(msg.str());
+	warned = true;
 }
 
 void RdemTimeStepper::computeTimeStep(Scene* sc)
@@ -137,13 +266,13 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 		throw std::invalid_argument(
 		        "O.dt = " + std::to_string(sc->dt) + ": the time step must be finite and > 0 [s] (or O.dt = -1 to let RdemTimeStepper choose it)");
 	criticalDt = estimate(sc);
-	if (!std::isfinite(criticalDt)) return;
-	if (active) sc->dt = safety * criticalDt;
-	else if (sc->dt > criticalDt && !warned) {
-		LOG_WARN("O.dt = " << sc->dt << " s exceeds the estimated critical time step " << criticalDt
-		                   << " s of this block assembly; the explicit integration may be unstable. Use O.dt = -1 to let RdemTimeStepper choose.");
-		warned = true;
+	if (!std::isfinite(criticalDt)) { // nothing elastic yet: nothing to check a fixed O.dt against
+		checkedDt = sc->dt;
+		return;
 	}
+	if (active) sc->dt = safety * criticalDt;
+	else
+		checkFixedDt(sc);
 }
 
 } // namespace yade

@@ -7,37 +7,60 @@
 #pragma once
 
 #include <core/TimeStepper.hpp>
+#include <pkg/rdem/math/StiffnessSpectrum.hpp>
 
 namespace yade {
 
-/// Critical time step of block assemblies from block masses, inertias, all spring and Poisson stiffnesses.
+/// Critical time step of block assemblies from block masses, inertias, all spring and Poisson stiffnesses: the largest
+/// eigenvalue of the mass-normalised stiffness by Lanczos iterations (default) or its Gershgorin bound.
 class RdemTimeStepper : public TimeStepper {
 public:
 	void computeTimeStep(Scene*) override;
 	/// Every timeStepUpdateInterval steps, and every step while O.dt is not a positive number (computeTimeStep refuses it).
 	/// Throws std::invalid_argument (Python: ValueError) for timeStepUpdateInterval = 0.
 	bool isActivated() override;
-	/// Throws std::invalid_argument (Python: ValueError) for safety outside (0, 1].
+	/// Throws std::invalid_argument (Python: ValueError) for safety outside (0, 1], an unknown method or bad Lanczos settings.
 	void postLoad(RdemTimeStepper&);
-	/// The estimate itself, 2/ω_max [s] (no safety factor); inf if nothing is elastic yet.
-	Real estimate(Scene* scene) const;
-	Real estimatePy() const;
+	/// The estimate itself, 2/ω_max [s] (no safety factor), by ``method``; inf if nothing is elastic yet.
+	Real estimate(Scene* scene);
+	/// Python: the estimate by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``).
+	Real estimatePy(const string& method);
+	/// The linear stiffness of the scene (springs, contact samples, contacts that can still form, Poisson elements and
+	/// cells) and each body's mass normalisation.
+	void assemble(Scene* scene, rdem::BlockStiffness<Real>& K, vector<rdem::BodyScale<Real>>& scale) const;
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemTimeStepper,TimeStepper,R"""(Time step for the refined DEM with the Poisson effect: ``O.dt = safety·Δt_crit``.
 
-YADE's :yref:`PWaveTimeStep<yade.utils.PWaveTimeStep>` ignores boxes and :yref:`GlobalStiffnessTimeStepper` assumes sphere contacts, so this stepper bounds the highest eigenfrequency of the assembly with Gershgorin's theorem on the mass-normalised stiffness: for every free block $b$, $\omega_b^2=\sum_i 2\left(k_{t,i}/m_b + k_{r,i}/I_{min,b}\right)+P_b/m_b$, summed over the springs $i$ of its segments and contact samples, $k_{t}=\max(\bar{k}_n,\bar{k}_s)A$, $k_{r}=A(\bar{k}_n|\mathbf{r}\times\mathbf{n}|^2+\bar{k}_s(|\mathbf{r}|^2+(\mathbf{r}\cdot\mathbf{n})^2))$ with $\mathbf{r}$ the arm from the centroid, and $P_b$ the Poisson row-sum bound of :yref:`RdemPoissonEngine`; $\Delta t_{crit}=2/\max_b\omega_b$ (central differences). The bound is conservative; doc/stability.md reports the measured stability limit as a fraction of it.
+YADE's :yref:`PWaveTimeStep<yade.utils.PWaveTimeStep>` ignores boxes and :yref:`GlobalStiffnessTimeStepper` assumes sphere contacts, so this stepper finds the highest eigenfrequency $\omega_{max}$ of the assembly itself; $\Delta t_{crit}=2/\omega_{max}$ (central differences).
 
-When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the user), it only warns once if ``O.dt`` exceeds the estimate (and sets ``warned``), and it stops the run with ``ValueError`` if ``O.dt`` is zero or not finite.)""",
+*Lanczos* (``method='lanczos'``, the default): $\omega_{max}^2=\lambda_{max}$ of $A=PSKSP$, $K$ the linear stiffness of the current configuration (every segment spring of a bond, every contact sample, the contacts blocks can still make with ``contactBound``, the Poisson elements and cells, without the geometric stiffness), $S$ the inverse square root of each block's mass and rotated inertia, $P$ its free DOFs; by Lanczos iterations with full reorthogonalisation, warm-started from the last estimate's Ritz vector, until the residual of the largest Ritz value $\theta$ is below ``lanczosTolerance``·$\theta$; $\lambda_{max}\approx\theta+r$ [Parlett1998]_ [ZhouLi2011]_. Measured against the exact limit (doc/stability.md): within 0.1 % of it, below it. The default ``safety`` 0.8 is then what keeps a step stable when contacts form or dashpots act (doc/stability.md).
+
+*Gershgorin* (``method='gershgorin'``, the fallback, 2.2–2.7 times below the limit): for every free block $b$, $\omega_b^2=\sum_i 2\left(k_{t,i}/m_b + k_{r,i}/I_{min,b}\right)+P_b/m_b$, summed over the springs $i$ of its segments and contact samples, $k_{t}=\max(\bar{k}_n,\bar{k}_s)A$, $k_{r}=A(\bar{k}_n|\mathbf{r}\times\mathbf{n}|^2+\bar{k}_s(|\mathbf{r}|^2+(\mathbf{r}\cdot\mathbf{n})^2))$ with $\mathbf{r}$ the arm from the centroid, and $P_b$ the Poisson row-sum bound of :yref:`RdemPoissonEngine`; $\omega_{max}\le\max_b\omega_b$.
+
+When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the user), a fixed ``O.dt`` above the Lanczos estimate is refused with ``ValueError`` naming ``O.dt`` and the limit when it is first seen (at the first step, or when it was changed), unless ``refuseUnstableDt`` is false; if the limit falls below it later (contacts), or with the Gershgorin method, it warns once (and sets ``warned``). ``O.dt`` zero or not finite stops the run with ``ValueError``.)""",
 		((Real,safety,0.8,Attr::triggerPostLoad,"Fraction of the critical step used for ``O.dt``."))
+		((string,method,"lanczos",Attr::triggerPostLoad,"How $\\omega_{max}$ is found: ``'lanczos'`` (default: tight, see above) or ``'gershgorin'`` (a bound 2.2–2.7 times too high, one pass over the springs)."))
+		((Real,lanczosTolerance,1e-3,Attr::triggerPostLoad,"Lanczos iterations stop when the residual of the largest Ritz value is below this fraction of it, in (0, 0.1]."))
+		((int,lanczosMaxSteps,60,Attr::triggerPostLoad,"Most Lanczos steps per estimate, >= 2 (the estimate is then $\\theta+r$ whatever $r$ is)."))
+		((bool,refuseUnstableDt,true,,"Refuse a fixed ``O.dt`` above the Lanczos estimate when it is first seen (``ValueError``); false: only warn (to measure instability on purpose)."))
+		((int,lanczosSteps,0,(Attr::readonly|Attr::noSave),"Lanczos steps of the last estimate."))
+		((Real,lanczosResidual,0,(Attr::readonly|Attr::noSave),"Residual $r/\\theta$ of the last Lanczos estimate."))
+		((vector<Real>,ritzVector,,(Attr::hidden|Attr::readonly),"The last estimate's Ritz vector, 6 values per body (saved: the next estimate starts from it, also after ``O.load``)."))
+		((Real,checkedDt,0,(Attr::hidden|Attr::readonly|Attr::noSave),"The fixed ``O.dt`` last checked against the limit [s]."))
 		((bool,contactBound,false,,"Also allow for the contacts that blocks can still make (scenes with a collider, ``rdem.engines(recontact=True)``): every free block that carries no bond gets the terms of a flush contact on each of its six faces, at its own stiffness per area (doc/theory.md §6). Without it the step follows only the contacts that exist: none for a falling block, and a step set while a corner touches is unstable once a face lands."))
 		((Real,criticalDt,0,Attr::readonly,"Last estimate of the critical time step, without the safety factor [s]."))
 		((bool,warned,false,(Attr::readonly|Attr::noSave),"Whether the too-large ``O.dt`` warning was printed (once per engine)."))
 		,
 		/* ctor */,
-		.def("estimate",&RdemTimeStepper::estimatePy,"Critical time step of the current scene [s], without the safety factor.")
+		.def("estimate",&RdemTimeStepper::estimatePy,(py::arg("method")=""),"Critical time step of the current scene [s], without the safety factor, by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``).")
 	);
 	// clang-format on
 	DECLARE_LOGGER;
+
+private:
+	Real gershgorin(Scene* scene) const;
+	Real lanczos(Scene* scene);
+	void checkFixedDt(Scene* scene);
 };
 REGISTER_SERIALIZABLE(RdemTimeStepper);
 

@@ -1,0 +1,311 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+/* The largest eigenvalue of the mass-normalised linear stiffness A = P S K S P of a block assembly (doc/theory.md §6),
+   for the critical time step 2/√λ_max of central differences (leapfrog). Plain arrays, Eigen only.
+
+   Degrees of freedom: 6 per body, x = (u, θ) in global axes: translation u [m] and small rotation θ [rad] about the
+   centroid. K [N/m, N, N·m/rad] is the tangent stiffness of the springs and Poisson terms at the current configuration
+   without the geometric (stress) terms; S = diag(m^-½ I₃, R diag(I)^-½ Rᵀ) per body (m [kg], I the principal inertia
+   [kg·m²] in body axes, R the body's rotation); P zeroes blocked DOFs. A [1/s²] is symmetric positive semi-definite.
+
+   Sources of the parts:
+   * a point spring of normal and shear stiffness k_n, k_s [N/m] between material points of two blocks (eq. 11-13 of the
+     paper times the area): energy ½dᵀK_s d, K_s = k_n nnᵀ + k_s(I - nnᵀ), d = (u₂ + θ₂×r₂) - (u₁ + θ₁×r₁), r the arms;
+   * a Poisson element (paper eq. 18-21): ½ s uᵀK_p u on the translations of its 8 nodes;
+   * a Poisson cell (doc/theory.md §5.4): ½ εᵀK_c ε, ε_d = Σ_q c_q u_n,q, u_n = n·(u₂ + θ₂×r₂ - u₁ - θ₁×r₁) the opening
+     of bond q at its face centre;
+   * λ_max by the Lanczos method with full reorthogonalisation (Parlett 1998, ch. 13; Golub and Van Loan 2013, §10.1),
+     reported as the largest Ritz value θ plus its residual norm β_k|s_k| (an eigenvalue lies within it of θ:
+     Parlett 1998, Thm 4.5.1; the same a-posteriori upper estimate as Zhou and Li 2011). */
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace yade {
+namespace rdem {
+
+	/// Mass normalisation of one body (see the header): s_m = m^-½ [kg^-½], S_r = R diag(I)^-½ Rᵀ [kg^-½ m^-1], and which
+	/// of its 6 global DOFs (x, y, z, rx, ry, rz) are free.
+	template <class S> struct BodyScale {
+		S                      invSqrtMass    = 0;
+		Eigen::Matrix<S, 3, 3> invSqrtInertia = Eigen::Matrix<S, 3, 3>::Zero();
+		std::array<bool, 6>    free {};
+	};
+
+	/// The mass normalisation of a body of mass m, principal inertia I (body axes), rotation R; blocked DOFs from YADE's
+	/// bit mask (bit k: DOF k of x, y, z, rx, ry, rz blocked). A body without mass or inertia counts as fixed.
+	template <class S> BodyScale<S> bodyScale(S m, const Eigen::Matrix<S, 3, 1>& I, const Eigen::Matrix<S, 3, 3>& R, unsigned blocked)
+	{
+		BodyScale<S> b;
+		if (!(m > 0) || !(I.minCoeff() > 0)) return b;
+		b.invSqrtMass    = 1 / std::sqrt(m);
+		b.invSqrtInertia = R * I.cwiseSqrt().cwiseInverse().asDiagonal() * R.transpose();
+		for (unsigned k = 0; k < 6; ++k)
+			b.free[k] = !(blocked & (1u << k));
+		return b;
+	}
+
+	/// The linear stiffness K of an assembly as 6×6 blocks: one diagonal block per body, one off-diagonal block per pair
+	/// of bodies joined by springs, plus Poisson elements and cells kept in their own factorised form.
+	template <class S> class BlockStiffness {
+	public:
+		using V3   = Eigen::Matrix<S, 3, 1>;
+		using M3   = Eigen::Matrix<S, 3, 3>;
+		using M6   = Eigen::Matrix<S, 6, 6>;
+		using M24  = Eigen::Matrix<S, 24, 24>;
+		using Link = std::pair<long, long>;
+
+		explicit BlockStiffness(size_t nBodies)
+		        : diag(nBodies, M6::Zero())
+		{
+		}
+
+		size_t nBodies() const { return diag.size(); }
+
+		/// Opens the pair (b1, b2) for addPointSpring (b1 ≠ b2, both ≥ 0); springs to a fixed point need none.
+		void beginPair(long b1, long b2)
+		{
+			pairs.push_back({ b1, b2 });
+			offDiag.push_back(M6::Zero());
+		}
+
+		/// A point spring between body b1 (arm r1 from its centroid) and body b2 (arm r2) [m], unit normal n, stiffnesses
+		/// k_n, k_s [N/m]; b2 < 0: a spring to a fixed point. Adds to the pair opened last by beginPair when b2 ≥ 0.
+		void addPointSpring(long b1, long b2, const V3& r1, const V3& r2, const V3& n, S kn, S ks)
+		{
+			const M3 Ks = kn * n * n.transpose() + ks * (M3::Identity() - n * n.transpose());
+			diag[size_t(b1)] += jtkj(Ks, r1, r1);
+			if (b2 < 0) return;
+			diag[size_t(b2)] += jtkj(Ks, r2, r2);
+			offDiag.back() -= jtkj(Ks, r1, r2);
+		}
+
+		/// A Poisson element: ½ s uᵀK u on the translations of its 8 nodes (body ids; K [N/m], not copied: it must outlive this).
+		void addElement(const std::array<long, 8>& nodes, const M24* K, S s)
+		{
+			if (s > 0) elements.push_back({ nodes, K, s });
+		}
+
+		/// A bond opening u_n = n·(u₂ - u₁) + a₂·θ₂ - a₁·θ₁ (a = r×n [m]) for addCell; returns its index.
+		size_t addOpening(long b1, long b2, const V3& n, const V3& a1, const V3& a2)
+		{
+			openings.push_back({ b1, b2, n, a1, a2 });
+			return openings.size() - 1;
+		}
+
+		/// A Poisson cell: ½ εᵀK ε [J] (K [N·m]), ε_d = Σ c u_n over its terms (opening index, axis d, c [1/m]).
+		void addCell(const M3& K, const std::vector<std::tuple<size_t, int, S>>& terms) { cells.push_back({ K, terms }); }
+
+		/// y = K x (6 values per body) [N, N·m]; x and y of size 6·nBodies, y overwritten.
+		void multiply(const S* x, S* y) const
+		{
+			using V6   = Eigen::Matrix<S, 6, 1>;
+			using MV6  = Eigen::Map<V6>;
+			using CMV6 = Eigen::Map<const V6>;
+			for (size_t b = 0; b < diag.size(); ++b)
+				MV6(y + 6 * b) = diag[b] * CMV6(x + 6 * b);
+			for (size_t p = 0; p < pairs.size(); ++p) {
+				const size_t i = size_t(pairs[p].first), j = size_t(pairs[p].second);
+				MV6(y + 6 * i) += offDiag[p] * CMV6(x + 6 * j);
+				MV6(y + 6 * j) += offDiag[p].transpose() * CMV6(x + 6 * i);
+			}
+			for (const auto& e : elements) {
+				Eigen::Matrix<S, 24, 1> u;
+				for (size_t a = 0; a < 8; ++a)
+					u.template segment<3>(3 * long(a)) = Eigen::Map<const V3>(x + 6 * e.nodes[a]);
+				const Eigen::Matrix<S, 24, 1> f = e.s * (*e.K * u);
+				for (size_t a = 0; a < 8; ++a)
+					Eigen::Map<V3>(y + 6 * e.nodes[a]) += f.template segment<3>(3 * long(a));
+			}
+			std::vector<S> un(openings.size());
+			for (size_t q = 0; q < openings.size(); ++q)
+				un[q] = openingOf(openings[q], x);
+			for (const auto& c : cells) {
+				V3 eps = V3::Zero();
+				for (const auto& t : c.terms)
+					eps[std::get<1>(t)] += std::get<2>(t) * un[std::get<0>(t)];
+				const V3 sigma = c.K * eps;
+				for (const auto& t : c.terms)
+					addOpeningForce(openings[std::get<0>(t)], std::get<2>(t) * sigma[std::get<1>(t)], y);
+			}
+		}
+
+		/// K as a dense matrix (for tests on small systems).
+		Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> dense() const
+		{
+			const long                                       n = long(6 * diag.size());
+			Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> K(n, n);
+			Eigen::Matrix<S, Eigen::Dynamic, 1>              e = Eigen::Matrix<S, Eigen::Dynamic, 1>::Zero(n);
+			for (long k = 0; k < n; ++k) {
+				e.setZero();
+				e[k] = 1;
+				multiply(e.data(), K.col(k).data());
+			}
+			return K;
+		}
+
+	private:
+		struct Element {
+			std::array<long, 8> nodes;
+			const M24*          K;
+			S                   s;
+		};
+		struct Opening {
+			long b1, b2;
+			V3   n, a1, a2;
+		};
+		struct Cell {
+			M3                                      K;
+			std::vector<std::tuple<size_t, int, S>> terms;
+		};
+		std::vector<M6>      diag;
+		std::vector<Link>    pairs;
+		std::vector<M6>      offDiag;
+		std::vector<Element> elements;
+		std::vector<Opening> openings;
+		std::vector<Cell>    cells;
+
+		/// J_aᵀ K_s J_b, J = [I, -[r]×] the map from a body's (u, θ) to the displacement of the material point at arm r.
+		static M6 jtkj(const M3& Ks, const V3& ra, const V3& rb)
+		{
+			const M3 Ra = cross(ra), Rb = cross(rb);
+			M6       out;
+			out.template topLeftCorner<3, 3>()     = Ks;
+			out.template topRightCorner<3, 3>()    = -Ks * Rb;
+			out.template bottomLeftCorner<3, 3>()  = Ra * Ks; // -[r_a]×ᵀ = [r_a]×
+			out.template bottomRightCorner<3, 3>() = -Ra * Ks * Rb;
+			return out;
+		}
+		static M3 cross(const V3& r)
+		{
+			M3 R;
+			R << 0, -r[2], r[1], r[2], 0, -r[0], -r[1], r[0], 0;
+			return R;
+		}
+		static S openingOf(const Opening& o, const S* x)
+		{
+			using CV3 = Eigen::Map<const V3>;
+			return o.n.dot(CV3(x + 6 * o.b2) - CV3(x + 6 * o.b1)) + o.a2.dot(CV3(x + 6 * o.b2 + 3)) - o.a1.dot(CV3(x + 6 * o.b1 + 3));
+		}
+		/// Adds the generalised forces of a normal force F along the opening's gradient (∂u_n/∂x · F) to y.
+		static void addOpeningForce(const Opening& o, S F, S* y)
+		{
+			using MV3 = Eigen::Map<V3>;
+			MV3(y + 6 * o.b2) += F * o.n;
+			MV3(y + 6 * o.b2 + 3) += F * o.a2;
+			MV3(y + 6 * o.b1) -= F * o.n;
+			MV3(y + 6 * o.b1 + 3) -= F * o.a1;
+		}
+	};
+
+	/// x ← P S x per body (BodyScale): the mass normalisation, applied before and after K so that A = PSKSP [kg^-½].
+	template <class S> void scaleDofs(const std::vector<BodyScale<S>>& scale, S* x)
+	{
+		using V3 = Eigen::Matrix<S, 3, 1>;
+		for (size_t b = 0; b < scale.size(); ++b) {
+			const BodyScale<S>& s = scale[b];
+			V3                  u, t;
+			for (int k = 0; k < 3; ++k) {
+				u[k] = s.free[size_t(k)] ? x[6 * b + size_t(k)] : S(0);
+				t[k] = s.free[size_t(k) + 3] ? x[6 * b + 3 + size_t(k)] : S(0);
+			}
+			t = s.invSqrtInertia * t;
+			for (int k = 0; k < 3; ++k) {
+				x[6 * b + size_t(k)]     = s.free[size_t(k)] ? s.invSqrtMass * u[k] : S(0);
+				x[6 * b + 3 + size_t(k)] = s.free[size_t(k) + 3] ? t[k] : S(0);
+			}
+		}
+	}
+
+	/// Result of lanczosLargest: the largest Ritz value θ [1/s²], its residual norm r (an eigenvalue of A lies in
+	/// [θ - r, θ + r]), and the Lanczos steps taken.
+	template <class S> struct LargestEigenvalue {
+		S   ritz     = 0;
+		S   residual = 0;
+		int steps    = 0;
+		/// θ + r, the estimate of λ_max used for the time step [1/s²].
+		S upper() const { return ritz + residual; }
+	};
+
+	/// A deterministic start component in [-1, 1) for index i (splitmix64 hash): a generic vector with a component along
+	/// every eigenvector, the same in every run.
+	inline double startComponent(uint64_t i)
+	{
+		uint64_t z = (i + 1) * 0x9E3779B97F4A7C15ull;
+		z          = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+		z          = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+		z ^= z >> 31;
+		return double(z >> 11) / double(1ull << 52) - 1;
+	}
+
+	/* The largest eigenvalue of a symmetric positive semi-definite operator apply(x, y): y = A x on vectors of size n.
+	   start: the warm start (the Ritz vector of an earlier call; empty or of another size: none), mixed with the generic
+	   vector startComponent scaled to `mix` of its norm, so that modes absent from the old vector (a new contact) are
+	   found too; on return it holds the new Ritz vector (unit). Iterates until r ≤ tol·θ after at least minSteps, at
+	   most maxSteps (and n) steps. mask: per index, whether it is a free DOF (the start vector is zero elsewhere). */
+	template <class S, class Apply>
+	LargestEigenvalue<S>
+	lanczosLargest(Apply&& apply, size_t n, const std::vector<char>& mask, std::vector<S>& start, int minSteps, int maxSteps, S tol, S mix)
+	{
+		using Vec = Eigen::Matrix<S, Eigen::Dynamic, 1>;
+		LargestEigenvalue<S> res;
+		Vec                  v = Vec::Zero(long(n)), g = Vec::Zero(long(n));
+		const bool           warm = start.size() == n && Eigen::Map<const Vec>(start.data(), long(n)).allFinite();
+		for (size_t i = 0; i < n; ++i)
+			if (mask[i]) g[long(i)] = S(startComponent(i));
+		if (g.norm() == 0) return res; // no free DOF
+		g /= g.norm();
+		if (warm) {
+			for (size_t i = 0; i < n; ++i)
+				v[long(i)] = mask[i] ? start[i] : S(0);
+			const S nv = v.norm();
+			v          = nv > 0 ? Vec(v / nv + mix * g) : g;
+		} else
+			v = g;
+		v /= v.norm();
+		const int                                        kMax = int(std::min<size_t>(size_t(std::max(maxSteps, 1)), n));
+		Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> Q(long(n), kMax);
+		std::vector<S>                                   alpha, beta; // the tridiagonal T_k
+		Vec                                              w = Vec::Zero(long(n)), ritzVec;
+		for (int k = 0; k < kMax; ++k) {
+			Q.col(k) = v;
+			apply(v.data(), w.data());
+			alpha.push_back(v.dot(w));
+			// full reorthogonalisation, twice (Giraud et al.'s "twice is enough"), against round-off ghosts
+			for (int pass = 0; pass < 2; ++pass)
+				w -= Q.leftCols(k + 1) * (Q.leftCols(k + 1).transpose() * w);
+			const S b = w.norm();
+			// Ritz values of T_k
+			Eigen::Matrix<S, Eigen::Dynamic, 1> d = Eigen::Map<Eigen::Matrix<S, Eigen::Dynamic, 1>>(alpha.data(), k + 1);
+			Eigen::Matrix<S, Eigen::Dynamic, 1> e(std::max(k, 1));
+			for (int i = 0; i < k; ++i)
+				e[i] = beta[size_t(i)];
+			Eigen::SelfAdjointEigenSolver<Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>> eig;
+			eig.computeFromTridiagonal(d, e.head(k), Eigen::ComputeEigenvectors);
+			const long top       = k; // eigenvalues ascending
+			res.ritz             = eig.eigenvalues()[top];
+			res.residual         = b * std::abs(eig.eigenvectors()(k, top));
+			res.steps            = k + 1;
+			ritzVec              = Q.leftCols(k + 1) * eig.eigenvectors().col(top);
+			const bool converged = res.residual <= tol * res.ritz && k + 1 >= minSteps;
+			if (converged || b <= S(1e-14) * std::max(res.ritz, S(1e-300))) break; // converged, or an invariant subspace
+			beta.push_back(b);
+			v = w / b;
+		}
+		start.assign(ritzVec.data(), ritzVec.data() + n);
+		return res;
+	}
+
+} // namespace rdem
+} // namespace yade
