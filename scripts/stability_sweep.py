@@ -42,6 +42,9 @@ parser.add_argument('--steps', type=int, default=20000, help='steps per elastic 
 parser.add_argument('--tol', type=float, default=1e-3, help='largest shadow-energy error of a stable run (default 1e-3)')
 parser.add_argument('--out', default='output/stability', help='folder of sweep.json and sweep.md')
 parser.add_argument('--guard-cost', action='store_true', help="time RdemFiniteGuard on the paper's 1200-block scene")
+parser.add_argument('--no-elastic', action='store_true', help='skip the elastic cases and the fast compression (with --contact or --guard-cost)')
+parser.add_argument('--contact', action='store_true', help='also run the contact tests (cracked column, fast oblique impact, oblique drop) '
+                    'with the automatic step at safety 0.8, 0.9 and 1.0')
 cli = parser.parse_args(sys.argv[1:])  # not "opts": scripts share the launcher's globals, which has its own opts
 
 ELASTIC = {
@@ -125,20 +128,52 @@ def sweep(run):
 
 results = {}
 t0 = time.time()
-for name, build in ELASTIC.items():
-	r = sweep(lambda f: elasticRun(build, f))
-	exact, lanczos, gershgorin, steps = linearFraction(build)
-	r.update(exactLimit=exact, lanczos=lanczos, gershgorin=gershgorin, lanczosSteps=steps, linear=exact / lanczos)
-	results[name] = r
-	print('%-28s worst(<1) %.2g  stable up to %.3f  unstable at %s (after %s steps)  Lanczos/exact %.5f (%d steps)  Gershgorin/exact %.3f  [%.0f s]' %
-	      (name, r['worstBelow1'], r['largestStable'], r['firstUnstable'], r['runs'].get(str(r['firstUnstable']), [0, None])[1], lanczos / exact,
-	       steps, gershgorin / exact, time.time() - t0),
+if not cli.no_elastic:
+	for name, build in ELASTIC.items():
+		r = sweep(lambda f: elasticRun(build, f))
+		exact, lanczos, gershgorin, steps = linearFraction(build)
+		r.update(exactLimit=exact, lanczos=lanczos, gershgorin=gershgorin, lanczosSteps=steps, linear=exact / lanczos)
+		results[name] = r
+		print('%-28s worst(<1) %.2g  stable up to %.3f  unstable at %s (after %s steps)  Lanczos/exact %.5f (%d steps)  Gershgorin/exact %.3f  [%.0f s]' %
+		      (name, r['worstBelow1'], r['largestStable'], r['firstUnstable'], r['runs'].get(str(r['firstUnstable']), [0, None])[1], lanczos / exact,
+		       steps, gershgorin / exact, time.time() - t0),
+		      flush=True)
+	r = sweep(compressionRun)
+	results['fast compression 4x4x4, 0.1 m/s'] = r
+	print('%-28s worst(<1) %.2g  stable up to %.3f  unstable at %s (at step %s)' %
+	      ('fast compression', r['worstBelow1'], r['largestStable'], r['firstUnstable'], r['runs'].get(str(r['firstUnstable']), [0, None])[1]),
 	      flush=True)
-r = sweep(compressionRun)
-results['fast compression 4x4x4, 0.1 m/s'] = r
-print('%-28s worst(<=1) %.2g  stable up to %.2f  unstable at %s (at step %s)' %
-      ('fast compression', r['worstBelow1'], r['largestStable'], r['firstUnstable'], r['runs'].get(str(r['firstUnstable']), [0, None])[1]),
-      flush=True)
+
+
+def contactRuns():
+	"""The contact cases of tests/yade/test_stability_contact.py and test_contact.py (their own checks: energy growth,
+	penetration, rest) with rdem.engines(safety=s): (passed, what the test printed) per case and safety."""
+	import contextlib
+	import io
+	import unittest
+	import test_contact
+	import test_stability_contact
+	cases = [(test_stability_contact.StabilityContact, 'testCrackedColumnCollapses'), (test_stability_contact.StabilityContact, 'testFastObliqueImpact'),
+	         (test_contact.Contact, 'testObliqueDropComesToRest')]
+	engines, out = rdem.engines, {}
+	try:
+		for safety in (0.8, 0.9, 1.0):
+			rdem.engines = lambda *a, **k: engines(*a, **dict(k, safety=safety))
+			for cls, name in cases:
+				text, result = io.StringIO(), unittest.TestResult()
+				with contextlib.redirect_stdout(text):
+					cls(name).run(result)
+				ok = result.wasSuccessful()
+				out['%s at %.1f' % (name, safety)] = dict(passed=ok, printed=text.getvalue().strip(), failures=[f[1][-400:] for f in result.failures + result.errors])
+				print('%-28s safety %.1f: %s  %s' % (name, safety, 'passed' if ok else 'FAILED', text.getvalue().strip()), flush=True)
+	finally:
+		rdem.engines = engines
+	return out
+
+
+if cli.contact:
+	sys.path.insert(0, os.path.join(ROOT, 'tests', 'yade'))
+	results['contact'] = contactRuns()
 
 if cli.guard_cost:
 	O.reset()

@@ -37,15 +37,18 @@ YADE's :yref:`PWaveTimeStep<yade.utils.PWaveTimeStep>` ignores boxes and :yref:`
 
 *Gershgorin* (``method='gershgorin'``, the fallback, 2.2–2.7 times below the limit): for every free block $b$, $\omega_b^2=\sum_i 2\left(k_{t,i}/m_b + k_{r,i}/I_{min,b}\right)+P_b/m_b$, summed over the springs $i$ of its segments and contact samples, $k_{t}=\max(\bar{k}_n,\bar{k}_s)A$, $k_{r}=A(\bar{k}_n|\mathbf{r}\times\mathbf{n}|^2+\bar{k}_s(|\mathbf{r}|^2+(\mathbf{r}\cdot\mathbf{n})^2))$ with $\mathbf{r}$ the arm from the centroid, and $P_b$ the Poisson row-sum bound of :yref:`RdemPoissonEngine`; $\omega_{max}\le\max_b\omega_b$.
 
-When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the user), a fixed ``O.dt`` above the Lanczos estimate is refused with ``ValueError`` naming ``O.dt`` and the limit when it is first seen (at the first step, or when it was changed), unless ``refuseUnstableDt`` is false; if the limit falls below it later (contacts), or with the Gershgorin method, it warns once (and sets ``warned``). ``O.dt`` zero or not finite stops the run with ``ValueError``.)""",
+When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the user), a fixed ``O.dt`` above the Lanczos estimate is refused when it is first seen (at the first step, or when it was changed): the step stops before the integrator moves anything and ``O.run`` raises ``RuntimeError`` with a message naming ``O.dt`` and the limit, unless ``refuseUnstableDt`` is false; if the limit falls below it later (contacts), or with the Gershgorin method, it warns once (and sets ``warned``). ``O.dt`` zero or not finite stops the run the same way.)""",
 		((Real,safety,0.8,Attr::triggerPostLoad,"Fraction of the critical step used for ``O.dt``."))
 		((string,method,"lanczos",Attr::triggerPostLoad,"How $\\omega_{max}$ is found: ``'lanczos'`` (default: tight, see above) or ``'gershgorin'`` (a bound 2.2–2.7 times too high, one pass over the springs)."))
 		((Real,lanczosTolerance,1e-3,Attr::triggerPostLoad,"Lanczos iterations stop when the residual of the largest Ritz value is below this fraction of it, in (0, 0.1]."))
 		((int,lanczosMaxSteps,60,Attr::triggerPostLoad,"Most Lanczos steps per estimate, >= 2 (the estimate is then $\\theta+r$ whatever $r$ is)."))
-		((bool,refuseUnstableDt,true,,"Refuse a fixed ``O.dt`` above the Lanczos estimate when it is first seen (``ValueError``); false: only warn (to measure instability on purpose)."))
+		((bool,reuseUnchanged,true,,"Keep the last Lanczos estimate while the springs are unchanged (the same bodies, interactions, bonded segments, contact samples, stiffnesses, broken springs, blocked DOFs and masses), at most 99 updates in a row: a bonded assembly before it cracks then costs one estimate per 10 000 steps (``timeStepUpdateInterval`` 100)."))
+		((bool,refuseUnstableDt,true,,"Refuse a fixed ``O.dt`` above the Lanczos estimate when it is first seen (see above); false: only warn (to measure instability on purpose)."))
 		((int,lanczosSteps,0,(Attr::readonly|Attr::noSave),"Lanczos steps of the last estimate."))
 		((Real,lanczosResidual,0,(Attr::readonly|Attr::noSave),"Residual $r/\\theta$ of the last Lanczos estimate."))
 		((vector<Real>,ritzVector,,(Attr::hidden|Attr::readonly),"The last estimate's Ritz vector, 6 values per body (saved: the next estimate starts from it, also after ``O.load``)."))
+		((vector<Real>,lastSignature,,(Attr::hidden|Attr::readonly),"What the springs were at the last Lanczos estimate (reuseUnchanged; saved, so that a reloaded run takes the same decisions)."))
+		((int,reused,0,(Attr::hidden|Attr::readonly),"Updates that kept the last Lanczos estimate since it was made."))
 		((Real,checkedDt,0,(Attr::hidden|Attr::readonly|Attr::noSave),"The fixed ``O.dt`` last checked against the limit [s]."))
 		((bool,contactBound,false,,"Also allow for the contacts that blocks can still make (scenes with a collider, ``rdem.engines(recontact=True)``): every free block that carries no bond gets the terms of a flush contact on each of its six faces, at its own stiffness per area (doc/theory.md §6). Without it the step follows only the contacts that exist: none for a falling block, and a step set while a corner touches is unstable once a face lands."))
 		((Real,criticalDt,0,Attr::readonly,"Last estimate of the critical time step, without the safety factor [s]."))
@@ -61,6 +64,8 @@ private:
 	Real gershgorin(Scene* scene) const;
 	Real lanczos(Scene* scene);
 	void checkFixedDt(Scene* scene);
+	/// What K depends on besides the poses (reuseUnchanged).
+	vector<Real> springSignature(Scene* scene) const;
 };
 REGISTER_SERIALIZABLE(RdemTimeStepper);
 

@@ -3,6 +3,7 @@
 runs are stable just below it and blow up just above it, and a fixed O.dt above it is refused before the first step.
 Figures: doc/stability.md (scripts/stability_sweep.py)."""
 import math
+import re
 import unittest
 import harness
 from yade import O
@@ -70,20 +71,24 @@ class TimeStep(unittest.TestCase):
 		limit = rdem.timeStepper().estimate()
 		O.dt = 13 * rdem.timeStepper().estimate('gershgorin')
 		pos = O.bodies[test.specimen[0]].state.pos
-		with self.assertRaisesRegex(ValueError, r'O\.dt = %.5g s exceeds the critical time step %.5g s' % (O.dt, limit)):
+		with self.assertRaises(RuntimeError) as refused:  # O.run turns the stepper's ValueError into RuntimeError
 			O.run(1, True)
+		print(refused.exception)
+		named = re.search(r'O\.dt = (\S+) s exceeds the critical time step (\S+) s', str(refused.exception))
+		self.assertAlmostEqual(float(named.group(1)) / O.dt, 1, delta=1e-5)  # printed to 6 digits
+		self.assertAlmostEqual(float(named.group(2)) / limit, 1, delta=1e-3)  # the same estimate within its tolerance
 		self.assertEqual(O.iter, 0)
 		self.assertEqual(O.bodies[test.specimen[0]].state.pos, pos)
 		# just above the limit: refused; just below: runs (and the paper's 2 us is far below)
 		O.dt = 1.01 * limit
-		with self.assertRaisesRegex(ValueError, 'exceeds the critical time step'):
+		with self.assertRaisesRegex(RuntimeError, 'exceeds the critical time step'):
 			O.run(1, True)
 		O.dt = 0.99 * limit
 		O.run(10, True)
 		self.assertEqual(O.iter, 10)
 		# changed during the run: checked again
 		O.dt = 1.5 * limit
-		with self.assertRaisesRegex(ValueError, 'exceeds the critical time step'):
+		with self.assertRaisesRegex(RuntimeError, 'exceeds the critical time step'):
 			O.run(1, True)
 		# the Gershgorin fallback only warns
 		rdem.timeStepper().method = 'gershgorin'
@@ -107,20 +112,31 @@ class TimeStep(unittest.TestCase):
 			ts.estimate('x')
 
 	def testWarmStartAndAutomaticStep(self):
-		# The automatic step is safety x the estimate; the second estimate starts from the first's Ritz vector and
-		# converges in fewer Lanczos steps (measured: see the print)
+		# The automatic step is safety x the estimate. While the springs are unchanged the stepper keeps its estimate
+		# (reuseUnchanged); a new estimate starts from the last Ritz vector and converges in fewer Lanczos steps (measured:
+		# see the print).
 		ids = sc.grid(0.2, 'consistent', counts=(4, 4, 4))
 		sc.perturb(ids, 0.01)
 		O.dt = -1
-		rdem.timeStepper().active = True
+		ts = rdem.timeStepper()
+		ts.active = True
 		O.step()
-		cold = rdem.timeStepper().lanczosSteps
-		self.assertAlmostEqual(O.dt / (0.8 * rdem.timeStepper().criticalDt), 1, delta=1e-12)
-		O.run(100, True)
-		warm = rdem.timeStepper().lanczosSteps
-		print('Lanczos steps: %d cold, %d warm (384 DOFs)' % (cold, warm))
+		cold, first = ts.lanczosSteps, ts.criticalDt
+		self.assertAlmostEqual(O.dt / (0.8 * first), 1, delta=1e-12)
+		O.run(200, True)
+		self.assertEqual(ts.reused, 2)  # the updates at steps 100 and 200 kept it
+		self.assertEqual(ts.criticalDt, first)
+		again = ts.estimate()  # computes, from the Ritz vector of the first
+		warm = ts.lanczosSteps
+		print('Lanczos steps: %d cold, %d warm (384 DOFs); estimate moved by %.2g' % (cold, warm, again / first - 1))
 		self.assertLess(warm, cold)
-		self.assertLess(rdem.timeStepper().lanczosResidual, 1e-3)
+		self.assertLess(ts.lanczosResidual, 1e-3)
+		self.assertAlmostEqual(again / first, 1, delta=1e-3)  # the same springs: the same limit within the tolerance
+		# a broken bond changes the springs: the next update estimates anew
+		I = O.interactions[ids[0], ids[1]]
+		O.interactions.erase(I.id1, I.id2)
+		O.run(100, True)
+		self.assertEqual(ts.reused, 0)
 
 
 if __name__ == '__main__':
