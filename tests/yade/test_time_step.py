@@ -32,15 +32,19 @@ class TimeStep(unittest.TestCase):
 			self.assertLess(gershgorin / exact, 0.5, label)
 
 	def testCellsAgainstExactLimit(self):
-		# Poisson cells (a running-bond wall) enter through RdemCellNetwork::addStiffness; their offset correction of the
-		# shear springs is left out of K, so allow 1 % here (measured: see the print)
+		# Poisson cells (a running-bond wall, nu 0.45) enter through RdemCellNetwork::addStiffness; their offset correction
+		# of the shear springs is left out of K, which could move the limit: measured 0.99968, as the grids (the bounds
+		# of testEstimateAgainstExactLimit, with 0.5 % of room below for the left-out term)
 		import wall_cases
-		ids = wall_cases.runningWall()
+		wall, plates = wall_cases.homogeneousWall('running', 2, (1, 1, 1), 0.45, 2)
+		ids = wall.ids + plates[0] + plates[1]
+		for p in plates[0] + plates[1]:
+			O.bodies[p].state.blockedDOFs = ''  # all free, as test_cells_stability
 		lanczos = rdem.timeStepper().estimate('lanczos')
 		exact = sc.exactCriticalDt(ids)
 		print('running-bond wall with cells: Lanczos %.5f of the exact limit' % (lanczos / exact))
-		self.assertLess(lanczos / exact, 1.01)
-		self.assertGreater(lanczos / exact, 0.98)
+		self.assertLess(lanczos / exact, 1 + 1e-5)
+		self.assertGreater(lanczos / exact, 0.995)
 
 	def runAt(self, fraction):
 		"""The consistent 3x3x3 grid, perturbed, at fraction x the Lanczos estimate: (worst shadow-energy error, finite)."""
@@ -52,13 +56,15 @@ class TimeStep(unittest.TestCase):
 		return sc.worstEnergyError(H0, hist), sc.stateIsFinite()
 
 	def testStableBelowUnstableAbove(self):
-		# 0.98 of the estimate: the shadow energy stays within 1e-5 (as every stable elastic case, doc/stability.md);
-		# 1.02: above the limit, the highest mode grows from round-off by exp(5000 * acosh(1 + 2(1.02^2 - 1)))... far
-		# beyond 1e-3 (or the guard stops the run)
+		# 0.98 of the estimate: the shadow energy stays within 1e-4. Its error, from finite rotations (1e-7-1e-6 well
+		# below the limit, doc/stability.md), is amplified near the limit: leapfrog's modified energy of the highest mode
+		# carries 1/(1 - (omega dt/2)^2) = 25 at 0.98; measured 2.2e-5. 1.02: beyond the limit the highest mode grows
+		# from round-off by |z| = 1.49 per step (|z| + 1/|z| = 4 (1.02)^2 - 2), past 1e-3 within a hundred steps (or the
+		# guard stops the run at a non-finite value)
 		err, finite = self.runAt(0.98)
 		print('at 0.98 of the estimate: worst energy error %.3g' % err)
 		self.assertTrue(finite)
-		self.assertLess(err, 1e-5)
+		self.assertLess(err, 1e-4)
 		err, finite = self.runAt(1.02)
 		print('at 1.02 of the estimate: worst energy error %.3g, finite %s' % (err, finite))
 		self.assertTrue(err > 1e-3 or not finite)
@@ -103,11 +109,12 @@ class TimeStep(unittest.TestCase):
 		gershgorin = ts.estimate('gershgorin')
 		ts.method = 'gershgorin'
 		self.assertEqual(ts.estimate(), gershgorin)
-		for attr, bad, text in (('method', 'power', "method = 'power': must be 'lanczos' or 'gershgorin'"),
-		                        ('lanczosTolerance', 0.0, r'lanczosTolerance = 0\.0+: must be in \(0, 0\.1\]'),
-		                        ('lanczosMaxSteps', 1, r'lanczosMaxSteps = 1: must be >= 2')):
+		for attr, bad, good, text in (('method', 'power', 'lanczos', "method = 'power': must be 'lanczos' or 'gershgorin'"),
+		                              ('lanczosTolerance', 0.0, 1e-3, r'lanczosTolerance = 0\.0+: must be in \(0, 0\.1\]'),
+		                              ('lanczosMaxSteps', 1, 60, r'lanczosMaxSteps = 1: must be >= 2')):
 			with self.assertRaisesRegex(ValueError, text):
 				setattr(ts, attr, bad)
+			setattr(ts, attr, good)
 		with self.assertRaisesRegex(ValueError, "method = 'x'"):
 			ts.estimate('x')
 
