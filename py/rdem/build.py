@@ -289,7 +289,7 @@ def engines(segmentsPerEdge=2,
 	if withPoisson:
 		eng.append(RdemPoissonEngine(corotational=corotational))
 	# The automatic step keeps the Gershgorin bound: at 0.8 of the tight (Lanczos) limit the paper's scene broke 2397
-	# springs within 100 steps of its first crack (contact dashpots lower the limit, doc/stability.md). A fixed step is
+	# springs within 180 steps of its first crack, 24 at 2 us (cause not established, doc/stability.md). A fixed step is
 	# checked against the Lanczos estimate: refused above the limit.
 	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None, contactBound=bool(recontact),
 	                          method='gershgorin' if dt is None else 'lanczos')
