@@ -43,8 +43,11 @@ g.add_argument('--baseline', type=int, default=None, choices=[0, 1, 2, 3],
                help='degree of the baseline correction (rdem.ground_motion.Record.baselineCorrected; default 2 for records, 0 = none for pulses)')
 g.add_argument('--direction', choices=['x', 'y'], default='y', help='x: in the wall plane, y: out of it (default y)')
 g.add_argument('--mode', choices=['prescribed', 'inertial'], default='prescribed', help='base motion or inertial load (default prescribed)')
-w = parser.add_argument_group('wall (m)')
-w.add_argument('--length', type=float, default=1.03, help='length (default 1.03)')
+w = parser.add_argument_group('structure (m)')
+w.add_argument('--structure', choices=['wall', 'building'], default='wall',
+               help='a free-standing wall on a base beam, or a one-storey box of four walls with a door and a window (default wall)')
+w.add_argument('--length', type=float, default=1.03, help='length of the wall, or of the front and back walls (default 1.03)')
+w.add_argument('--width', type=float, default=0.75, help='building: depth of the plan, side walls included (default 0.75)')
 w.add_argument('--height', type=float, default=1.225, help='height (default 1.225: 19 courses)')
 w.add_argument('--thickness', type=float, default=0.12, help='thickness (default 0.12)')
 w.add_argument('--bond', choices=['stack', 'running', 'english', 'flemish'], default='running', help='bond pattern (default running)')
@@ -89,35 +92,57 @@ except (ValueError, FileNotFoundError) as e:
 	sys.exit('earthquake: %s' % e)
 motion = gm.GroundMotion(**{opts.direction: rec})
 
-# 2. Wall, settled under gravity ---------------------------------------------------------------------------------------
+# 2. Structure, settled under gravity --------------------------------------------------------------------------------
 wall0 = time.time()
 brick = O.materials.append(RdemMat(young=16.7e9, poisson=0.15, density=1800, tensileStrength=3e6, label='brick'))
 joint = RdemJoint(young=2e9, poisson=0.25, tensileStrength=opts.bond_ft * 1e6, cohesion=opts.bond_c * 1e6, frictionAngle=math.atan(0.75))
-O.engines = rdem.engines(poisson='consistent', failureStress='total', contactSamples=1, gravity=(0, 0, -9.81), damping=0.5)
-try:
-	wall = rdem.masonry.wall(opts.length, opts.height, opts.thickness, bond=opts.bond, blocksPerBrick=opts.blocks, baseBeam=0.1, brickMaterial=brick,
-	                         jointMaterial=joint)
+
+
+def makeWall():
+	"""The wall on its base beam, with Poisson cells and failure on the total stress; returns (the wall, its block ids, the
+	base beam's, the top course's)."""
+	O.engines = rdem.engines(poisson='consistent', failureStress='total', contactSamples=1, gravity=(0, 0, -9.81), damping=0.5)
+	w = rdem.masonry.wall(opts.length, opts.height, opts.thickness, bond=opts.bond, blocksPerBrick=opts.blocks, baseBeam=0.1, brickMaterial=brick,
+	                      jointMaterial=joint)
 	rdem.poissonEngine().elements = 'cells'
-	rdem.poissonEngine().build(wall.ids)
+	rdem.poissonEngine().build(w.ids)
+	return w, w.ids, w.beams['base'], list(w.courses[-1])
+
+
+def makeBuilding():
+	"""Four walls with a door (front) and a window (back) between a base and a roof slab; springs break on their own
+	stresses (no Poisson cells: the rocking and overturning of walls do not depend on them). Returns (the building, its
+	block ids, the base slab's, the walls' top courses')."""
+	O.engines = rdem.engines(poisson=None, contactSamples=1, gravity=(0, 0, -9.81), damping=0.5)
+	L, C = 0.26, 0.065  # modules of the default brick and joint along a wall and up it [m]
+	courses = int(round((opts.height + 0.01) / C))
+	door = (L - 0.005, 0.0, 2 * L, (2 * courses // 3) * C - 0.005)
+	window = (L - 0.005, (courses // 3) * C - 0.005, 2 * L, (courses // 3) * C)
+	b = rdem.earthquake.building(opts.length, opts.width, opts.height, brick, joint, thickness=opts.thickness, bond=opts.bond,
+	                             openings={'front': [door], 'back': [window]})
+	return b, b.ids, b.base, b.top
+
+
+try:
+	structure, ids, baseIds, top = makeWall() if opts.structure == 'wall' else makeBuilding()
 except ValueError as e:
 	sys.exit('earthquake: %s' % e)
-for i in wall.beams['base']:
+for i in baseIds:
 	O.bodies[i].state.blockedDOFs = 'xyzXYZ'
 O.dt = -1
 newton = rdem.newtonIntegrator()
-settle = 0.05  # [s] with Cundall's damping: the wall comes to rest under its weight
+settle = 0.05  # [s] with Cundall's damping: the structure comes to rest under its weight
 while O.time < settle:
 	O.step()
 newton.damping = 0.0
-shaker = rdem.earthquake.shaker(motion, ids=wall.beams['base'], mode=opts.mode)
+shaker = rdem.earthquake.shaker(motion, ids=baseIds, mode=opts.mode)
 shaker.times = [t + O.time for t in shaker.times]  # the motion starts now
 O.trackEnergy = True
-top = [i for i in wall.courses[-1]]
 x0 = {i: Vector3(O.bodies[i].state.pos) for i in top}
-b0 = Vector3(O.bodies[wall.beams['base'][0]].state.pos)
+b0 = Vector3(O.bodies[baseIds[0]].state.pos)
 t0 = O.time
 print('earthquake: %s; %s, PGA %.3g g along %s, %s; settled in %.3f s; step %.3g s' %
-      (wall, rec.name or opts.pulse, rec.pga / G, opts.direction, opts.mode, settle, O.dt),
+      (structure, rec.name or opts.pulse, rec.pga / G, opts.direction, opts.mode, settle, O.dt),
       flush=True)
 
 # 3. Run -------------------------------------------------------------------------------------------------------------
@@ -126,7 +151,7 @@ history = dict(t=[], groundAcc=[], groundDisp=[], topDrift=[], breaks=[], input=
 
 
 def record():
-	base = O.bodies[wall.beams['base'][0]].state.pos - b0
+	base = O.bodies[baseIds[0]].state.pos - b0
 	drift = sum((O.bodies[i].state.pos - x0[i])[axis] for i in top) / len(top) - base[axis]
 	e = dict(O.energy.items())
 	history['t'].append(O.time - t0)
@@ -156,9 +181,9 @@ while O.time - t0 < opts.duration:
 cracks.close()
 runTime = time.time() - runStart
 segs = rdem.brokenSegments(cracks.snapshot)
-results = dict(input=vars(opts), blocks=len(wall.ids), bonds=wall.nBonds, pga=rec.pga, recordName=rec.name, timeStep=O.dt, steps=O.iter,
+results = dict(input=vars(opts), structure=repr(structure), blocks=len(ids), pga=rec.pga, recordName=rec.name, timeStep=O.dt, steps=O.iter,
                maxTopDrift=max(abs(d) for d in history['topDrift']), finalTopDrift=history['topDrift'][-1], brokenSprings=history['breaks'][-1],
-               wallSeconds=runTime, microsecondsPerBlockStep=1e6 * runTime / max(1, O.iter * len(wall.ids)), history=history)
+               wallSeconds=runTime, microsecondsPerBlockStep=1e6 * runTime / max(1, O.iter * len(ids)), history=history)
 with open(os.path.join(opts.out, 'results.json'), 'w') as f:
 	json.dump(results, f, indent=1)
 
