@@ -2,8 +2,8 @@
 """A dry-stacked brick wall on a tilting base: the tilt at which it falls over, against rigid-block limit analysis.
 
 Problem
-    A free-standing wall of bricks laid dry (no mortar; default 0.75 m long, 10 courses of 250×120×55 mm bricks in
-    running bond, 0.55 m tall, one wythe 0.12 m thick, one block per brick; E = 16.7 GPa, 1800 kg/m³, friction 0.75)
+    A free-standing wall of bricks laid dry (no mortar; default 0.75 m long, 6 courses of 250×120×55 mm bricks in
+    running bond, 0.33 m tall, one wythe 0.12 m thick, one block per brick; E = 16.7 GPa, 1800 kg/m³, friction 0.75)
     stands on a fixed base; every joint is a contact sampled at the vertices (contactSamples=1, doc/theory.md §4.2) with
     critical dashpots. The base is tilted about the wall's length, out of its plane, as on a tilting table (de Felice
     2011): gravity is turned by θ in the base's frame. The tilt is raised quickly to --start times the limit-analysis
@@ -12,12 +12,12 @@ Problem
 
 Expected result (rdem.limit_analysis.stackTilt: Heyman 1966, Housner 1963)
     Every course spans the thickness, so the part above any bed joint overturns about that joint's downhill edge when
-    tan θ = t/(H − z); the base joint governs, tan θc = t/H (12.31° for the default wall), unless the joints slide first
+    tan θ = t/(H − z); the base joint governs, tan θc = t/H (19.98° for the default wall), unless the joints slide first
     (tan θ = μ = 0.75, 36.9°). The wall stands at every level below θc and lifts off at the first level above it.
 
 How to run
     build/bin/yade -n scripts/tilt.py                                     (about a minute)
-    build/bin/yade -n scripts/tilt.py --height 0.825 --step 0.05          15 courses, finer steps
+    build/bin/yade -n scripts/tilt.py --height 0.825 --step 0.05          15 courses (12.31°), finer steps
     build/bin/yade -n scripts/tilt.py --help
 
 Outputs (in --out, default output/tilt): results.json, tilt.png (the wall's lean against the tilt and against time, the
@@ -33,16 +33,16 @@ import time
 parser = argparse.ArgumentParser(prog='yade scripts/tilt.py', description=__doc__.split('\n\n')[0])
 w = parser.add_argument_group('wall (m, one wythe laid dry)')
 w.add_argument('--length', type=float, default=0.75, help='length (default 0.75: three bricks)')
-w.add_argument('--height', type=float, default=0.55, help='height (default 0.55: 10 courses)')
+w.add_argument('--height', type=float, default=0.33, help='height (default 0.33: 6 courses)')
 w.add_argument('--brick', type=lambda s: tuple(float(x) for x in s.split(',')), default=(0.25, 0.12, 0.055),
                help='brick length,width,height; the width is the thickness (default 0.25,0.12,0.055)')
 w.add_argument('--bond', choices=['stack', 'running'], default='running', help='bond (default running)')
 w.add_argument('--friction', type=float, default=0.75, help='friction coefficient of the joints (default 0.75)')
 w.add_argument('--young', type=float, default=16.7, help="bricks' Young's modulus, which sets the contact stiffness [GPa] (default 16.7)")
 r = parser.add_argument_group('tilt')
-r.add_argument('--start', type=float, default=0.9, help='tilt reached by the first ramp, as a fraction of the limit-analysis angle (default 0.9)')
-r.add_argument('--step', type=float, default=0.1, help='tilt increment [deg] (default 0.1)')
-r.add_argument('--hold', type=float, default=0.3, help='time each tilt is held [s] (default 0.3)')
+r.add_argument('--start', type=float, default=0.95, help='tilt reached by the first ramp, as a fraction of the limit-analysis angle (default 0.95)')
+r.add_argument('--step', type=float, default=0.2, help='tilt increment [deg] (default 0.2)')
+r.add_argument('--hold', type=float, default=0.2, help='time each tilt is held [s] (default 0.2)')
 r.add_argument('--uplift', type=float, default=1e-3, help='rotation of the bottom course that counts as lift-off [rad] (default 1e-3)')
 r.add_argument('--fall', type=float, default=1.0, help='the run ends when the wall leans this far [rad] (default 1.0), or --hold x 10 after lift-off')
 r.add_argument('--out', default='output/tilt', help='output folder (default output/tilt)')
