@@ -1,0 +1,76 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+/* How long two blocks that are apart stay apart (doc/performance.md, "Contact phase").
+
+   After the first crack the collider hands the geometry functor every pair of blocks whose bounding boxes overlap: in
+   a grid, the edge and corner neighbours of every block, about ten pairs per block, nearly all of them apart by a
+   strain-sized gap. Instead of the separating-axis test at every step, a pair found apart gets a certificate: the
+   slack by which the blocks' projections on one axis must still grow before blocksOverlap can return true. The slack
+   is used up by motion only: every point of a rigid body moves at most rigidTravel between two configurations, so the
+   test is needed again only once the two blocks' travels since the certificate add up to the slack. The decision of
+   blocksOverlap is unchanged, not approximated.
+
+   Units: m; quaternions unit. */
+#pragma once
+
+#include <pkg/rdem/math/BlockGeometry.hpp>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace yade {
+namespace rdem {
+
+	/* Largest distance a point within rho of a rigid body's reference point moves between the configurations (x0, q0)
+	   and (x1, q1) [m]: |x1 - x0| + 2 rho min(|q1 - q0|, |q1 + q0|). The rotation from q0 to q1 by an angle θ ∈ [0, π]
+	   moves a point at distance r ≤ rho from the reference point by at most the chord 2 r sin(θ/2), and, with the sign of
+	   q1 that makes q0·q1 ≥ 0, |q1 - q0| = 2 sin(θ/4) ≥ sin(θ/2) = 2 sin(θ/4) cos(θ/4). No trigonometric function: this
+	   runs for every block at every step of the contact phase. */
+	template <class S>
+	S rigidTravel(
+	        const Eigen::Matrix<S, 3, 1>& x0, const Eigen::Quaternion<S>& q0, const Eigen::Matrix<S, 3, 1>& x1, const Eigen::Quaternion<S>& q1, S rho)
+	{
+		const S minus = (q1.coeffs() - q0.coeffs()).squaredNorm(), plus = (q1.coeffs() + q0.coeffs()).squaredNorm();
+		return (x1 - x0).norm() + 2 * rho * std::sqrt(std::min(minus, plus));
+	}
+
+	/// Margin kept from a certificate's slack [m]: 1e-6 of the blocks' summed circumradii (see separationSlack).
+	template <class S> S separationMargin(const BlockPair<S>& pair) { return S(1e-6) * (pair.A.half.norm() + pair.B.half.norm()); }
+
+	/* Separation slack of two blocks [m]: over the axes blocksOverlap(pair, tol) tests (3 + 3 face normals, the cross
+	   products of edges that are not within 1e-9 rad of parallel), the largest tol - o(a), o(a) the overlap of the
+	   blocks' projections on the unit axis a, less separationMargin. Positive only if blocksOverlap is false.
+
+	   Guarantee: if afterwards every point of A moves by at most t_A and every point of B by at most t_B (rigidTravel,
+	   summed over steps) with t_A + t_B < slack, blocksOverlap still returns false. Proof: o(a) along the axis a, now
+	   fixed in space, is the least of the two one-sided overlaps max_A p·a - min_B p·a and max_B p·a - min_A p·a; each
+	   grows by at most t_A + t_B, so o(a) stays below tol - margin. The overlap along any unit direction is at least
+	   the penetration depth of the blocks (the distance from the origin to the boundary of the Minkowski difference
+	   A - B, if it lies inside), which is attained on a facet normal of that difference, i.e. on one of the 15 axes, so
+	   one of them overlaps by less than tol - margin; blocksOverlap skips only the cross products of edges within
+	   1e-9 rad of parallel, whose facets are slivers of width ~1e-9 of an edge, moving the least tested overlap by
+	   about 1e-9 of the blocks' size, far inside the margin of 1e-6 (which also covers the round-off, ~1e-16 of the
+	   coordinates). So blocksOverlap finds an axis with overlap ≤ tol and returns false. */
+	template <class S> S separationSlack(const BlockPair<S>& pair, S tol)
+	{
+		S best = -std::numeric_limits<S>::infinity();
+		for (int i = 0; i < 3; ++i)
+			best = std::max(best, std::max(tol - pair.overlapA(i), tol - pair.overlapB(i)));
+		for (int i = 0; i < 3; ++i)
+			for (int j = 0; j < 3; ++j) {
+				const S len = pair.crossLength(i, j);
+				if (len < S(1e-9)) continue; // skipped by blocksOverlap: the face axes cover this direction
+				best = std::max(best, tol - pair.crossOverlapScaled(i, j) / len);
+			}
+		const S slack = best - separationMargin(pair);
+		return std::isfinite(slack) ? slack : -std::numeric_limits<S>::infinity();
+	}
+
+} // namespace rdem
+} // namespace yade

@@ -1,0 +1,163 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+/* Unit tests of pkg/rdem/math/SeparationBound.hpp: the travel bound of a rigid body against the exact motion of a
+   box's vertices, and the separation certificate against blocksOverlap after random and worst-case motions within
+   the certified slack. Coordinates are O(1) m, so round-off is ~1e-16-1e-15 m; 1e-12 m tolerances leave ≥ 10³ of
+   margin while being far below the offsets tested (≥ 1e-4 m). */
+#include <pkg/rdem/math/SeparationBound.hpp>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <random>
+
+namespace {
+
+namespace rdem = yade::rdem;
+using V3       = Eigen::Vector3d;
+using Q        = Eigen::Quaterniond;
+using Block    = rdem::OrientedBlock<double>;
+
+constexpr double tol = 1e-9; // [m] the touch tolerance passed to blocksOverlap (the functor's 1e-9 of a half-extent)
+
+double uniform(std::mt19937& gen, double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); }
+
+Q randomRotation(std::mt19937& gen)
+{
+	Q q(uniform(gen, -1, 1), uniform(gen, -1, 1), uniform(gen, -1, 1), uniform(gen, -1, 1));
+	return q.normalized();
+}
+
+V3 randomUnit(std::mt19937& gen)
+{
+	V3 v(uniform(gen, -1, 1), uniform(gen, -1, 1), uniform(gen, -1, 1));
+	return v.normalized();
+}
+
+// Largest displacement of the 8 vertices of a box of half-extents h between (x0, q0) and (x1, q1): the largest of any
+// of its points, since a point's displacement (x1 - x0) + (R1 - R0) p is affine in p and its norm convex.
+double vertexTravel(const V3& h, const V3& x0, const Q& q0, const V3& x1, const Q& q1)
+{
+	double m = 0;
+	for (int v = 0; v < 8; ++v) {
+		const V3 p((v & 1) ? h[0] : -h[0], (v & 2) ? h[1] : -h[1], (v & 4) ? h[2] : -h[2]);
+		m = std::max(m, ((x1 + q1 * p) - (x0 + q0 * p)).norm());
+	}
+	return m;
+}
+
+Block blockAt(const V3& x, const Q& q, const V3& h) { return Block { x, q.toRotationMatrix(), h }; }
+
+TEST(SeparationBound, TravelOfATranslationIsItsLength)
+{
+	const Q q = Q(Eigen::AngleAxisd(0.3, V3(1, 2, 3).normalized()));
+	EXPECT_NEAR(rdem::rigidTravel<double>(V3(1, 1, 1), q, V3(1.1, 1.2, 1.2), q, 5.0), 0.3, 1e-15);
+	// q and -q are the same orientation: no rotation.
+	EXPECT_NEAR(rdem::rigidTravel<double>(V3::Zero(), q, V3::Zero(), Q(-q.coeffs()), 5.0), 0.0, 1e-15);
+}
+
+TEST(SeparationBound, TravelBoundsEveryVertexAndIsTightForSmallRotations)
+{
+	// 2000 random motions (rotations of any angle up to π, translations up to 1 m) of random boxes: the bound is never
+	// below the exact largest vertex displacement.
+	std::mt19937 gen(20261124);
+	for (int k = 0; k < 2000; ++k) {
+		const V3 h(uniform(gen, 0.1, 1), uniform(gen, 0.1, 1), uniform(gen, 0.1, 1));
+		const V3 x0(uniform(gen, -1, 1), uniform(gen, -1, 1), uniform(gen, -1, 1));
+		const V3 x1 = x0 + uniform(gen, 0, 1) * randomUnit(gen);
+		const Q  q0 = randomRotation(gen), q1 = k % 2 ? randomRotation(gen) : Q(-randomRotation(gen).coeffs());
+		EXPECT_GE(rdem::rigidTravel<double>(x0, q0, x1, q1, h.norm()) + 1e-12, vertexTravel(h, x0, q0, x1, q1)) << "motion " << k;
+	}
+	// A rotation by θ = 1e-3 about an axis normal to a vertex's arm moves that vertex by the chord 2ρ sin(θ/2); the bound
+	// 4ρ sin(θ/4) exceeds it by 1/cos(θ/4) - 1 ≈ θ²/32 = 3e-8 relative.
+	const V3 h(0.5, 0.5, 0.5);
+	const Q  q0   = Q::Identity();
+	const Q  q1   = Q(Eigen::AngleAxisd(1e-3, V3(1, -1, 0).normalized()));
+	const double exact = vertexTravel(h, V3::Zero(), q0, V3::Zero(), q1);
+	EXPECT_NEAR(exact, 2 * h.norm() * std::sin(0.5e-3), 1e-15);
+	EXPECT_NEAR(rdem::rigidTravel<double>(V3::Zero(), q0, V3::Zero(), q1, h.norm()) / exact - 1, 0, 1e-7);
+}
+
+TEST(SeparationBound, NoSlackForBlocksThatOverlapOrTouch)
+{
+	const V3 h(0.5, 0.5, 0.5);
+	// Overlapping by 0.1 m along x.
+	EXPECT_LT(rdem::separationSlack(rdem::BlockPair<double>(blockAt(V3::Zero(), Q::Identity(), h), blockAt(V3(0.9, 0.2, 0), Q::Identity(), h)), tol), 0);
+	// Edge neighbours of a grid, touching along an edge: no certificate (the margin, 1.7e-6 m here, exceeds tol).
+	EXPECT_LT(rdem::separationSlack(rdem::BlockPair<double>(blockAt(V3::Zero(), Q::Identity(), h), blockAt(V3(1, 0, 1), Q::Identity(), h)), tol), 0);
+}
+
+TEST(SeparationBound, SlackOfAGapIsTheGapLessTheMargin)
+{
+	// Edge neighbours of a grid under compression along z with lateral expansion: apart by g = 1e-4 m along x (and
+	// overlapping along z). The slack is g + tol - 1e-6 (|h_A| + |h_B|).
+	const V3     h(0.5, 0.5, 0.5);
+	const double g = 1e-4;
+	const Block  A = blockAt(V3::Zero(), Q::Identity(), h), B = blockAt(V3(1 + g, 0, 1 - 1e-3), Q::Identity(), h);
+	const double slack = rdem::separationSlack(rdem::BlockPair<double>(A, B), tol);
+	EXPECT_NEAR(slack, g + tol - 2e-6 * h.norm(), 1e-12);
+	// Not vacuous: B moved towards A along x by the slack plus the margin and 2 tol overlaps on every axis.
+	const Block closer = blockAt(B.pos - (slack + 2e-6 * h.norm() + 2 * tol) * V3::UnitX(), Q::Identity(), h);
+	EXPECT_TRUE(rdem::blocksOverlap(rdem::BlockPair<double>(A, closer), tol));
+}
+
+// Moves a block rigidly: its centre by `shift`, its orientation by q, about its centre.
+Block moved(const Block& b, const V3& shift, const Q& q) { return Block { b.pos + shift, q.toRotationMatrix() * b.rot, b.half }; }
+
+TEST(SeparationBound, CertifiedPairsStayApartUnderAnyMotionWithinTheSlack)
+{
+	// Random pairs (general rotations, half-extents 0.2-1 m, B's centre in [-2, 2]³ m). For every pair with a
+	// certificate: (1) 20 random rigid motions of both blocks whose travels add up to a random fraction of the slack;
+	// (2) the worst translations: B towards A along each of the 15 test axes, and A towards B, by 0.999 of the slack.
+	// blocksOverlap must stay false every time.
+	std::mt19937 gen(17);
+	int          certified = 0;
+	for (int k = 0; k < 4000; ++k) {
+		const Block A { V3(uniform(gen, -0.5, 0.5), uniform(gen, -0.5, 0.5), uniform(gen, -0.5, 0.5)),
+			        randomRotation(gen).toRotationMatrix(),
+			        V3(uniform(gen, 0.2, 1), uniform(gen, 0.2, 1), uniform(gen, 0.2, 1)) };
+		const Block B { V3(uniform(gen, -2, 2), uniform(gen, -2, 2), uniform(gen, -2, 2)),
+			        randomRotation(gen).toRotationMatrix(),
+			        V3(uniform(gen, 0.2, 1), uniform(gen, 0.2, 1), uniform(gen, 0.2, 1)) };
+		const rdem::BlockPair<double> pair(A, B);
+		const double                  slack = rdem::separationSlack(pair, tol);
+		if (!(slack > 0)) continue;
+		++certified;
+		ASSERT_FALSE(rdem::blocksOverlap(pair, tol)) << "pair " << k;
+		for (int m = 0; m < 20; ++m) {
+			// Rotation angles and shifts drawn, then scaled so that travel(A) + travel(B) = f · slack.
+			const Q      qa = Q(Eigen::AngleAxisd(uniform(gen, 0, 0.5), randomUnit(gen))), qb = Q(Eigen::AngleAxisd(uniform(gen, 0, 0.5), randomUnit(gen)));
+			const V3     sa = uniform(gen, 0, 1) * randomUnit(gen), sb = uniform(gen, 0, 1) * randomUnit(gen);
+			const double ta = rdem::rigidTravel<double>(V3::Zero(), Q::Identity(), sa, qa, A.half.norm());
+			const double tb = rdem::rigidTravel<double>(V3::Zero(), Q::Identity(), sb, qb, B.half.norm());
+			const double f  = uniform(gen, 0, 0.99) * slack / (ta + tb);
+			/* Rotation angles and shifts scaled by f: a travel grows by at most 1/f · sin(fθ/4)/sin(θ/4) ≤ (θ/4)/sin(θ/4) ≤
+			   1.0027 times f for θ ≤ 0.5, so the motion stays within 0.99 · 1.0027 < 1 of the slack (asserted below). */
+			const Eigen::AngleAxisd aa(qa), ab(qb);
+			const Block A2 = moved(A, f * sa, Q(Eigen::AngleAxisd(f * aa.angle(), aa.axis())));
+			const Block B2 = moved(B, f * sb, Q(Eigen::AngleAxisd(f * ab.angle(), ab.axis())));
+			ASSERT_LT(
+			        rdem::rigidTravel<double>(A.pos, Q(A.rot), A2.pos, Q(A2.rot), A.half.norm())
+			                + rdem::rigidTravel<double>(B.pos, Q(B.rot), B2.pos, Q(B2.rot), B.half.norm()),
+			        slack);
+			EXPECT_FALSE(rdem::blocksOverlap(rdem::BlockPair<double>(A2, B2), tol)) << "pair " << k << ", motion " << m;
+		}
+		for (int i = 0; i < 15; ++i) {
+			V3 axis = i < 3 ? V3(A.rot.col(i)) : i < 6 ? V3(B.rot.col(i - 3)) : V3(A.rot.col((i - 6) / 3).cross(B.rot.col((i - 6) % 3)));
+			if (axis.norm() < 1e-6) continue;
+			axis.normalize();
+			if (axis.dot(B.pos - A.pos) < 0) axis = -axis; // from A to B
+			const double d = 0.999 * slack;
+			EXPECT_FALSE(rdem::blocksOverlap(rdem::BlockPair<double>(A, moved(B, -d * axis, Q::Identity())), tol)) << "pair " << k << ", axis " << i;
+			EXPECT_FALSE(rdem::blocksOverlap(rdem::BlockPair<double>(moved(A, d * axis, Q::Identity()), B), tol)) << "pair " << k << ", axis " << i;
+		}
+	}
+	EXPECT_GT(certified, 1000); // the trials do exercise certificates
+}
+
+} // namespace
