@@ -14,6 +14,12 @@ Cases
     paper       the paper's §5 scene: 1200 blocks, 3260 bonds (2×2 springs), 891 Poisson elements, with failure and
                 the contact gate (rdem.scenes.CompressionTest defaults), 1 and 2 threads;
     crack       the same scene run from the start to its first broken spring (about 70 000 steps), 1 and 2 threads;
+    phases      the paper's main job (scripts/compression.py without its recording: 1 mm/s to 0.25 mm, about 125 000
+                steps), one thread, timed in windows of 1000 steps: µs per block-step before the first broken spring
+                (intact) and after it (cracked: the collider runs, contacts come and go), median and range of the
+                windows, and the wall time of each phase and of the whole run;
+    collapse    a dry-stacked cube of --collapse-blocks³ loose blocks (default 22: 10 648 blocks) on a fixed floor under
+                gravity tilted by 45° (friction 0.6, so it slides and topples), contacts only, 1 and 2 threads;
     cpm         YADE's concrete model on the same grid: 10×10×12 CpmMat spheres of radius 1 cm, bonded to their face
                 neighbours (interactionDetectionFactor 1.2), bottom layer fixed, top layer at 1 mm/s, collider on,
                 O.dt = 0.8 PWaveTimeStep: what a YADE user runs today for concrete, 1 and 2 threads;
@@ -24,7 +30,10 @@ Cases
                 body count), the exponent of the wall time per step against the body count between neighbouring
                 sizes, and a plot (figures/<name>.png beside --out, e.g. doc/figures/scaling.png);
     instructions  the paper scene's instructions per block-step under valgrind's callgrind: the one figure that does
-                not move with the machine's load (needs valgrind).
+                not move with the machine's load (needs valgrind); intact (200 steps from the start) and cracked (the
+                state 5000 steps after the first broken spring, saved by a native run first, then 100 steps counted as
+                the difference of 120 and 20 steps after loading, so that the first steps after loading, which test
+                every pair again, are not counted).
     misses      memory traffic of the 22³ cube (11 616 blocks, beyond this machine's 32 MB L3 cache): last-level data
                 cache misses per block-step under callgrind's cache simulation with a 32 MB, 16-way last level, over 11
                 steps (needs valgrind; about 5 minutes; not in the default plan).
@@ -34,6 +43,7 @@ Expected result
 
 How to run (about 9 minutes with the default two rounds; --quick --repeat 1: 2 minutes, no 46³ cube)
     build/bin/yade -n scripts/benchmark.py [--cases paper crack cpm effects scaling] [--sizes 10 22 46] [--quick] [--repeat N] [--out doc/benchmark.md]
+    build/bin/yade -n scripts/benchmark.py --cases phases collapse instructions --repeat 3 --out doc/contact-phase.md   the contact phase
 """
 import argparse
 import json
@@ -52,6 +62,7 @@ parser.add_argument('--quick', action='store_true', help='fewer steps, no 46³ c
 parser.add_argument('--sizes', type=int, nargs='+', default=None, help='blocks per edge of the scaling cubes (default 10 22 46; --quick: 10 22)')
 parser.add_argument('--repeat', type=int, default=2, help='run the whole plan this many times, round robin, and keep each case\'s fastest round (default 2)')
 parser.add_argument('--out', default='doc/benchmark.md', help='markdown table to write (default doc/benchmark.md)')
+parser.add_argument('--collapse-blocks', type=int, default=22, help='blocks per edge of the collapsing cube (default 22)')
 parser.add_argument('--child', default=None, help=argparse.SUPPRESS)  # internal: run one case in this process
 opts = parser.parse_args(sys.argv[1:])
 
@@ -181,25 +192,115 @@ def runCrack(spec):
 	            breaks=int(law.tensionBreaks + law.shearBreaks))
 
 
+def runPhases(spec):
+	"""The paper's main job without its recording (1 mm/s to spec['end'] m, default 0.25 mm), one window of
+	spec['window'] steps after another: each window's time goes to the intact phase (no broken spring at its end) or
+	the cracked one (broken springs at its start); the window of the first break to neither. With spec['save'], the
+	state spec['saveAfter'] steps after the first broken spring is saved there, and the run stops."""
+	from yade import O
+	import rdem.build
+	from rdem.scenes import CompressionTest
+	test = CompressionTest()
+	law = rdem.build.law()
+	broken = lambda: int(law.tensionBreaks + law.shearBreaks)
+	window, end, n = spec.get('window', 1000), spec.get('end', 0.25e-3), len(O.bodies)
+	phases = dict(intact=[], cracked=[])
+	first = None
+	t0 = time.perf_counter()
+	while O.time * test.rate < end:
+		before = broken()
+		w0 = time.perf_counter()
+		for i in range(window):
+			O.step()
+		wall = time.perf_counter() - w0
+		if broken() == 0:
+			phases['intact'].append(wall)
+		elif before > 0:
+			phases['cracked'].append(wall)
+		else:
+			first = dict(iter=O.iter, stress=test.stress())
+		if O.iter % 10000 == 0:
+			print('    step %d, %.1f MPa, %d breaks, %d interactions, %.0f s' % (O.iter, test.stress() / 1e6, broken(), len(O.interactions.all()),
+			                                                                 time.perf_counter() - t0), flush=True)
+		if spec.get('save') and first and O.iter >= first['iter'] + spec.get('saveAfter', 5000):
+			O.save(spec['save'])
+			return dict(bodies=n, steps=O.iter, saved=spec['save'], wall=time.perf_counter() - t0, stepsPerSecond=0, usPerBodyStep=0)
+	out = dict(bodies=n, steps=O.iter, wall=time.perf_counter() - t0, window=window, firstBreak=first, breaks=broken(), stress=test.stress())
+	for name, walls in phases.items():
+		us = sorted(w / window / n * 1e6 for w in walls)
+		out[name] = dict(windows=len(us), wall=sum(walls), median=us[len(us) // 2] if us else None, fastest=us[0] if us else None, slowest=us[-1] if us else None)
+	out['ratio'] = out['cracked']['median'] / out['intact']['median'] if out['cracked']['median'] else None
+	out['stepsPerSecond'] = O.iter / out['wall']
+	out['usPerBodyStep'] = out['cracked']['median'] or 0  # the figure the rounds keep the fastest of
+	return out
+
+
+def collapseScene(n, h=0.02):
+	"""A dry-stacked cube of n³ loose cubic blocks of side h [m] on a fixed floor block, gravity tilted by 45° about y
+	(friction 0.6 < tan 45°: the cube slides and topples); concrete-like blocks, contacts sampled at the vertices
+	(rdem.engines(contactSamples=1), as for rocking and collapse), collider with a sweep distance of 5 % of a block.
+	Returns the number of moving blocks."""
+	from yade import O
+	from yade.wrapper import RdemMat
+	import rdem.build as build
+	O.reset()
+	mat = O.materials.append(RdemMat(young=30e9, poisson=0.2, density=2300, frictionAngle=math.atan(0.6), label='dry'))
+	tilt = math.radians(45)
+	O.engines = build.engines(poisson=None, gravity=(9.81 * math.sin(tilt), 0, -9.81 * math.cos(tilt)), verletDist=0.05 * h, contactSamples=1)
+	O.bodies.append(build.block((1.5 * n * h, n * h / 2, -h / 2), (1.5 * n * h, n * h / 2 + h, h / 2), mat, fixed=True))
+	return len(build.blockGrid((n, n, n), (h, h, h), mat))
+
+
+def runCollapse(spec):
+	"""The collapsing cube (collapseScene), timed as the steady-state cases after spec['warmup'] steps."""
+	from yade import O
+	t0 = time.time()
+	collapseScene(spec['blocks'])
+	setup = time.time() - t0
+	n = len(O.bodies)
+	out = dict(bodies=n, setupSeconds=setup, dt=O.dt)
+	out.update(timed(n, spec['steps'], spec['warmup']))
+	out.update(interactions=len(O.interactions.all()), contacts=len(O.interactions), time=O.time)
+	return out
+
+
 def runCount(spec):
-	"""The paper scene (or a cube of spec['blocks'] per edge, time step from RdemTimeStepper), built and stepped
-	spec['steps'] times under callgrind (see countInstructions)."""
+	"""The paper scene (or a cube of spec['blocks'] per edge, time step from RdemTimeStepper; or the state saved in
+	spec['load']), built and stepped spec['steps'] times under callgrind (see countInstructions)."""
 	from yade import O
 	from rdem.scenes import CompressionTest
 	blocks = spec.get('blocks', 10)
-	CompressionTest(blocksPerEdge=blocks) if blocks == 10 else CompressionTest(blocksPerEdge=blocks, dt=None)
+	if spec.get('load'):
+		O.load(spec['load'])
+	else:
+		CompressionTest(blocksPerEdge=blocks) if blocks == 10 else CompressionTest(blocksPerEdge=blocks, dt=None)
 	O.run(spec['steps'], True)
-	return dict(bodies=len(O.bodies), steps=spec['steps'])
+	return dict(bodies=len(O.bodies), steps=spec['steps'], interactions=len(O.interactions.all()), real=len(O.interactions))
 
 
-def countInstructions(steps=200, blocks=10, cacheSim=False):
-	"""Instructions per block-step of the paper scene (or of a cube of `blocks` per edge), counted by valgrind's callgrind
-	over the time steps only (yade::Scene::moveToNextTimeStep): unlike seconds, the same on every run of the same build,
-	whatever else the machine does. With cacheSim, also the last-level data cache misses (reads + writes) per block-step,
-	for a 32 MB, 16-way, 64-byte-line last level like this machine's L3. A fresh process under valgrind, one thread."""
+def crackedState():
+	"""Path of the paper scene 5000 steps after its first broken spring, saved by a native run of this build (the saved
+	attributes follow the build) into the system's temporary folder; made if missing (about a minute)."""
+	import hashlib
+	import tempfile
+	with open(os.path.join(os.path.dirname(rdem.batch.LAUNCHER), '..', 'lib', 'libpkg_rdem.so'), 'rb') as f:
+		build = hashlib.sha1(f.read()).hexdigest()[:12]
+	path = os.path.join(tempfile.gettempdir(), 'rdem-paper-cracked-%s.yade.gz' % build)
+	if not os.path.exists(path):
+		print('benchmark: saving the cracked paper scene to %s (about a minute) ...' % path, flush=True)
+		rdem.batch.runChild(dict(kind='phases', save=path, saveAfter=5000), 1)
+	return path
+
+
+def countInstructions(steps=200, blocks=10, cacheSim=False, load=None):
+	"""Instructions per block-step of the paper scene (or of a cube of `blocks` per edge, or of the saved state `load`),
+	counted by valgrind's callgrind over the time steps only (yade::Scene::moveToNextTimeStep): unlike seconds, the same
+	on every run of the same build, whatever else the machine does. With cacheSim, also the last-level data cache
+	misses (reads + writes) per block-step, for a 32 MB, 16-way, 64-byte-line last level like this machine's L3. A fresh
+	process under valgrind, one thread."""
 	import re
 	import subprocess
-	spec = dict(kind='count', steps=steps, blocks=blocks)
+	spec = dict(kind='count', steps=steps, blocks=blocks, load=load)
 	cmd = ['valgrind', '--tool=callgrind', '--trace-children=yes', '--callgrind-out-file=/dev/null', '--collect-atstart=no']
 	if cacheSim:
 		cmd += ['--cache-sim=yes', '--LL=33554432,16,64']
@@ -212,14 +313,15 @@ def countInstructions(steps=200, blocks=10, cacheSim=False):
 		raise RuntimeError('callgrind run failed:\n%s' % proc.stdout[-3000:])
 	events = max(collected, key=lambda c: c[0])
 	res = json.loads(report[-1][len(rdem.batch.MARKER):])
-	out = dict(instructions=events[0], steps=steps, bodies=res['bodies'], perBlockStep=events[0] / steps / res['bodies'])
+	out = dict(instructions=events[0], steps=steps, bodies=res['bodies'], perBlockStep=events[0] / steps / res['bodies'], interactions=res['interactions'],
+	           real=res['real'])
 	if cacheSim:
 		out['llMissesPerBlockStep'] = (events[7] + events[8]) / steps / res['bodies']
 	return out
 
 
 def child(spec):
-	res = dict(cpm=runCpm, crack=runCrack, count=runCount).get(spec['kind'], runRdem)(spec)
+	res = dict(cpm=runCpm, crack=runCrack, count=runCount, phases=runPhases, collapse=runCollapse).get(spec['kind'], runRdem)(spec)
 	res['threads'] = int(os.environ.get('OMP_NUM_THREADS', '1'))
 	rdem.batch.reportChild(res)
 
@@ -237,6 +339,15 @@ if 'paper' in opts.cases:
 if 'crack' in opts.cases:
 	for th in (1, 2):
 		plan.append(('crack', 'paper scene to its first broken spring', dict(kind='crack'), th))
+if 'phases' in opts.cases:
+	plan.append(('phases', 'paper main job, intact and cracked phases', dict(kind='phases'), 1))
+if 'collapse' in opts.cases:
+	nc = opts.collapse_blocks
+	if nc < 2:
+		sys.exit('--collapse-blocks %d: must be >= 2' % nc)
+	for th in (1, 2):
+		plan.append(('collapse', 'collapsing cube, %d³ blocks' % nc,
+		             dict(kind='collapse', blocks=nc, steps=max(50, int(steps * 1200 / nc**3)), warmup=min(warmup, max(50, int(steps * 1200 / nc**3)))), th))
 if 'cpm' in opts.cases:
 	for th in (1, 2):
 		plan.append(('paper', 'YADE CpmMat spheres, same grid', dict(kind='cpm', steps=steps, warmup=warmup), th))
@@ -273,10 +384,17 @@ for rnd in range(opts.repeat):
 		results[k] = best
 
 count = None
+cracked = None
 if 'instructions' in opts.cases:
 	print('benchmark: instructions per block-step under callgrind (about a minute) ...', flush=True)
 	count = countInstructions()
 	print('    %.0f instructions per block-step' % count['perBlockStep'], flush=True)
+	state = crackedState()
+	print('benchmark: instructions per block-step of the cracked scene under callgrind (a few minutes) ...', flush=True)
+	short, long_ = countInstructions(steps=20, load=state), countInstructions(steps=120, load=state)
+	cracked = dict(long_, steps=100, instructions=long_['instructions'] - short['instructions'])
+	cracked['perBlockStep'] = cracked['instructions'] / 100 / cracked['bodies']
+	print('    %.0f instructions per block-step (%.2f x intact)' % (cracked['perBlockStep'], cracked['perBlockStep'] / count['perBlockStep']), flush=True)
 misses = None
 if 'misses' in opts.cases:
 	print('benchmark: last-level cache misses per block-step of the 22³ cube under callgrind (about 5 minutes) ...', flush=True)
@@ -312,6 +430,39 @@ if count:
 	    '**%.0f instructions per block-step** (%.3g in all). Unlike the timings this figure is the same on every run of the same build; it moves only '
 	    'when the code does.' % (count['steps'], count['perBlockStep'], count['instructions']), ''
 	]
+if cracked:
+	lines += [
+	    'Cracked: the paper scene 5000 steps after its first broken spring (%d interactions, %d of them real), 100 steps (the difference of 120 '
+	    'and 20 steps after loading the saved state): **%.0f instructions per block-step**, %.2f× intact.' %
+	    (cracked['interactions'], cracked['real'], cracked['perBlockStep'], cracked['perBlockStep'] / count['perBlockStep']), ''
+	]
+phases = [r for r in results if r['section'] == 'phases']
+if phases:
+	lines += [
+	    '## The main job: intact and cracked phases (one thread)', '',
+	    'The paper scene loaded at 1 mm/s to 0.25 mm as `scripts/compression.py` without its recording, timed in windows of %d steps; µs per '
+	    'block-step, median (fastest–slowest window) of each phase; "ratio" cracked over intact medians.' % phases[0]['window'], '',
+	    '| steps | first break (step, MPa) | intact | intact wall [s] | cracked | cracked wall [s] | ratio | whole run [s] | breaks |', '|---|---|---|---|---|---|---|---|---|'
+	]
+	for r in phases:
+		i, c = r['intact'], r['cracked']
+		lines.append('| %d | %d, %.2f | %.3f (%.3f–%.3f) | %.1f | %.3f (%.3f–%.3f) | %.1f | %.2f | %.1f | %d |' %
+		             (r['steps'], r['firstBreak']['iter'], r['firstBreak']['stress'] / 1e6, i['median'], i['fastest'], i['slowest'], i['wall'], c['median'],
+		              c['fastest'], c['slowest'], c['wall'], r['ratio'], r['wall'], r['breaks']))
+	lines.append('')
+collapse = [r for r in results if r['section'] == 'collapse']
+if collapse:
+	lines += [
+	    '## A collapse: loose blocks, contacts only', '',
+	    'A dry-stacked cube of loose blocks on a fixed floor under gravity tilted by 45° (see the header of scripts/benchmark.py), after %d steps.' %
+	    collapse[0]['steps'], '', '| blocks | threads | Δt [s] | interactions (real) | steps/s | µs per block-step | median window | rounds | speed-up |',
+	    '|---|---|---|---|---|---|---|---|---|'
+	]
+	for r in collapse:
+		one = next(x for x in collapse if x['threads'] == 1)
+		lines.append('| %d | %d | %.3g | %d (%d) | %.0f | %.3f | %.3f | %s | %.2f |' % (r['bodies'], r['threads'], r['dt'], r['interactions'], r['contacts'], r['stepsPerSecond'],
+		                                                                           r['usPerBodyStep'], r['usPerBodyStepMedian'], rounds(r), r['stepsPerSecond'] / one['stepsPerSecond']))
+	lines.append('')
 if misses:
 	lines += [
 	    '## Memory traffic beyond the cache (deterministic)', '',

@@ -5,16 +5,18 @@
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
+#include <pkg/rdem/RdemContactGate.hpp>
 #include <pkg/rdem/RdemPrefetch.hpp>
 #include <pkg/rdem/math/BlockGeometry.hpp>
 #include <pkg/rdem/math/SegmentGrid.hpp>
+#include <pkg/rdem/math/SeparationBound.hpp>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
 namespace yade {
 
-YADE_PLUGIN((Ig2_RdemBlock_RdemBlock_RdemGeom));
+YADE_PLUGIN((Ig2_RdemBlock_RdemBlock_RdemGeom)(RdemGap));
 CREATE_LOGGER(Ig2_RdemBlock_RdemBlock_RdemGeom);
 
 namespace {
@@ -134,6 +136,64 @@ void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom
 		        "Ig2_RdemBlock_RdemBlock_RdemGeom.prefetchDistance = " + std::to_string(prefetchDistance) + ": must be -1 (automatic), 0 (off) or > 0");
 }
 
+bool Ig2_RdemBlock_RdemBlock_RdemGeom::stillApart(const Interaction& I) const
+{
+	if (!I.geom || !travel || !travel->currentFor(*scene) || I.geom->getClassIndex() != RdemGap::getClassIndexStatic()) return false;
+	const auto& gap = static_cast<const RdemGap&>(*I.geom);
+	return gap.epoch == travel->epoch && travel->travel[size_t(I.getId1())] + travel->travel[size_t(I.getId2())] < gap.reach;
+}
+
+bool Ig2_RdemBlock_RdemBlock_RdemGeom::bond(const Block& A, const Block& B, const shared_ptr<Interaction>& I) const
+{
+	const Real gapTol = bondGapTolerance * math::min(A.half.minCoeff(), B.half.minCoeff());
+	const auto face   = rdem::findSharedFace<Real>(A, B, gapTol, Real(1e-6));
+	if (!face.found) return false;
+	auto g            = shared_ptr<RdemGeom>(new RdemGeom);
+	g->samplesPerEdge = segmentsPerEdge;
+	g->bonded         = true;
+	g->ell1           = A.half[face.axisA];
+	g->ell2           = B.half[face.axisB];
+	g->joint          = joint;
+	g->segNormal1     = A.rot.transpose() * face.normal;
+	g->segNormal2     = -(B.rot.transpose() * face.normal);
+	g->faceCentre1    = A.rot.transpose() * (face.centre - A.pos);
+	g->faceCentre2    = B.rot.transpose() * (face.centre - B.pos);
+	// Segment half-size vectors along t₁ and t₂ = n × t₁ (n: body 1's outward normal), in both body frames.
+	const Vector3r u = face.h1 / segmentsPerEdge * face.t1, v = face.h2 / segmentsPerEdge * face.normal.cross(face.t1);
+	g->segHalf1u = A.rot.transpose() * u;
+	g->segHalf1v = A.rot.transpose() * v;
+	g->segHalf2u = B.rot.transpose() * u;
+	g->segHalf2v = B.rot.transpose() * v;
+	I->geom      = g;
+	return true;
+}
+
+bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& B, const State& s1, const State& s2, const shared_ptr<Interaction>& I)
+{
+	const rdem::BlockPair<Real> pair(A, B);
+	const Real                  tol = touchTolerance(A, B);
+	if (!rdem::blocksOverlap<Real>(pair, tol)) {
+		// Apart: a certificate of how long they stay so (rdem::separationSlack), if the blocks' travel is recorded.
+		const Real slack = skipApart && travel && travel->currentFor(*scene) ? rdem::separationSlack<Real>(pair, tol) : Real(-1);
+		if (slack > 0) {
+			if (!I->geom || I->geom->getClassIndex() != RdemGap::getClassIndexStatic()) I->geom = shared_ptr<RdemGap>(new RdemGap);
+			auto& gap = static_cast<RdemGap&>(*I->geom);
+			gap.reach = travel->travel[size_t(I->getId1())] + travel->travel[size_t(I->getId2())] + slack;
+			gap.epoch = travel->epoch;
+		}
+		return false;
+	}
+	RdemGeom probe;
+	probe.samplesPerEdge = contactSamples();
+	sampleContacts(pair, s1, s2, tol, contactSamples(), probe);
+	if (probe.sampleKey.empty()) return false;
+	auto g  = shared_ptr<RdemGeom>(new RdemGeom(probe));
+	g->ell1 = faceDistance(A, probe.sampleNormal[0]);
+	g->ell2 = faceDistance(B, probe.sampleNormal[0]);
+	I->geom = g; // replaces a certificate that no longer holds
+	return true; // samples of this step are already in place
+}
+
 bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
         const shared_ptr<Shape>&       shape1,
         const shared_ptr<Shape>&       shape2,
@@ -146,52 +206,20 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	// The first functor of every interaction: asks for the data of the interactions that follow (RdemPrefetch.hpp).
 	if (const int distance = rdem::prefetchDistanceFor(prefetchDistance, scene->interactions->size()))
 		rdem::prefetchInteractionsAhead(*scene, *I, distance);
-	if (I->geom && static_cast<RdemGeom*>(I->geom.get())->bonded)
+	// A real interaction has the RdemGeom this functor made; a potential one has no geometry or an RdemGap.
+	if (I->phys && static_cast<RdemGeom*>(I->geom.get())->bonded)
 		return true; // bonded: the law takes the segments' kinematics from the blocks' states (RdemGeom::kinematics)
+	if (!I->phys && !force && stillApart(*I)) {
+		skippedTests += 1;
+		return false;
+	}
 	const Block A { state1.pos, state1.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape1.get())->extents };
 	const Block B { state2.pos + shift2, state2.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape2.get())->extents };
+	if (!I->phys) return force ? bond(A, B, I) : findContact(A, B, state1, state2, I);
+
 	const rdem::BlockPair<Real> pair(A, B);
 	const Real                  tol = touchTolerance(A, B);
-
-	if (!I->geom) {
-		if (force) {
-			// Bonding (utils.createInteraction): the shared face, cut into n×n segments.
-			const Real gapTol = bondGapTolerance * math::min(A.half.minCoeff(), B.half.minCoeff());
-			const auto face   = rdem::findSharedFace<Real>(A, B, gapTol, Real(1e-6));
-			if (!face.found) return false;
-			auto g            = shared_ptr<RdemGeom>(new RdemGeom);
-			g->samplesPerEdge = segmentsPerEdge;
-			g->bonded         = true;
-			g->ell1           = A.half[face.axisA];
-			g->ell2           = B.half[face.axisB];
-			g->joint          = joint;
-			g->segNormal1     = A.rot.transpose() * face.normal;
-			g->segNormal2     = -(B.rot.transpose() * face.normal);
-			g->faceCentre1    = A.rot.transpose() * (face.centre - A.pos);
-			g->faceCentre2    = B.rot.transpose() * (face.centre - B.pos);
-			// Segment half-size vectors along t₁ and t₂ = n × t₁ (n: body 1's outward normal), in both body frames.
-			const Vector3r u = face.h1 / segmentsPerEdge * face.t1, v = face.h2 / segmentsPerEdge * face.normal.cross(face.t1);
-			g->segHalf1u = A.rot.transpose() * u;
-			g->segHalf1v = A.rot.transpose() * v;
-			g->segHalf2u = B.rot.transpose() * u;
-			g->segHalf2v = B.rot.transpose() * v;
-			I->geom      = g;
-			return true;
-		} else {
-			if (!rdem::blocksOverlap<Real>(pair, tol)) return false;
-			RdemGeom probe;
-			probe.samplesPerEdge = contactSamples();
-			sampleContacts(pair, state1, state2, tol, contactSamples(), probe);
-			if (probe.sampleKey.empty()) return false;
-			auto g  = shared_ptr<RdemGeom>(new RdemGeom(probe));
-			g->ell1 = faceDistance(A, probe.sampleNormal[0]);
-			g->ell2 = faceDistance(B, probe.sampleNormal[0]);
-			I->geom = g;
-			return true; // samples of this step are already in place
-		}
-	}
-
-	RdemGeom& g = *static_cast<RdemGeom*>(I->geom.get());
+	RdemGeom&                   g   = *static_cast<RdemGeom*>(I->geom.get());
 	g.clearSamples();
 	if (rdem::blocksOverlap<Real>(pair, tol)) sampleContacts(pair, state1, state2, tol, g.samplesPerEdge, g);
 	return true; // a real interaction stays; the law erases it when no sample is in contact

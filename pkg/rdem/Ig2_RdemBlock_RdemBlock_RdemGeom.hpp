@@ -6,11 +6,35 @@
 *************************************************************************/
 #pragma once
 
+#include <lib/base/openmp-accu.hpp>
 #include <core/Dispatching.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
+#include <pkg/rdem/math/BlockGeometry.hpp>
 
 namespace yade {
+
+namespace rdem {
+	struct BodyTravel;
+}
+
+/// A pair of blocks the collider found near each other but that are apart, and how long they stay so.
+class RdemGap : public IGeom {
+public:
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemGap,IGeom,R"""(Certificate of a pair of :yref:`RdemBlock` that the collider found near each other (their bounding boxes overlap) but that are apart: the geometry of a potential, not real, interaction (it has no physics), made by :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom` with :yref:`skipApart<Ig2_RdemBlock_RdemBlock_RdemGeom::skipApart>`.
+
+The blocks cannot overlap before the projections of both on one separating axis have grown by the slack $s$ (``rdem::separationSlack``), and every point of a block moves at most its travel, recorded by :yref:`RdemContactGate` (``rdem::rigidTravel`` summed over steps). The functor tests the pair again only once the travels $T_1+T_2$ of its two blocks reach ``reach`` $=T_1+T_2+s$ at the time of the certificate (doc/performance.md). Not saved: a loaded scene tests every pair again.)""",
+		((Real,reach,0,(Attr::noSave|Attr::readonly),"Summed travel of the two blocks up to which they stay apart [m]."))
+		((long,epoch,-1,(Attr::noSave|Attr::readonly),"The travel record the certificate refers to (-1: none, the pair is tested)."))
+		,
+		/* ctor */ createIndex();
+		,
+	);
+	// clang-format on
+	REGISTER_CLASS_INDEX(RdemGap, IGeom);
+};
+REGISTER_SERIALIZABLE(RdemGap);
 
 /// Bonds face-adjacent blocks (on utils.createInteraction) and finds contacts between blocks that are not bonded.
 class Ig2_RdemBlock_RdemBlock_RdemGeom : public IGeomFunctor {
@@ -26,6 +50,8 @@ public:
 	void postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom&);
 	/// The sample grid of sampled contacts: contactSamplesPerEdge, or segmentsPerEdge if that is 0.
 	int contactSamples() const { return contactSamplesPerEdge > 0 ? contactSamplesPerEdge : segmentsPerEdge; }
+	/// How far each block has moved, set by RdemContactGate at each step of contact detection (null: pairs not skipped).
+	shared_ptr<const rdem::BodyTravel> travel;
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(Ig2_RdemBlock_RdemBlock_RdemGeom,IGeomFunctor,R"""(Geometry functor of two :yref:`RdemBlock`, producing :yref:`RdemGeom`.
 
@@ -38,12 +64,23 @@ Not for periodic cells with shear (``shift2`` of the cell is honoured, the cell'
 		((int,contactSamplesPerEdge,0,Attr::triggerPostLoad,"$m$: the sample grid of sampled contacts (blocks that are not bonded) is $(m+1)\\times(m+1)$ points per face, trapezoid weights; 0 (default): $m$ = ``segmentsPerEdge``. $m=1$ samples the vertices only, as the contacts of the distinct element codes (UDEC, 3DEC): rocking impacts then follow Housner's angular momentum balance about the new corner (doc/theory.md §4.2), while interior samples of the base face store impact energy in their springs and give it back as the block rolls onto the new corner. $m\\ge 0$."))
 		((Real,bondGapTolerance,1e-6,Attr::triggerPostLoad,"Largest gap or overlap between two faces that are bonded, relative to the smaller half-extent of the two blocks."))
 		((shared_ptr<RdemJoint>,joint,,,"The :yref:`RdemJoint` given to the bonds made from now on (by ``utils.createInteraction``), or None (default): blocks bonded directly. ``rdem.bond(..., joint=...)`` sets it for its bonds and resets it."))
+		((bool,skipApart,true,,"Test a pair of blocks found apart again only once they may have moved enough to touch (:yref:`RdemGap`, with the travel recorded by :yref:`RdemContactGate`): after the first crack, the collider's pairs of grid neighbours that are apart by a strain-sized gap cost a few loads per step instead of a separating-axis test (doc/performance.md). Exact: the pairs skipped are those the test would find apart, so results do not depend on it."))
+		((OpenMPAccumulator<Real>,skippedTests,,Attr::readonly,"Separating-axis tests saved so far by :yref:`RdemGap` certificates (pairs found apart and not tested again in a step); counted as a real number."))
 		((int,prefetchDistance,-1,Attr::triggerPostLoad,"How many interactions ahead of the one being processed this functor asks the processor to fetch the data of (interaction, geometry, physics, bodies and their states, in stages; ``pkg/rdem/RdemPrefetch.hpp``), to hide the memory latency of scenes larger than the cache (doc/performance.md, fifth round). $-1$ (default): automatic, 8 once the interactions' data exceed the last-level cache, else off; 0: off; $>0$: always, at this distance. A hint only: results do not depend on it. $\\ge -1$."))
 	);
 	// clang-format on
 	FUNCTOR2D(RdemBlock, RdemBlock);
 	DEFINE_FUNCTOR_ORDER_2D(RdemBlock, RdemBlock);
 	DECLARE_LOGGER;
+
+private:
+	/// Whether I is a pair found apart whose RdemGap still holds for the blocks' travel in this step.
+	bool stillApart(const Interaction& I) const;
+	/// Bonding (utils.createInteraction): the shared face of A and B cut into segmentsPerEdge² segments; false if none.
+	bool bond(const rdem::OrientedBlock<Real>& A, const rdem::OrientedBlock<Real>& B, const shared_ptr<Interaction>& I) const;
+	/// A pair that is not a real interaction: a new contact if samples of either block lie inside the other; else
+	/// false, with a new certificate (RdemGap) if the blocks are apart and skipApart is on.
+	bool findContact(const rdem::OrientedBlock<Real>& A, const rdem::OrientedBlock<Real>& B, const State& s1, const State& s2, const shared_ptr<Interaction>& I);
 };
 REGISTER_SERIALIZABLE(Ig2_RdemBlock_RdemBlock_RdemGeom);
 

@@ -8,7 +8,11 @@
 #include <core/Scene.hpp>
 #include <pkg/common/Collider.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
+#include <core/InteractionLoop.hpp>
+#include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
+#include <pkg/rdem/math/SeparationBound.hpp>
+#include <atomic>
 #include <numeric>
 
 namespace yade {
@@ -24,6 +28,68 @@ namespace {
 			x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
 		return x;
 	}
+
+	/// Epochs of travel records, unique in the process: a certificate made against one record never matches another.
+	std::atomic<long> lastEpoch { 0 };
+
+	/// Circumradius of a body's block about its centroid [m]; 0 for other shapes (the functor sees only blocks).
+	Real blockRadius(const Shape* shape)
+	{
+		const auto* block = dynamic_cast<const RdemBlock*>(shape);
+		return block ? block->extents.norm() : Real(0);
+	}
+}
+
+bool rdem::BodyTravel::currentFor(const Scene& scene) const { return iter == scene.iter && !scene.isPeriodic && epoch >= 0; }
+
+void RdemContactGate::updateTravel()
+{
+	rdem::BodyTravel& t       = *travel;
+	const long        nBodies = long(scene->bodies->size());
+	bool              restart = t.iter != scene->iter - 1 || long(t.travel.size()) != nBodies;
+	if (restart) {
+		t.travel.assign(size_t(nBodies), 0);
+		t.body.assign(size_t(nBodies), nullptr);
+		t.shape.assign(size_t(nBodies), nullptr);
+		t.pos.resize(size_t(nBodies));
+		t.ori.resize(size_t(nBodies));
+		t.radius.assign(size_t(nBodies), 0);
+	}
+	// A body or shape that is not the one seen in the last step (erased, replaced, first step) restarts the record.
+	bool replaced = false;
+#ifdef YADE_OPENMP
+#pragma omp parallel for schedule(static) reduction(|| : replaced)
+#endif
+	for (long id = 0; id < nBodies; ++id) {
+		const Body* b = Body::byId(Body::id_t(id), scene).get();
+		if (!b) {
+			replaced = replaced || t.body[size_t(id)];
+			t.body[size_t(id)] = nullptr;
+			continue;
+		}
+		const State& s = *b->state;
+		// The same body and shape as in the last step, and a block's extents not changed in place (radius > 0: a block).
+		const bool same = b == t.body[size_t(id)] && b->shape.get() == t.shape[size_t(id)]
+		        && !(t.radius[size_t(id)] > 0 && static_cast<const RdemBlock*>(b->shape.get())->extents.norm() != t.radius[size_t(id)]);
+		if (!same) {
+			replaced              = true;
+			t.body[size_t(id)]    = b;
+			t.shape[size_t(id)]   = b->shape.get();
+			t.radius[size_t(id)]  = blockRadius(b->shape.get());
+		} else
+			t.travel[size_t(id)] += rdem::rigidTravel<Real>(t.pos[size_t(id)], t.ori[size_t(id)], s.pos, s.ori, t.radius[size_t(id)]);
+		t.pos[size_t(id)] = s.pos;
+		t.ori[size_t(id)] = s.ori;
+	}
+	if (restart || replaced) {
+		std::fill(t.travel.begin(), t.travel.end(), Real(0));
+		t.epoch = ++lastEpoch;
+	}
+	t.iter = scene->iter;
+	for (const auto& e : scene->engines)
+		if (const auto* loop = dynamic_cast<const InteractionLoop*>(e.get()))
+			for (const auto& f : loop->geomDispatcher->functors)
+				if (auto* ig2 = dynamic_cast<Ig2_RdemBlock_RdemBlock_RdemGeom*>(f.get())) ig2->travel = travel;
 }
 
 string RdemContactGate::topologyReason() const
@@ -71,6 +137,7 @@ void RdemContactGate::action()
 			reason = "opened by the user";
 			setColliders(false);
 		}
+		updateTravel();
 		return;
 	}
 	if (Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(scene) > 0) reason = "a restoring spring broke";
@@ -81,7 +148,10 @@ void RdemContactGate::action()
 	}
 	open = !reason.empty();
 	setColliders(!open);
-	if (open) LOG_INFO("contact detection on from iteration " << scene->iter << ": " << reason);
+	if (open) {
+		LOG_INFO("contact detection on from iteration " << scene->iter << ": " << reason);
+		updateTravel();
+	}
 }
 
 } // namespace yade
