@@ -124,7 +124,8 @@ namespace {
 void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom&)
 {
 	if (segmentsPerEdge < 1)
-		throw std::invalid_argument("Ig2_RdemBlock_RdemBlock_RdemGeom.segmentsPerEdge = " + std::to_string(segmentsPerEdge) + ": must be an integer >= 1");
+		throw std::invalid_argument(
+		        "Ig2_RdemBlock_RdemBlock_RdemGeom.segmentsPerEdge = " + std::to_string(segmentsPerEdge) + ": must be an integer >= 1");
 	if (contactSamplesPerEdge < 0)
 		throw std::invalid_argument(
 		        "Ig2_RdemBlock_RdemBlock_RdemGeom.contactSamplesPerEdge = " + std::to_string(contactSamplesPerEdge)

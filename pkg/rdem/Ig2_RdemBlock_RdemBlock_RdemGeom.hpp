@@ -80,7 +80,8 @@ private:
 	bool bond(const rdem::OrientedBlock<Real>& A, const rdem::OrientedBlock<Real>& B, const shared_ptr<Interaction>& I) const;
 	/// A pair that is not a real interaction: a new contact if samples of either block lie inside the other; else
 	/// false, with a new certificate (RdemGap) if the blocks are apart and skipApart is on.
-	bool findContact(const rdem::OrientedBlock<Real>& A, const rdem::OrientedBlock<Real>& B, const State& s1, const State& s2, const shared_ptr<Interaction>& I);
+	bool
+	findContact(const rdem::OrientedBlock<Real>& A, const rdem::OrientedBlock<Real>& B, const State& s1, const State& s2, const shared_ptr<Interaction>& I);
 };
 REGISTER_SERIALIZABLE(Ig2_RdemBlock_RdemBlock_RdemGeom);
 

@@ -4,13 +4,13 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
-#include <pkg/rdem/RdemContactGate.hpp>
+#include <core/InteractionLoop.hpp>
 #include <core/Scene.hpp>
 #include <pkg/common/Collider.hpp>
-#include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
-#include <core/InteractionLoop.hpp>
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
+#include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
+#include <pkg/rdem/RdemContactGate.hpp>
 #include <pkg/rdem/math/SeparationBound.hpp>
 #include <atomic>
 #include <numeric>
@@ -63,7 +63,7 @@ void RdemContactGate::updateTravel()
 	for (long id = 0; id < nBodies; ++id) {
 		const Body* b = Body::byId(Body::id_t(id), scene).get();
 		if (!b) {
-			replaced = replaced || t.body[size_t(id)];
+			replaced           = replaced || t.body[size_t(id)];
 			t.body[size_t(id)] = nullptr;
 			continue;
 		}
@@ -72,10 +72,10 @@ void RdemContactGate::updateTravel()
 		const bool same = b == t.body[size_t(id)] && b->shape.get() == t.shape[size_t(id)]
 		        && !(t.radius[size_t(id)] > 0 && static_cast<const RdemBlock*>(b->shape.get())->extents.norm() != t.radius[size_t(id)]);
 		if (!same) {
-			replaced              = true;
-			t.body[size_t(id)]    = b;
-			t.shape[size_t(id)]   = b->shape.get();
-			t.radius[size_t(id)]  = blockRadius(b->shape.get());
+			replaced             = true;
+			t.body[size_t(id)]   = b;
+			t.shape[size_t(id)]  = b->shape.get();
+			t.radius[size_t(id)] = blockRadius(b->shape.get());
 		} else
 			t.travel[size_t(id)] += rdem::rigidTravel<Real>(t.pos[size_t(id)], t.ori[size_t(id)], s.pos, s.ori, t.radius[size_t(id)]);
 		t.pos[size_t(id)] = s.pos;
@@ -104,7 +104,7 @@ string RdemContactGate::topologyReason() const
 		if (!g || g->nSegments() == 0)
 			return "interaction #" + std::to_string(I->getId1()) + "+#" + std::to_string(I->getId2()) + " is a contact, not a bond";
 		bonded[size_t(I->getId1())] = bonded[size_t(I->getId2())] = 1;
-		parent[size_t(findRoot(parent, I->getId1()))] = findRoot(parent, I->getId2());
+		parent[size_t(findRoot(parent, I->getId1()))]             = findRoot(parent, I->getId2());
 	}
 	long root = -1, nBlocks = 0;
 	for (long id = 0; id < nb; ++id) {

@@ -17,14 +17,14 @@ namespace rdem {
 	   read by Ig2_RdemBlock_RdemBlock_RdemGeom to know when a pair found apart must be tested again
 	   (math/SeparationBound.hpp). */
 	struct BodyTravel {
-		long                iter  = -1; ///< the step whose configurations travel is up to date with (-1: none yet)
-		long                epoch = -1; ///< changes whenever the record restarts: a certificate of another epoch is void
-		vector<Real>        travel;     ///< by body id [m]
-		vector<const Body*> body;       ///< by body id: the configuration last seen (body, its shape, position, orientation)
+		long                 iter  = -1; ///< the step whose configurations travel is up to date with (-1: none yet)
+		long                 epoch = -1; ///< changes whenever the record restarts: a certificate of another epoch is void
+		vector<Real>         travel;     ///< by body id [m]
+		vector<const Body*>  body;       ///< by body id: the configuration last seen (body, its shape, position, orientation)
 		vector<const Shape*> shape;
-		vector<Vector3r>    pos;
-		vector<Quaternionr> ori;
-		vector<Real>        radius;     ///< circumradius of the block about its centroid, 0 for other shapes [m]
+		vector<Vector3r>     pos;
+		vector<Quaternionr>  ori;
+		vector<Real>         radius; ///< circumradius of the block about its centroid, 0 for other shapes [m]
 		/// Whether the record holds the configurations of step iter of a scene that is not periodic.
 		bool currentFor(const Scene& scene) const;
 	};

@@ -75,9 +75,9 @@ TEST(SeparationBound, TravelBoundsEveryVertexAndIsTightForSmallRotations)
 	}
 	// A rotation by θ = 1e-3 about an axis normal to a vertex's arm moves that vertex by the chord 2ρ sin(θ/2); the bound
 	// 4ρ sin(θ/4) exceeds it by 1/cos(θ/4) - 1 ≈ θ²/32 = 3e-8 relative.
-	const V3 h(0.5, 0.5, 0.5);
-	const Q  q0   = Q::Identity();
-	const Q  q1   = Q(Eigen::AngleAxisd(1e-3, V3(1, -1, 0).normalized()));
+	const V3     h(0.5, 0.5, 0.5);
+	const Q      q0    = Q::Identity();
+	const Q      q1    = Q(Eigen::AngleAxisd(1e-3, V3(1, -1, 0).normalized()));
 	const double exact = vertexTravel(h, V3::Zero(), q0, V3::Zero(), q1);
 	EXPECT_NEAR(exact, 2 * h.norm() * std::sin(0.5e-3), 1e-15);
 	EXPECT_NEAR(rdem::rigidTravel<double>(V3::Zero(), q0, V3::Zero(), q1, h.norm()) / exact - 1, 0, 1e-7);
@@ -118,12 +118,12 @@ TEST(SeparationBound, CertifiedPairsStayApartUnderAnyMotionWithinTheSlack)
 	std::mt19937 gen(17);
 	int          certified = 0;
 	for (int k = 0; k < 4000; ++k) {
-		const Block A { V3(uniform(gen, -0.5, 0.5), uniform(gen, -0.5, 0.5), uniform(gen, -0.5, 0.5)),
-			        randomRotation(gen).toRotationMatrix(),
-			        V3(uniform(gen, 0.2, 1), uniform(gen, 0.2, 1), uniform(gen, 0.2, 1)) };
-		const Block B { V3(uniform(gen, -2, 2), uniform(gen, -2, 2), uniform(gen, -2, 2)),
-			        randomRotation(gen).toRotationMatrix(),
-			        V3(uniform(gen, 0.2, 1), uniform(gen, 0.2, 1), uniform(gen, 0.2, 1)) };
+		const Block                   A { V3(uniform(gen, -0.5, 0.5), uniform(gen, -0.5, 0.5), uniform(gen, -0.5, 0.5)),
+                                randomRotation(gen).toRotationMatrix(),
+                                V3(uniform(gen, 0.2, 1), uniform(gen, 0.2, 1), uniform(gen, 0.2, 1)) };
+		const Block                   B { V3(uniform(gen, -2, 2), uniform(gen, -2, 2), uniform(gen, -2, 2)),
+                                randomRotation(gen).toRotationMatrix(),
+                                V3(uniform(gen, 0.2, 1), uniform(gen, 0.2, 1), uniform(gen, 0.2, 1)) };
 		const rdem::BlockPair<double> pair(A, B);
 		const double                  slack = rdem::separationSlack(pair, tol);
 		if (!(slack > 0)) continue;
@@ -131,7 +131,8 @@ TEST(SeparationBound, CertifiedPairsStayApartUnderAnyMotionWithinTheSlack)
 		ASSERT_FALSE(rdem::blocksOverlap(pair, tol)) << "pair " << k;
 		for (int m = 0; m < 20; ++m) {
 			// Rotation angles and shifts drawn, then scaled so that travel(A) + travel(B) = f · slack.
-			const Q      qa = Q(Eigen::AngleAxisd(uniform(gen, 0, 0.5), randomUnit(gen))), qb = Q(Eigen::AngleAxisd(uniform(gen, 0, 0.5), randomUnit(gen)));
+			const Q qa      = Q(Eigen::AngleAxisd(uniform(gen, 0, 0.5), randomUnit(gen))),
+			        qb      = Q(Eigen::AngleAxisd(uniform(gen, 0, 0.5), randomUnit(gen)));
 			const V3     sa = uniform(gen, 0, 1) * randomUnit(gen), sb = uniform(gen, 0, 1) * randomUnit(gen);
 			const double ta = rdem::rigidTravel<double>(V3::Zero(), Q::Identity(), sa, qa, A.half.norm());
 			const double tb = rdem::rigidTravel<double>(V3::Zero(), Q::Identity(), sb, qb, B.half.norm());
@@ -139,8 +140,8 @@ TEST(SeparationBound, CertifiedPairsStayApartUnderAnyMotionWithinTheSlack)
 			/* Rotation angles and shifts scaled by f: a travel grows by at most 1/f · sin(fθ/4)/sin(θ/4) ≤ (θ/4)/sin(θ/4) ≤
 			   1.0027 times f for θ ≤ 0.5, so the motion stays within 0.99 · 1.0027 < 1 of the slack (asserted below). */
 			const Eigen::AngleAxisd aa(qa), ab(qb);
-			const Block A2 = moved(A, f * sa, Q(Eigen::AngleAxisd(f * aa.angle(), aa.axis())));
-			const Block B2 = moved(B, f * sb, Q(Eigen::AngleAxisd(f * ab.angle(), ab.axis())));
+			const Block             A2 = moved(A, f * sa, Q(Eigen::AngleAxisd(f * aa.angle(), aa.axis())));
+			const Block             B2 = moved(B, f * sb, Q(Eigen::AngleAxisd(f * ab.angle(), ab.axis())));
 			ASSERT_LT(
 			        rdem::rigidTravel<double>(A.pos, Q(A.rot), A2.pos, Q(A2.rot), A.half.norm())
 			                + rdem::rigidTravel<double>(B.pos, Q(B.rot), B2.pos, Q(B2.rot), B.half.norm()),
@@ -153,7 +154,8 @@ TEST(SeparationBound, CertifiedPairsStayApartUnderAnyMotionWithinTheSlack)
 			axis.normalize();
 			if (axis.dot(B.pos - A.pos) < 0) axis = -axis; // from A to B
 			const double d = 0.999 * slack;
-			EXPECT_FALSE(rdem::blocksOverlap(rdem::BlockPair<double>(A, moved(B, -d * axis, Q::Identity())), tol)) << "pair " << k << ", axis " << i;
+			EXPECT_FALSE(rdem::blocksOverlap(rdem::BlockPair<double>(A, moved(B, -d * axis, Q::Identity())), tol))
+			        << "pair " << k << ", axis " << i;
 			EXPECT_FALSE(rdem::blocksOverlap(rdem::BlockPair<double>(moved(A, d * axis, Q::Identity()), B), tol)) << "pair " << k << ", axis " << i;
 		}
 	}

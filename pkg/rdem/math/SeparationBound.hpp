@@ -33,8 +33,7 @@ namespace rdem {
 	   q1 that makes q0·q1 ≥ 0, |q1 - q0| = 2 sin(θ/4) ≥ sin(θ/2) = 2 sin(θ/4) cos(θ/4). No trigonometric function: this
 	   runs for every block at every step of the contact phase. */
 	template <class S>
-	S rigidTravel(
-	        const Eigen::Matrix<S, 3, 1>& x0, const Eigen::Quaternion<S>& q0, const Eigen::Matrix<S, 3, 1>& x1, const Eigen::Quaternion<S>& q1, S rho)
+	S rigidTravel(const Eigen::Matrix<S, 3, 1>& x0, const Eigen::Quaternion<S>& q0, const Eigen::Matrix<S, 3, 1>& x1, const Eigen::Quaternion<S>& q1, S rho)
 	{
 		const S minus = (q1.coeffs() - q0.coeffs()).squaredNorm(), plus = (q1.coeffs() + q0.coeffs()).squaredNorm();
 		return (x1 - x0).norm() + 2 * rho * std::sqrt(std::min(minus, plus));
