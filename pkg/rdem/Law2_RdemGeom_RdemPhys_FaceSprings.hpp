@@ -10,6 +10,7 @@
 #include <core/Dispatching.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
+#include <pkg/rdem/math/FaceSprings.hpp>
 
 namespace yade {
 
@@ -45,6 +46,13 @@ With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemElastic`` (springs, current
 	);
 	// clang-format on
 	FUNCTOR2D(RdemGeom, RdemPhys);
+
+private:
+	/// The interaction's force f₂ on body 2 and moment t₂ about its centroid, and their reaction on body 1 (dx = x₂ - x₁):
+	/// left in p for RdemForceAssembler (deferForces) or added to the scene's force container.
+	void applyForces(const Interaction& I, RdemPhys& p, const Vector3r& f2, const Vector3r& t2, const Vector3r& dx);
+	/// Adds one interaction's energies of this step to O.energy.
+	void bookEnergies(const rdem::SpringEnergies<Real>& e);
 };
 REGISTER_SERIALIZABLE(Law2_RdemGeom_RdemPhys_FaceSprings);
 
