@@ -11,6 +11,7 @@
 #include <pkg/rdem/RdemMat.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
 #include <pkg/rdem/math/Elasticity.hpp>
+#include <pkg/rdem/math/Softening.hpp>
 
 namespace yade {
 
@@ -28,6 +29,8 @@ public:
 	/// Normal compliances per area (C₁, C₂) of the two sides of the bond g between blocks of materials a and b, from each
 	/// centroid to the joint's mid-plane, the joint's mortar included (rdem::bondSideCompliance) [m³/N]: k̄_n = 1/(C₁ + C₂).
 	static Vector2r normalCompliances(const RdemMat& a, const RdemMat& b, const RdemGeom& g, rdem::SpringModulus modulus);
+	/// The constants of the softening springs of a bond (doc/theory.md §2.1).
+	static rdem::SofteningConstants<Real> softeningConstants(const RdemPhys& p);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(Ip2_RdemMat_RdemMat_RdemPhys,IPhysFunctor,R"""(Physics functor of two :yref:`RdemMat`, producing :yref:`RdemPhys` once per interaction.
 
@@ -35,12 +38,26 @@ Per-area spring stiffness of each block from eq. 11, $k_n=M/\ell$, $k_s=E/(2(1+\
 
 ``formulation`` is the scene's one setting of the Poisson formulation: :yref:`RdemPoissonEngine` builds the elements or cells of that formulation and :yref:`RdemTimeStepper` bounds contacts with its modulus.)""",
 		((string,formulation,"paper",Attr::triggerPostLoad,"``'paper'``: springs $M=E/(1-\\nu^2)$ (eq. 11) and the paper's Poisson elements; ``'consistent'``: $M=\\lambda+2\\mu$, so that springs and Poisson elements or cells add up to the full isotropic tensor (doc/theory.md §5.2, §5.4)."))
+		((bool,softening,false,,"Restoring springs of new bonds soften (the composite interface model after Lourenço & Rots [LourencoRots1997]_, doc/theory.md §2.1): tension softening with ``fractureEnergy`` $G_f^I$, cohesion softening with ``shearFractureEnergy`` $G_f^{II}$ towards residual friction ``residualFrictionAngle``, a compression cap ``compressiveStrength`` with ``compressiveFractureEnergy``, each of the :yref:`RdemJoint` or else the weaker :yref:`RdemMat`; dissipated energy booked as ``rdemFractureTension``, ``rdemFractureShear``, ``rdemCrushing`` and ``rdemFriction``. False (default): the paper's brittle springs (eqs. 15-16). A bond whose springs would snap back ($\\bar k_n\\le f_t^2/(2G_f^I)$, blocks too large for $G_f$) is refused with an error."))
+		((Real,strengthCoV,0,Attr::triggerPostLoad,"Coefficient of variation $v\\ge 0$ of the strengths of new bonds: $f_t$, $c$, $f_c$ and the fracture energies of each bond are multiplied by one lognormal factor of mean 1 and CoV $v$ (``rdem::lognormalFactor``), drawn from ``seed`` and the bond's body ids (the same for a bond whatever the order bonds are made in; doc/theory.md §2.2). 0: uniform."))
+		((Real,stiffnessCoV,0,Attr::triggerPostLoad,"As ``strengthCoV``, for the spring stiffnesses $\\bar k_n$, $\\bar k_s$ of each bond (an independent factor)."))
+		((int,seed,0,,"Seed of ``strengthCoV`` and ``stiffnessCoV``: a fixed seed reproduces a scene bit for bit."))
 	);
 	// clang-format on
 	FUNCTOR2D(RdemMat, RdemMat);
 
 private:
 	rdem::SpringModulus modulus = rdem::SpringModulus::Paper; // formulation, parsed (not saved: postLoad sets it)
+	/// Lognormal factor of mean 1 and CoV cov of the bond I, from seed, its sorted body ids and the stream (0 strengths,
+	/// 1 stiffnesses): rdem::keyedNormal, rdem::lognormalFactor.
+	Real bondFactor(const Interaction& I, Real cov, int stream) const;
+	/// Multiplies every strength and fracture energy of p by f.
+	static void scaleStrengths(RdemPhys& p, Real f);
+	/// Switches p's springs to softening: the softening parameters of the joint (or the weaker material), per-segment state.
+	static void setSoftening(RdemPhys& p, const RdemMat& a, const RdemMat& b, const RdemJoint* joint, const Interaction& I);
+	/// Throws std::invalid_argument naming the joint's or materials' parameter if p's softening springs are inadmissible
+	/// (rdem::checkSoftening: snap-back, tension cut-off outside the Coulomb cone).
+	static void checkSoftening(const RdemPhys& p, const RdemMat& a, const RdemMat& b, const RdemJoint* joint);
 };
 REGISTER_SERIALIZABLE(Ip2_RdemMat_RdemMat_RdemPhys);
 

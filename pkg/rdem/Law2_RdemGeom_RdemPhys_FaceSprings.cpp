@@ -6,10 +6,12 @@
 *************************************************************************/
 #include <core/InteractionLoop.hpp>
 #include <core/Scene.hpp>
+#include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/RdemState.hpp>
 #include <pkg/rdem/math/BlockCells.hpp>
 #include <pkg/rdem/math/FaceSprings.hpp>
+#include <pkg/rdem/math/Softening.hpp>
 #include <limits>
 #include <type_traits>
 #include <utility>
@@ -19,9 +21,11 @@ namespace yade {
 YADE_PLUGIN((Law2_RdemGeom_RdemPhys_FaceSprings));
 
 /* How to read this file: Law2_RdemGeom_RdemPhys_FaceSprings::go (at the end) sends a bond to bondForces and a contact of
-   blocks that are not bonded to sampledContactForces. A bond's segments run one of two laws each step: restoringSpring
-   (an intact segment, eqs. 14-16) or brokenSegment (its contact spring, eqs. 13, 17). The physics of a point is in
-   pkg/rdem/math/FaceSprings.hpp (rdem::restoringStress, rdem::contactSpringForce), unit-tested there; this file turns
+   blocks that are not bonded to sampledContactForces. A bond's segments run one of three laws each step: restoringSpring
+   (an intact segment, eqs. 14-16), softeningSpring (an intact segment of a softening bond, doc/theory.md §2.1) or
+   brokenSegment (its contact spring, eqs. 13, 17). The physics of a point is in pkg/rdem/math/FaceSprings.hpp
+   (rdem::restoringStress, rdem::contactSpringForce) and pkg/rdem/math/Softening.hpp (rdem::softeningStep), unit-tested
+   there; this file turns
    the blocks' motion into their arguments and their results into forces, moments, counters and energies. */
 namespace {
 	using Energies = rdem::SpringEnergies<Real>;
@@ -73,12 +77,12 @@ namespace {
 		}
 
 		/// Contact spring of a point of area A [m²] at C with normal n (eqs. 13, 17): p's constants per area times the
-		/// weighted area, dashpots capped (dashpotCap) for the point's share of the contact area.
-		rdem::ContactConstants<Real> contactConstants(const RdemPhys& p, Real area, const Vector3r& C, const Vector3r& n, Real share) const
+		/// weighted area, dashpots capped (dashpotCap) for the point's share of the contact area; friction tanPhi.
+		rdem::ContactConstants<Real> contactConstants(const RdemPhys& p, Real area, const Vector3r& C, const Vector3r& n, Real share, Real tanPhi) const
 		{
 			const Real     an = p.weightNormal * area, as = p.weightShear * area;
 			const Vector2r cMax = dashpotCap(C, n, share);
-			return { p.kn * an, p.ks * as, math::min(p.cn * an, cMax[0]), math::min(p.cs * as, cMax[1]), p.tanFriction };
+			return { p.kn * an, p.ks * as, math::min(p.cn * an, cMax[0]), math::min(p.cs * as, cMax[1]), tanPhi };
 		}
 	};
 
@@ -208,6 +212,61 @@ namespace {
 		return false;
 	}
 
+	/* The softening spring of intact segment i at (s, r) (rdem::softeningStep, doc/theory.md §2.1), with opening un and
+	   shear elongation ust [m]; its plastic slip is kept in body 1's frame, so that it turns with the pair. Adds its force
+	   -(w_n σ n + w_s τ)A and the dissipation of the step (weighted by w_n for tension and crushing, w_s for shear and
+	   friction, as the forces); returns false if it broke in this step (ξ reached 1): the contact spring takes over its
+	   shear stress, and the elastic energy it cannot take (the segment apart) is released. */
+	template <bool withCells>
+	bool softeningSpring(
+	        BondStep&                             b,
+	        RdemPhys&                             p,
+	        const rdem::SofteningConstants<Real>& k,
+	        size_t                                i,
+	        Real                                  s,
+	        Real                                  r,
+	        Real                                  un,
+	        const Vector3r&                       ust,
+	        Energies&                             e,
+	        Breaks&                               breaks)
+	{
+		rdem::SofteningState<Real>       st { p.segCrack[i], p.segCrush[i], p.segSoftening[i], p.segSlip[i] };
+		rdem::SofteningDissipation<Real> d;
+		const auto                       stress = rdem::softeningStep<Real>(k, un, b.R1.transpose() * ust, withCells ? b.sigmaCells : Real(0), st, d);
+		const Vector3r                   tauG   = b.R1 * stress.tau;
+		const Vector3r                   tau    = tauG - tauG.dot(b.n) * b.n; // in the current tangent plane
+		p.segCrack[i]                           = st.crack;
+		p.segCrush[i]                           = st.crush;
+		p.segSoftening[i]                       = st.xi;
+		p.segSlip[i]                            = st.slip;
+		e.softening                             = true;
+		e.fractureTension += b.wn * b.A * d.tension;
+		e.crushing += b.wn * b.A * d.crushing;
+		e.fractureShear += b.ws * b.A * d.shear;
+		e.friction += b.ws * b.A * d.friction;
+		const Real elastic = b.A * (b.wn * stress.sigma * stress.sigma / k.kn + b.ws * tau.squaredNorm() / k.ks) / 2;
+		if (stress.state == rdem::SegmentState::Intact) {
+			b.applyAt(-(b.wn * stress.sigma * b.n + b.ws * tau) * b.A, s, r);
+			if (withCells) b.tSum += b.ws * b.A * tau;
+			p.segSigma[i]         = stress.sigma;
+			p.segTau[i]           = tau.norm();
+			b.anyIntactOrTouching = true;
+			if (b.pair.trackEnergy) e.elastic += elastic;
+			return true;
+		}
+		p.segState[i] = int(stress.state);
+		if (stress.state == rdem::SegmentState::BrokenTension) breaks.tension += 1;
+		else
+			breaks.shear += 1;
+		const Vector3r us = ust + (withCells ? b.slip : Vector3r::Zero());
+		if (b.touching(un, us)) p.segShear[i] = tau / k.ks; // the contact spring carries on with the residual friction
+		else {
+			p.segShear[i] = Vector3r::Zero();
+			e.bondBreak += elastic;
+		}
+		return false;
+	}
+
 	/* The contact spring of broken segment i at (s, r) with opening un and shear displacement us [m] (eqs. 13, 17,
 	   rdem::contactSpringForce) while it touches; zero otherwise. Its dashpot force is kept for the energy balance (the
 	   array is sized here, not for every bond and step: an intact bond never reads its header). */
@@ -220,10 +279,11 @@ namespace {
 			p.segSigma[i] = p.segTau[i] = 0;
 			return;
 		}
-		const Vector3r r2    = b.kin.arm(s, r);
-		const Real     share = b.contactArea > 0 ? b.A / b.contactArea : Real(1); // a segment broken in this step joins now
-		const auto     k     = b.pair.contactConstants(p, b.A, b.pair.x2 + r2, b.n, share);
-		const Vector3r F     = rdem::contactSpringForce<Real>(
+		const Vector3r r2     = b.kin.arm(s, r);
+		const Real     share  = b.contactArea > 0 ? b.A / b.contactArea : Real(1);   // a segment broken in this step joins now
+		const Real     tanPhi = p.softening ? p.tanResidualFriction : p.tanFriction; // a softened bond slides on its residual friction
+		const auto     k      = b.pair.contactConstants(p, b.A, b.pair.x2 + r2, b.n, share, tanPhi);
+		const Vector3r F      = rdem::contactSpringForce<Real>(
                         k, -un, b.n, b.pair.relativeVelocity(r2), b.pair.dt, p.segShear[i], p.segDashpot[i], b.pair.trackEnergy, e);
 		b.applyAt(F, s, r);
 		p.segSigma[i]         = -F.dot(b.n) / (p.weightNormal * b.A);
@@ -247,6 +307,21 @@ namespace {
 		});
 	}
 
+	/// segmentForces of a softening bond: softeningSpring in place of restoringSpring.
+	template <bool withCells> void softeningSegmentForces(BondStep& b, RdemPhys& p, Energies& e, Breaks& breaks)
+	{
+		const auto k = Ip2_RdemMat_RdemMat_RdemPhys::softeningConstants(p);
+		forSegments(b.g.samplesPerEdge, [&](size_t i, Real s, Real r) {
+			const Vector3r d  = b.kin.displacement(s, r);
+			const Real     un = d.dot(b.n);
+			const Vector3r us = d - un * b.n;
+			if (p.segState[i] == int(rdem::SegmentState::Intact)
+			    && softeningSpring<withCells>(b, p, k, i, s, r, un, withCells ? Vector3r(us - b.slip) : us, e, breaks))
+				return;
+			brokenSegment(b, p, i, s, r, un, us, e);
+		});
+	}
+
 	/* A bond (paper §3): its segments' forces into out, and, with the cells' offset correction, the correction's
 	   reaction on the cells that made the strains (RdemPhys::offsetGrad1/2, summed by RdemPoissonEngine). Returns false
 	   when every segment is broken and none is in contact: the bond is released (the interaction is reset) and the
@@ -261,7 +336,13 @@ namespace {
 		const Matrix3r R12    = offset ? Matrix3r(b.R1.transpose() * b.R2) : Matrix3r::Identity();
 		b.slip                = offset ? cellOffsetSlip(pair.s1, pair.s2, b.R1, R12, g, p, b.n) : Vector3r::Zero();
 		b.sigmaCells          = totalStress ? cellNormalStress(pair.s1, pair.s2, g, p) : Real(0);
-		if (offset || totalStress) segmentForces<true>(b, p, e, breaks);
+		const bool withCells  = offset || totalStress;
+		if (p.softening) {
+			if (withCells) softeningSegmentForces<true>(b, p, e, breaks);
+			else
+				softeningSegmentForces<false>(b, p, e, breaks);
+		} else if (withCells)
+			segmentForces<true>(b, p, e, breaks);
 		else
 			segmentForces<false>(b, p, e, breaks);
 		out.f += b.fSum;
@@ -293,10 +374,11 @@ namespace {
 		for (Real a : g.sampleArea)
 			contactArea += a;
 		for (size_t k = 0; k < g.sampleKey.size(); ++k) {
-			const size_t key     = size_t(g.sampleKey[k]);
-			p.sampleOffset[key]  = p.sampleActive[key] ? math::min(p.sampleOffset[key], g.sampleDepth[k]) : g.sampleDepth[k];
-			active[key]          = 1;
-			const auto     c     = pair.contactConstants(p, g.sampleArea[k], g.samplePoint[k], g.sampleNormal[k], g.sampleArea[k] / contactArea);
+			const size_t key    = size_t(g.sampleKey[k]);
+			p.sampleOffset[key] = p.sampleActive[key] ? math::min(p.sampleOffset[key], g.sampleDepth[k]) : g.sampleDepth[k];
+			active[key]         = 1;
+			const auto c
+			        = pair.contactConstants(p, g.sampleArea[k], g.samplePoint[k], g.sampleNormal[k], g.sampleArea[k] / contactArea, p.tanFriction);
 			const Real     depth = g.sampleDepth[k] - p.sampleOffset[key];
 			const Vector3r F     = rdem::contactSpringForce<Real>(
                                 c, depth, g.sampleNormal[k], g.sampleVel[k], pair.dt, p.sampleShear[key], p.sampleDashpot[key], pair.trackEnergy, e);
@@ -393,6 +475,10 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::bookEnergies(const rdem::SpringEnergies
 	scene->energy->add(e.dashpot, "rdemDashpot", dashpotIx, false);
 	scene->energy->add(e.friction, "rdemFriction", frictionIx, false);
 	scene->energy->add(e.bondBreak, "rdemBondBreak", bondBreakIx, false);
+	if (!e.softening) return;
+	scene->energy->add(e.fractureTension, "rdemFractureTension", fractureTensionIx, false);
+	scene->energy->add(e.fractureShear, "rdemFractureShear", fractureShearIx, false);
+	scene->energy->add(e.crushing, "rdemCrushing", crushingIx, false);
 }
 
 } // namespace yade

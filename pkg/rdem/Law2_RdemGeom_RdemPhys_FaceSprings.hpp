@@ -34,7 +34,9 @@ public:
 
 *Contact springs* (broken segments, and sampled contacts of blocks that are not bonded): compression only, normal force $\max(\bar{k}_n A\delta - c_nA\dot{u}_n,0)$ with $\delta$ the overlap; incremental shear spring $\bar{k}_s A$ limited by Coulomb friction $|F_s|\le\tan\phi\,\bar{k}_nA\delta$ (eq. 17); shear dashpot $c_sA$ while sticking (eq. 13). A broken segment is in contact while its material points overlap and have slid less than the smaller of :yref:`RdemGeom::segHalfSizes`. When every segment of a bond is broken and none is in contact, the interaction is released and later contacts are found by sampling (:yref:`Ig2_RdemBlock_RdemBlock_RdemGeom`).
 
-With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemElastic`` (springs, current value), ``rdemDashpot``, ``rdemFriction`` and ``rdemBondBreak`` (cumulated).)""",
+*Softening springs* (bonds made with :yref:`Ip2_RdemMat_RdemMat_RdemPhys::softening`): in place of the breakage of eqs. 15-16, a tension cut-off with linear softening of $f_t$ (fracture energy $G_f^I$), a Coulomb surface whose cohesion softens with $G_f^{II}$ towards residual friction, and a compression cap; the segment breaks when its strengths are gone ($\xi=1$), so that the energy dissipated per unit crack area is $G_f$ whatever the block size (doc/theory.md §2.1, after Lourenço & Rots [LourencoRots1997]_).
+
+With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemElastic`` (springs, current value), ``rdemDashpot``, ``rdemFriction`` and ``rdemBondBreak`` (cumulated); with softening bonds also ``rdemFractureTension``, ``rdemFractureShear`` and ``rdemCrushing`` (cumulated).)""",
 		((bool,deferForces,false,,"Leave the forces and torques in :yref:`RdemPhys` (``force``, ``torque1``, ``torque2``) for :yref:`RdemForceAssembler`, which sums them per body in a fixed order, instead of adding them to the bodies in the order of the interaction container (which ``O.load`` and the collider change; ``rdem.engines()`` sets it)."))
 		((bool,totalStress,false,,"Failure criteria (eqs. 15-16) on the total normal stress of the face: the springs' $\\sigma$ plus the normal stress the Poisson cells exert on it, $(c_1S_1+c_2S_2)/(w_nA)$ (:yref:`RdemState::cellStress`, :yref:`RdemPhys::cellCoef1`; doc/theory.md §5.6); it is the continuum's $\\sigma_{nn}$ of the face, zero on the head joints of a wall in uniform vertical compression. Needs Poisson cells (consistent formulation, :yref:`RdemPoissonEngine::elements` ``'cells'`` or ``'auto'`` on a layout that is not a grid). False (default): the springs' $\\sigma$ alone, the paper's criterion, whose lateral springs carry $M\\nu\\sigma/E$ in tension under uniaxial compression (the paper's splitting mechanism)."))
 		((OpenMPAccumulator<int>,tensionBreaks,,Attr::readonly,"Number of restoring springs broken in tension (eq. 15) so far."))
@@ -43,6 +45,9 @@ With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemElastic`` (springs, current
 		((int,dashpotIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 		((int,frictionIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 		((int,bondBreakIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
+		((int,fractureTensionIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
+		((int,fractureShearIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
+		((int,crushingIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 	);
 	// clang-format on
 	FUNCTOR2D(RdemGeom, RdemPhys);

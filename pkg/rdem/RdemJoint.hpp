@@ -35,6 +35,12 @@ Either way the bond breaks on the joint's strengths (eqs. 15-16): ``tensileStren
 		((Real,tensileStrength,0.1e6,Attr::triggerPostLoad,"Tensile bond strength $f_t\\ge 0$ of the joint (eq. 15) [Pa]; ``inf``: never breaks in tension."))
 		((Real,cohesion,0.2e6,Attr::triggerPostLoad,"Cohesion $c\\ge 0$ of the joint's Mohr–Coulomb criterion (eq. 16) [Pa]; ``inf``: never breaks in shear."))
 		((Real,frictionAngle,0.6747,Attr::triggerPostLoad,"Friction angle $\\phi$ of the joint, $0\\le\\phi<\\pi/2$ [rad] (eqs. 16-17); default $\\arctan 0.8$."))
+		((Real,fractureEnergy,18,Attr::triggerPostLoad,"Mode-I fracture energy $G_f^I>0$ [J/m²]: the energy a softening spring dissipates per unit area of a tensile crack (doc/theory.md §2.1; used with :yref:`Ip2_RdemMat_RdemMat_RdemPhys::softening`). Default: the unit–mortar interface of Lourenço & Rots [LourencoRots1997]_."))
+		((Real,shearFractureEnergy,125,Attr::triggerPostLoad,"Mode-II fracture energy $G_f^{II}>0$ [J/m²]: energy per unit area of the softening of the cohesion $c$ to zero (with softening). Default: Lourenço & Rots' [LourencoRots1997]_."))
+		((Real,residualFrictionAngle,std::numeric_limits<Real>::quiet_NaN(),Attr::triggerPostLoad,"Residual friction angle $\\phi_r$ [rad], $0\\le\\phi_r<\\pi/2$, reached with the cohesion's softening and kept by the contact springs of the broken segments (with softening); ``nan`` (default): ``frictionAngle``."))
+		((Real,compressiveStrength,std::numeric_limits<Real>::infinity(),Attr::triggerPostLoad,"Compressive strength $f_c>0$ [Pa] of the compression cap of a softening spring (crushing); ``inf`` (default): no cap."))
+		((Real,compressiveFractureEnergy,5000,Attr::triggerPostLoad,"Compressive fracture energy $G_{fc}>0$ [J/m²] of the cap's softening from $f_c$ to ``compressiveResidual`` $f_c$ (default: Lourenço & Rots' masonry, [LourencoRots1997]_)."))
+		((Real,compressiveResidual,0.2,Attr::triggerPostLoad,"Residual strength of the crushed spring as a fraction $r$ of $f_c$, $0\\le r<1$."))
 		((string,label,"",,"Name of the joint (e.g. 'bed', 'head', 'collar'), for the user."))
 	);
 	// clang-format on

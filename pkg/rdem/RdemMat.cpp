@@ -6,6 +6,7 @@
 *************************************************************************/
 #include <pkg/rdem/RdemMat.hpp>
 #include <pkg/rdem/math/MaterialCheck.hpp>
+#include <pkg/rdem/math/Softening.hpp>
 #include <stdexcept>
 
 namespace yade {
@@ -15,7 +16,10 @@ YADE_PLUGIN((RdemMat));
 void RdemMat::validate() const
 {
 	const rdem::MaterialParameters<Real> p { young, poisson, density, tensileStrength, cohesion, frictionAngle, dampingNormal, dampingShear };
-	const std::string                    err = rdem::checkMaterial(p, "RdemMat" + (label.empty() ? std::string() : " '" + label + "'"));
+	const std::string                    owner = "RdemMat" + (label.empty() ? std::string() : " '" + label + "'");
+	const rdem::FractureParameters<Real> f { fractureEnergy,      shearFractureEnergy,       residualFrictionAngle,
+		                                 compressiveStrength, compressiveFractureEnergy, compressiveResidual };
+	const std::string                    err = rdem::checkMaterial(p, owner) + rdem::checkFractureParameters(f, owner);
 	if (!err.empty()) throw std::invalid_argument(err);
 }
 

@@ -34,6 +34,12 @@ Defaults are the concrete of the paper's Table 1. Between two materials, the joi
 		((Real,frictionAngle,0.557710,Attr::triggerPostLoad,"Friction angle $\\phi$ [rad], $0\\le\\phi<\\pi/2$, of eqs. 16 and 17; default $\\arctan 0.624$ (paper Table 1)."))
 		((Real,dampingNormal,1.0,Attr::triggerPostLoad,"Damping constant $h_n\\ge 0$ of the normal contact dashpot (eq. 13); 1 is critical."))
 		((Real,dampingShear,1.0,Attr::triggerPostLoad,"Damping constant $h_s\\ge 0$ of the shear contact dashpot (eq. 13); 1 is critical."))
+		((Real,fractureEnergy,80,Attr::triggerPostLoad,"Mode-I fracture energy $G_f^I>0$ [J/m²]: the energy a softening spring dissipates per unit area of a tensile crack (doc/theory.md §2.1; used with :yref:`Ip2_RdemMat_RdemMat_RdemPhys::softening`). Default: the CEB-FIP Model Code 1990's $G_F$ of a concrete of $f_{cm}\\approx 40$ MPa [CEBFIP1990]_."))
+		((Real,shearFractureEnergy,800,Attr::triggerPostLoad,"Mode-II fracture energy $G_f^{II}>0$ [J/m²]: energy per unit area of the softening of the cohesion $c$ to zero (with softening). Default: $10G_f^I$."))
+		((Real,residualFrictionAngle,std::numeric_limits<Real>::quiet_NaN(),Attr::triggerPostLoad,"Residual friction angle $\\phi_r$ [rad], $0\\le\\phi_r<\\pi/2$, reached with the cohesion's softening and kept by the contact springs of the broken segments (with softening); ``nan`` (default): ``frictionAngle``."))
+		((Real,compressiveStrength,std::numeric_limits<Real>::infinity(),Attr::triggerPostLoad,"Compressive strength $f_c>0$ [Pa] of the compression cap of a softening spring (crushing); ``inf`` (default): no cap."))
+		((Real,compressiveFractureEnergy,5000,Attr::triggerPostLoad,"Compressive fracture energy $G_{fc}>0$ [J/m²] of the cap's softening from $f_c$ to ``compressiveResidual`` $f_c$ (default: Lourenço & Rots' masonry, [LourencoRots1997]_)."))
+		((Real,compressiveResidual,0.2,Attr::triggerPostLoad,"Residual strength of the crushed spring as a fraction $r$ of $f_c$, $0\\le r<1$."))
 		,
 		/* ctor */ createIndex(); density = 2300;
 	);

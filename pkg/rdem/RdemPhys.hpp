@@ -7,6 +7,7 @@
 #pragma once
 
 #include <core/IPhys.hpp>
+#include <limits>
 
 namespace yade {
 
@@ -36,6 +37,7 @@ Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact s
 		((vector<int>,segState,,,"Per bonded segment: 0 intact, 1 broken in tension (eq. 15), 2 broken in shear (eq. 16)."))
 		((vector<Real>,segSigma,,,"Per bonded segment: normal stress of the last step, positive in tension [Pa]."))
 		((vector<Real>,segTau,,,"Per bonded segment: magnitude of the shear stress of the last step [Pa]."))
+		((bool,softening,false,,"Whether the restoring springs soften (:yref:`Ip2_RdemMat_RdemMat_RdemPhys::softening`, doc/theory.md §2.1) instead of breaking at once (eqs. 15-16)."))
 		((Real,cellCoef1,0,Attr::readonly,"Poisson cells (doc/theory.md §5.4): $\\partial\\varepsilon/\\partial u_n$, how much this bond's opening adds to body 1's cell strain along its normal [1/m]; 0 without cells (set by :yref:`RdemPoissonEngine` ``.build``)."))
 		((Real,cellCoef2,0,Attr::readonly,"As ``cellCoef1``, for body 2's cell [1/m]."))
 		((Vector3r,centroidOffset,Vector3r::Zero(),,"Offset $\\boldsymbol{\\delta}$ of body 2's centroid from body 1's along the bonded face, in body 1's frame [m]; nonzero (running bond) when the cells correct the intact shear springs by $\\tfrac12(E_1+E_2)\\boldsymbol{\\delta}$ (``rdem::offsetSlip``)."))
@@ -50,6 +52,16 @@ Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact s
 		((vector<Vector3r>,sampleDashpot,,,"Per contact sample key: dashpot force of the last step, on body 2 (global) [N]; for the energy balance."))
 		((vector<Real>,sampleOffset,,,"Per contact sample key: depth from which its normal spring counts, the least depth since its contact began (the depth at which it entered, if it entered deep) [m]."))
 		((vector<int>,sampleActive,,,"Per contact sample key: 1 if it was in contact in the last step."))
+		((Real,fractureEnergy,0,,"$G_f^I$ of the bond, with softening [J/m²]."))
+		((Real,shearFractureEnergy,0,,"$G_f^{II}$ of the bond, with softening [J/m²]."))
+		((Real,tanResidualFriction,0,,"$\\tan\\phi_r$, residual friction of the Coulomb surface and of the broken segments' contact springs, with softening."))
+		((Real,compressiveStrength,std::numeric_limits<Real>::infinity(),,"$f_c$ of the compression cap, with softening [Pa] (``inf``: none)."))
+		((Real,compressiveFractureEnergy,0,,"$G_{fc}$ of the cap, with softening [J/m²]."))
+		((Real,compressiveResidual,0,,"Residual fraction $r$ of $f_c$ after crushing, with softening."))
+		((vector<Real>,segCrack,,,"Per bonded segment, with softening: plastic crack opening $w$ [m]."))
+		((vector<Real>,segCrush,,,"Per bonded segment, with softening: plastic crushing closure $\\kappa$ [m]."))
+		((vector<Real>,segSoftening,,,"Per bonded segment, with softening: softening $\\xi$ of $f_t$ and $c$, 0 (intact) to 1 (broken)."))
+		((vector<Vector3r>,segSlip,,,"Per bonded segment, with softening: plastic slip of the Coulomb surface, in body 1's frame [m]."))
 		,
 		/* ctor */ createIndex();
 		,

@@ -226,7 +226,11 @@ def engines(segmentsPerEdge=2,
             verletDist=None,
             finiteGuard=True,
             failureStress='spring',
-            contactSamples=None):
+            contactSamples=None,
+            softening=False,
+            strengthCoV=0.0,
+            stiffnessCoV=0.0,
+            seed=0):
 	"""The engine list of a refined-DEM scene.
 
 	:param segmentsPerEdge: $n$, each bonded face carries $n\\times n$ springs (paper: 2).
@@ -251,6 +255,13 @@ def engines(segmentsPerEdge=2,
 	    ``'total'``: on the total normal stress of the face, springs plus Poisson cells
 	    (:yref:`Law2_RdemGeom_RdemPhys_FaceSprings.totalStress`, doc/theory.md §5.6; needs ``poisson='consistent'`` and
 	    cells: set ``rdem.poissonEngine().elements = 'cells'`` before ``build`` on a grid).
+	:param softening: ``False`` (default): the paper's brittle springs; ``True``: softening springs (tension, cohesion and
+	    a compression cap that soften with the fracture energies of the :yref:`RdemJoint` or :yref:`RdemMat`, the energy per
+	    unit crack area independent of the block size: :yref:`Ip2_RdemMat_RdemMat_RdemPhys.softening`, doc/theory.md §2.1).
+	:param strengthCoV: coefficient of variation of the bonds' strengths (one lognormal factor of mean 1 per bond,
+	    :yref:`Ip2_RdemMat_RdemMat_RdemPhys.strengthCoV`); 0: uniform.
+	:param stiffnessCoV: the same for the bonds' spring stiffnesses.
+	:param seed: seed of the random factors; a fixed seed reproduces a scene bit for bit.
 	:param finiteGuard: append :yref:`RdemFiniteGuard` after the integrator: the run stops at the first NaN or infinite
 	    position, velocity or force, naming the body and interactions (costs < 1 % of a step)."""
 	if poisson not in POISSON_MODES:
@@ -274,7 +285,7 @@ def engines(segmentsPerEdge=2,
 	formulation, withPoisson = POISSON_MODES[poisson]
 	if contactSamples is not None and not (isinstance(contactSamples, int) and contactSamples >= 1):
 		raise ValueError('contactSamples = %r: must be an integer >= 1 (or None: segmentsPerEdge)' % (contactSamples, ))
-	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0)], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation)],
+	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0)], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), strengthCoV=strengthCoV, stiffnessCoV=stiffnessCoV, seed=int(seed))],
 	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True, totalStress=failureStress == 'total')])
 	eng = [ForceResetter()]
 	if recontact not in (True, False, 'always'):

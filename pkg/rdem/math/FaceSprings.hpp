@@ -21,9 +21,12 @@
 namespace yade {
 namespace rdem {
 
-	/// Energies of one interaction in one step [J]: elastic (current value), the others dissipated in this step.
+	/// Energies of one interaction in one step [J]: elastic (current value), the others dissipated in this step; the
+	/// softening springs' (rdem::softeningStep) only where softening is true.
 	template <class S> struct SpringEnergies {
-		S elastic = 0, dashpot = 0, friction = 0, bondBreak = 0;
+		S    elastic = 0, dashpot = 0, friction = 0, bondBreak = 0;
+		S    fractureTension = 0, fractureShear = 0, crushing = 0;
+		bool softening = false;
 	};
 
 	/// Constants of a restoring spring per unit area (eqs. 12, 15, 16): k̄_n, k̄_s [N/m³], f_t, c [Pa], tan φ.
