@@ -1,0 +1,156 @@
+# -*- coding: utf-8 -*-
+"""Notched beam in three-point bending at three block sizes: is the peak load independent of the mesh?
+
+Problem
+    A concrete beam (default 0.45 × 0.1 m, 0.05 m thick; E = 30 GPa, ν = 0.2, f_t = 3 MPa, G_f^I = 100 J/m²,
+    2400 kg/m³), one block through its thickness and n blocks over its depth, rests on two supports 0.4 m apart (the
+    bottom blocks nearest x = ±S/2, held vertically) and is loaded at mid-span by the two top blocks there, moved down at
+    a constant speed. A zero-width notch of a quarter of the depth at mid-span (no bonds across x = 0 below it) fixes
+    where the crack starts. Each mesh is run with softening springs (rdem.engines(softening=True), doc/theory.md §2.1)
+    and with the paper's brittle springs. The Poisson effect is off (bending of a beam one block thick).
+
+Expected result
+    With softening, the crack dissipates G_f per unit area whatever the block size, so the peak load converges as the
+    blocks shrink (issue #18, must-show 2: within 5 % over the three sizes); with the brittle springs the stress at the
+    notch tip grows as the blocks shrink and the peak load falls. Compared as the nominal strength 3PS/(2BD²), S the
+    distance between the supports' block centres (it moves slightly with the block size).
+
+How to run (about 2-4 minutes for the default three sizes, both laws)
+    build/bin/yade -n scripts/notched_beam.py [--depths 4 8 16] [--laws softening brittle] [--out output/notched_beam]
+    build/bin/yade -n scripts/notched_beam.py --help
+
+Outputs (in --out, default output/notched_beam): results.json, load_deflection.png, ParaView files of each run's blocks
+at the end in vtk/; with --doc, the table in doc/notched-beam.md.
+"""
+import argparse
+import json
+import math
+import os
+import sys
+import time
+
+parser = argparse.ArgumentParser(prog='yade scripts/notched_beam.py', description=__doc__.split('\n\n')[0])
+parser.add_argument('--depths', type=int, nargs='+', default=[4, 8, 16], help='blocks over the depth (default 4 8 16)')
+parser.add_argument('--laws', nargs='+', choices=['softening', 'brittle'], default=['softening', 'brittle'], help='spring laws (default both)')
+parser.add_argument('--length', type=float, default=0.45, help='beam length [m] (default 0.45)')
+parser.add_argument('--span', type=float, default=0.4, help='distance between the supports [m] (default 0.4)')
+parser.add_argument('--depth', type=float, default=0.1, help='beam depth D [m] (default 0.1)')
+parser.add_argument('--thickness', type=float, default=0.05, help='beam thickness B [m] (default 0.05)')
+parser.add_argument('--notch', type=float, default=0.25, help='notch depth / D (default 0.25)')
+parser.add_argument('--young', type=float, default=30e9, help='E [Pa] (default 30e9)')
+parser.add_argument('--ft', type=float, default=3e6, help='tensile strength [Pa] (default 3e6)')
+parser.add_argument('--gf', type=float, default=100.0, help='mode-I fracture energy [J/m2] (default 100)')
+parser.add_argument('--speed', type=float, default=2e-3, help='loading speed [m/s] (default 2e-3)')
+parser.add_argument('--deflection', type=float, default=1.2e-4, help='deflection at which a run stops [m] (default 1.2e-4)')
+parser.add_argument('--damping', type=float, default=0.2, help="Cundall's non-viscous damping of the integrator (default 0.2)")
+parser.add_argument('--out', default='output/notched_beam', help='output folder (default output/notched_beam)')
+parser.add_argument('--doc', action='store_true', help='write the table to doc/notched-beam.md')
+opts = parser.parse_args(sys.argv[1:])
+for name in ('length', 'span', 'depth', 'thickness', 'young', 'ft', 'gf', 'speed', 'deflection'):
+	if not getattr(opts, name) > 0:
+		sys.exit('--%s = %g: must be > 0' % (name, getattr(opts, name)))
+if not opts.span < opts.length:
+	sys.exit('--span = %g: must be less than --length = %g' % (opts.span, opts.length))
+if not 0 < opts.notch < 1:
+	sys.exit('--notch = %g: must be in (0, 1)' % opts.notch)
+if any(n < 2 for n in opts.depths):
+	sys.exit('--depths: each must be >= 2')
+
+import matplotlib
+matplotlib.use('Agg')
+import matplotlib.pyplot as plt
+from yade import O, Vector3, VTKRecorder
+from yade.wrapper import RdemMat
+import rdem
+
+os.makedirs(os.path.join(opts.out, 'vtk'), exist_ok=True)
+
+
+def build(ny, softening):
+	"""The beam of ny blocks over the depth (square in the plane of bending); returns (supports, loaded, span)."""
+	O.reset()
+	b = opts.depth / ny
+	nx = 2 * int(round(opts.length / b / 2))  # even: mid-span is a block boundary
+	mat = O.materials.append(RdemMat(young=opts.young, poisson=0.2, density=2400, tensileStrength=opts.ft, cohesion=2 * opts.ft, fractureEnergy=opts.gf,
+	                                 shearFractureEnergy=10 * opts.gf))
+	O.engines = rdem.engines(poisson=None, recontact=True, damping=opts.damping, softening=softening)
+	x0 = -nx * b / 2
+	rdem.blockGrid((nx, 1, ny), (b, opts.thickness, b), material=mat, origin=(x0, -opts.thickness / 2, 0))
+	rdem.bond(range(len(O.bodies)))
+	pos = {body.id: body.state.pos for body in O.bodies}  # blocks by their grid cell (column, row)
+	col = lambda x: int(math.floor((x - x0) / b))
+	row = lambda z: int(math.floor(z / b))
+	grid = {(col(p[0]), row(p[2])): i for i, p in pos.items()}
+	notchRows = int(round(opts.notch * ny))
+	for k in range(notchRows):  # the notch: no bond across x = 0 in the lowest rows
+		O.interactions.erase(grid[(nx // 2 - 1, k)], grid[(nx // 2, k)])
+	ia = min(range(nx), key=lambda i: abs(x0 + (i + 0.5) * b + opts.span / 2))
+	supports = [grid[(ia, 0)], grid[(nx - 1 - ia, 0)]]
+	for i in supports:
+		O.bodies[i].state.blockedDOFs = 'z'
+	loaded = [grid[(nx // 2 - 1, ny - 1)], grid[(nx // 2, ny - 1)]]
+	for i in loaded:
+		O.bodies[i].state.blockedDOFs = 'z'
+		O.bodies[i].state.vel = Vector3(0, 0, -opts.speed)
+	span = (nx - 1 - 2 * ia) * b
+	return supports, loaded, span
+
+
+def run(ny, softening):
+	supports, loaded, span = build(ny, softening)
+	O.step()
+	z0 = O.bodies[loaded[0]].state.pos[2]
+	hist = dict(deflection=[], load=[])
+	wall0, last = time.time(), time.time()
+	steps = int(opts.deflection / opts.speed / O.dt)
+	while z0 - O.bodies[loaded[0]].state.pos[2] < opts.deflection:
+		O.run(max(1, steps // 400), True)
+		hist['deflection'].append(z0 - O.bodies[loaded[0]].state.pos[2])
+		hist['load'].append(sum(O.forces.f(i)[2] for i in loaded))
+		if time.time() - last > 10:
+			last = time.time()
+			print('  depth %d, %s: step %d of about %d, load %.0f N' % (ny, 'softening' if softening else 'brittle', O.iter, steps, hist['load'][-1]), flush=True)
+	wall = time.time() - wall0
+	peak = max(hist['load'])
+	VTKRecorder(fileName=os.path.join(opts.out, 'vtk', 'beam-%d-%s.' % (ny, 'softening' if softening else 'brittle')), recorders=['boxes'])()
+	return dict(blocksOverDepth=ny, blocks=len(O.bodies), law='softening' if softening else 'brittle', span=span, peakLoad=peak,
+	            nominalStrength=3 * peak * span / (2 * opts.thickness * opts.depth**2), dt=O.dt, steps=O.iter, wallSeconds=wall, history=hist)
+
+
+runs = []
+for law in opts.laws:
+	for ny in opts.depths:
+		print('depth %d blocks, %s springs' % (ny, law), flush=True)
+		runs.append(run(ny, law == 'softening'))
+		print('  peak load %.0f N, nominal strength %.3f MPa, %d steps, %.1f s' % (runs[-1]['peakLoad'], runs[-1]['nominalStrength'] / 1e6, runs[-1]['steps'],
+		                                                                               runs[-1]['wallSeconds']), flush=True)
+
+summary = {}
+for law in opts.laws:
+	s = [r['nominalStrength'] for r in runs if r['law'] == law]
+	summary[law] = dict(spread=(max(s) - min(s)) / max(s), strengths=s)
+with open(os.path.join(opts.out, 'results.json'), 'w') as f:
+	json.dump(dict(input=vars(opts), runs=runs, summary=summary), f, indent=1)
+
+fig, ax = plt.subplots(figsize=(7, 4.5))
+for r in runs:
+	ax.plot([d * 1e3 for d in r['history']['deflection']], [p / 1e3 for p in r['history']['load']], '-' if r['law'] == 'softening' else '--',
+	        label='%s, %d blocks over the depth' % (r['law'], r['blocksOverDepth']))
+ax.set_xlabel('mid-span deflection [mm]')
+ax.set_ylabel('load [kN]')
+ax.legend(fontsize=8)
+fig.tight_layout()
+fig.savefig(os.path.join(opts.out, 'load_deflection.png'), dpi=120)
+
+lines = ['| law | blocks over depth | blocks | span [m] | peak load [kN] | nominal strength [MPa] | steps | wall [s] |', '|---|---|---|---|---|---|---|---|']
+for r in runs:
+	lines.append('| %s | %d | %d | %.4f | %.3f | %.3f | %d | %.1f |' % (r['law'], r['blocksOverDepth'], r['blocks'], r['span'], r['peakLoad'] / 1e3,
+	                                                                 r['nominalStrength'] / 1e6, r['steps'], r['wallSeconds']))
+for law, s in summary.items():
+	lines.append('')
+	lines.append('%s: spread of the nominal strength over the meshes (max - min)/max = %.1f %%' % (law, 100 * s['spread']))
+print('\n'.join(lines))
+if opts.doc:
+	with open('doc/notched-beam.md', 'w') as f:
+		f.write('# Mesh objectivity: a notched beam in three-point bending\n\nMade by `build/bin/yade -n scripts/notched_beam.py --doc` (%s). ' %
+		        time.strftime('%Y-%m-%d') + __doc__.split('Problem\n')[1].split('\nExpected result')[0].strip() + '\n\n' + '\n'.join(lines) + '\n')
