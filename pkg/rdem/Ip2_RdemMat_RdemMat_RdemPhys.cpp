@@ -64,7 +64,7 @@ void Ip2_RdemMat_RdemMat_RdemPhys::scaleStrengths(RdemPhys& p, Real f)
 	p.compressiveFractureEnergy *= f;
 }
 
-void Ip2_RdemMat_RdemMat_RdemPhys::setSoftening(RdemPhys& p, const RdemMat& a, const RdemMat& b, const RdemJoint* joint, const Interaction&)
+void Ip2_RdemMat_RdemMat_RdemPhys::setSoftening(RdemPhys& p, const RdemMat& a, const RdemMat& b, const RdemJoint* joint)
 {
 	// The joint's parameters, else the weaker material's (as the strengths).
 	auto pick                   = [&](Real RdemJoint::*j, Real RdemMat::*m) { return joint ? joint->*j : math::min(a.*m, b.*m); };
@@ -151,7 +151,7 @@ void Ip2_RdemMat_RdemMat_RdemPhys::go(const shared_ptr<Material>& m1, const shar
 	p->segTau.assign(nSeg, 0);
 	p->segShear.assign(nSeg, Vector3r::Zero());
 	p->segDashpot.assign(nSeg, Vector3r::Zero());
-	if (nSeg > 0 && softening) setSoftening(*p, a, b, joint, *I);
+	if (nSeg > 0 && softening) setSoftening(*p, a, b, joint);
 	if (nSeg > 0 && strengthCoV > 0) scaleStrengths(*p, bondFactor(*I, strengthCoV, 0));
 	if (p->softening) checkSoftening(*p, a, b, joint);
 	I->phys = p;

@@ -54,7 +54,7 @@ private:
 	/// Multiplies every strength and fracture energy of p by f.
 	static void scaleStrengths(RdemPhys& p, Real f);
 	/// Switches p's springs to softening: the softening parameters of the joint (or the weaker material), per-segment state.
-	static void setSoftening(RdemPhys& p, const RdemMat& a, const RdemMat& b, const RdemJoint* joint, const Interaction& I);
+	static void setSoftening(RdemPhys& p, const RdemMat& a, const RdemMat& b, const RdemJoint* joint);
 	/// Throws std::invalid_argument naming the joint's or materials' parameter if p's softening springs are inadmissible
 	/// (rdem::checkSoftening: snap-back, tension cut-off outside the Coulomb cone).
 	static void checkSoftening(const RdemPhys& p, const RdemMat& a, const RdemMat& b, const RdemJoint* joint);
