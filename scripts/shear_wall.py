@@ -40,16 +40,7 @@ import math
 import os
 import sys
 import time
-
-
-def floats(text, n=None):
-	try:
-		v = [float(x) for x in text.split(',')]
-	except ValueError:
-		raise argparse.ArgumentTypeError('%r: expected numbers separated by commas' % text)
-	if n is not None and len(v) != n:
-		raise argparse.ArgumentTypeError('%r: expected %d numbers separated by commas' % (text, n))
-	return v
+import rdem  # before the options: rdem.masonry.addWallArguments
 
 
 # 1. Options (defaults: rdem.walltest.MAGENES_CALVI, repeated here so that --help shows them) -------------------------
@@ -57,18 +48,7 @@ parser = argparse.ArgumentParser(prog='yade scripts/shear_wall.py', description=
 parser.add_argument('--wall', choices=['MI1', 'MI2', 'none'], default='MI1',
                     help='a Magenes & Calvi (1992) wall: its sigma0 (unless --sigma0 is given) and its measured peaks for comparison; '
                     'none: no measured values (default MI1)')
-g = parser.add_argument_group('wall (lengths in m)')
-g.add_argument('--length', type=float, default=1.55, help='masonry length (default 1.55)')
-g.add_argument('--height', type=float, default=2.005, help='masonry height between the beams (default 2.005: 31 courses)')
-g.add_argument('--thickness', type=float, default=0.38, help='masonry thickness (default 0.38: one and a half bricks)')
-g.add_argument('--brick', type=lambda s: floats(s, 3), default=[0.25, 0.12, 0.055], help='brick length,width,height (default 0.25,0.12,0.055)')
-g.add_argument('--joint', type=float, default=0.01, help='mortar joint thickness (default 0.01)')
-g.add_argument('--bond', choices=['stack', 'running', 'english', 'flemish'], default='english', help='bond pattern (default english)')
-g.add_argument('--mortar', choices=['interface', 'layer'], default='interface', help='joints as interfaces in series, or mortar blocks (default interface)')
-g.add_argument('--blocks', type=lambda s: [int(x) for x in floats(s, 3)], default=[1, 1, 1],
-               help='blocks per brick along its length,width,height (default 1,1,1: bricks do not crack)')
-g.add_argument('--openings', type=str, default='', help='rectangles x0,z0,width,height separated by ";" (default none)')
-g.add_argument('--beam', type=float, default=0.2, help='height of the base and top beams (default 0.2)')
+rdem.masonry.addWallArguments(parser, length=1.55, height=2.005, thickness=0.38, bond='english', blocks=(1, 1, 1), beam=0.2)
 m = parser.add_argument_group('materials (stresses in MPa, moduli in GPa, densities in kg/m3)')
 m.add_argument('--brick-E', type=float, default=2.991, help="brick Young's modulus (default 2.991)")
 m.add_argument('--brick-nu', type=float, default=0.25, help="brick Poisson's ratio (default 0.25)")
@@ -116,14 +96,8 @@ if not 0 <= opts.stop_drop < 1:
 	sys.exit('--stop-drop = %g: must be in [0, 1)' % opts.stop_drop)
 if opts.ramp < 0:
 	sys.exit('--ramp = %g: must be >= 0' % opts.ramp)
-openings = []
-for text in filter(None, opts.openings.split(';')):
-	try:
-		openings.append(floats(text, 4))
-	except argparse.ArgumentTypeError as e:
-		sys.exit('--openings: %s' % e)
 try:
-	amplitudes = floats(opts.cycles) if opts.cycles else []
+	amplitudes = rdem.masonry.numbers(opts.cycles) if opts.cycles else []
 except argparse.ArgumentTypeError as e:
 	sys.exit('--cycles: %s' % e)
 
@@ -132,7 +106,6 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, VTKRecorder
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
 from rdem import walltest
 
 measured = walltest.MAGENES_CALVI_WALLS.get(opts.wall)
@@ -164,7 +137,7 @@ try:
 			sys.exit('--softening on: this build has no softening law yet (issue #18); run with --softening off')
 		rdem.law().softening = True
 	w = rdem.masonry.wall(opts.length, opts.height, opts.thickness, brick=opts.brick, joint=opts.joint, bond=opts.bond, blocksPerBrick=opts.blocks,
-	                      mortar=opts.mortar, openings=openings, baseBeam=opts.beam, topBeam=opts.beam, beamBlocks=1, brickMaterial=brick,
+	                      mortar=opts.mortar, openings=opts.openings, baseBeam=opts.beam, topBeam=opts.beam, beamBlocks=1, brickMaterial=brick,
 	                      jointMaterial=joint, beamMaterial=beam)
 	if opts.formulation != 'off':
 		if total:

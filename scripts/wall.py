@@ -34,32 +34,12 @@ import math
 import os
 import sys
 import time
-
-
-def floats(text, n=None, name=''):
-	try:
-		v = [float(x) for x in text.split(',')]
-	except ValueError:
-		raise argparse.ArgumentTypeError('%r: expected numbers separated by commas' % text)
-	if n is not None and len(v) != n:
-		raise argparse.ArgumentTypeError('%r: expected %d numbers separated by commas' % (text, n))
-	return v
+import rdem  # before the options: rdem.masonry.addWallArguments
 
 
 # 1. Options ---------------------------------------------------------------------------------------------------------
 parser = argparse.ArgumentParser(prog='yade scripts/wall.py', description=__doc__.split('\n\n')[0])
-g = parser.add_argument_group('wall (lengths in m)')
-g.add_argument('--length', type=float, default=1.03, help='masonry length (default 1.03: 4 stretchers)')
-g.add_argument('--height', type=float, default=0.77, help='masonry height (default 0.77: 12 courses)')
-g.add_argument('--thickness', type=float, default=0.12, help='masonry thickness (default 0.12: one wythe)')
-g.add_argument('--brick', type=lambda s: floats(s, 3), default=[0.25, 0.12, 0.055], help='brick length,width,height (default 0.25,0.12,0.055)')
-g.add_argument('--joint', type=float, default=0.01, help='mortar joint thickness (default 0.01)')
-g.add_argument('--bond', choices=['stack', 'running', 'english', 'flemish'], default='running', help='bond pattern (default running)')
-g.add_argument('--mortar', choices=['interface', 'layer'], default='interface', help='joint model: interface (zero-thickness joints in series) or layer '
-               '(mortar blocks, needed for the Poisson mismatch of mortar and brick); default interface')
-g.add_argument('--blocks', type=lambda s: [int(x) for x in floats(s, 3)], default=[2, 1, 2], help='blocks per brick along its length,width,height (default 2,1,2)')
-g.add_argument('--openings', type=str, default='', help='rectangles x0,z0,width,height separated by ";" (default none)')
-g.add_argument('--beam', type=float, default=0.1, help='height of the base and top beams (default 0.1)')
+rdem.masonry.addWallArguments(parser, length=1.03, height=0.77, thickness=0.12, bond='running', blocks=(2, 1, 2), beam=0.1)
 m = parser.add_argument_group('materials (stresses in MPa, moduli in GPa)')
 m.add_argument('--brick-E', type=float, default=16.7, help="brick Young's modulus (default 16.7)")
 m.add_argument('--brick-nu', type=float, default=0.15, help="brick Poisson's ratio (default 0.15)")
@@ -86,19 +66,12 @@ opts = parser.parse_args(sys.argv[1:])
 for name in ('rate', 'end', 'beam'):
 	if not getattr(opts, name) > 0:
 		sys.exit('--%s = %g: must be > 0' % (name, getattr(opts, name)))
-openings = []
-for text in filter(None, opts.openings.split(';')):
-	try:
-		openings.append(floats(text, 4))
-	except argparse.ArgumentTypeError as e:
-		sys.exit('--openings: %s' % e)
 
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, PyRunner, VTKRecorder, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
 
 os.makedirs(opts.out, exist_ok=True)
 
@@ -116,7 +89,7 @@ try:
 	                         damping=opts.damping,
 	                         failureStress='total' if total else 'spring')
 	w = rdem.masonry.wall(opts.length, opts.height, opts.thickness, brick=opts.brick, joint=opts.joint, bond=opts.bond, blocksPerBrick=opts.blocks,
-	                      mortar=opts.mortar, openings=openings, baseBeam=opts.beam, topBeam=opts.beam, brickMaterial=brick, jointMaterial=joint)
+	                      mortar=opts.mortar, openings=opts.openings, baseBeam=opts.beam, topBeam=opts.beam, brickMaterial=brick, jointMaterial=joint)
 	for i in w.beams['base']:
 		O.bodies[i].state.blockedDOFs = 'xyzXYZ'
 	for i in w.beams['top']:

@@ -67,6 +67,45 @@ class Wall:
 		        '%d %s' % (len(v), k) for k, v in sorted(self.joints.items())))
 
 
+def numbers(text, n=None):
+	"""Numbers separated by commas, as a command-line option gives them: a list of floats, ``n`` of them if given;
+	:class:`argparse.ArgumentTypeError` (a ValueError) naming the text otherwise."""
+	import argparse
+	try:
+		v = [float(x) for x in text.split(',')]
+	except ValueError:
+		raise argparse.ArgumentTypeError('%r: expected numbers separated by commas' % text)
+	if n is not None and len(v) != n:
+		raise argparse.ArgumentTypeError('%r: expected %d numbers separated by commas' % (text, n))
+	return v
+
+
+def openings(text):
+	"""Openings of a wall as a command-line option gives them, rectangles ``x0,z0,width,height`` separated by ";": a list of
+	[x0, z0, width, height] for :func:`wall`'s ``openings``; ArgumentTypeError naming the bad rectangle otherwise."""
+	return [numbers(r, 4) for r in filter(None, text.split(';'))]
+
+
+def addWallArguments(parser, length, height, thickness, bond, blocks, beam):
+	"""The options of a wall's geometry (lengths in m) in an argument group of ``parser``, with these defaults:
+	--length, --height, --thickness, --brick, --joint, --bond, --mortar, --blocks, --openings (parsed by :func:`openings`)
+	and --beam, the arguments of :func:`wall` as scripts/wall.py and scripts/shear_wall.py take them."""
+	g = parser.add_argument_group('wall (lengths in m)')
+	g.add_argument('--length', type=float, default=length, help='masonry length (default %(default)g)')
+	g.add_argument('--height', type=float, default=height, help='masonry height between the beams (default %(default)g)')
+	g.add_argument('--thickness', type=float, default=thickness, help='masonry thickness (default %(default)g)')
+	g.add_argument('--brick', type=lambda s: numbers(s, 3), default=[0.25, 0.12, 0.055], help='brick length,width,height (default 0.25,0.12,0.055)')
+	g.add_argument('--joint', type=float, default=0.01, help='mortar joint thickness (default 0.01)')
+	g.add_argument('--bond', choices=['stack', 'running', 'english', 'flemish'], default=bond, help='bond pattern (default %(default)s)')
+	g.add_argument('--mortar', choices=['interface', 'layer'], default='interface', help='joint model: interface (zero-thickness joints in series) or '
+	               'layer (mortar blocks, needed for the Poisson mismatch of mortar and brick); default interface')
+	g.add_argument('--blocks', type=lambda s: [int(x) for x in numbers(s, 3)], default=list(blocks),
+	               help='blocks per brick along its length,width,height (default %s)' % ','.join(str(b) for b in blocks))
+	g.add_argument('--openings', type=openings, default=[], help='rectangles x0,z0,width,height separated by ";" (default none)')
+	g.add_argument('--beam', type=float, default=beam, help='height of the base and top beams (default %(default)g)')
+	return g
+
+
 def _material(value, name):
 	mat = O.materials[value] if isinstance(value, int) else value
 	if not isinstance(mat, RdemMat):
