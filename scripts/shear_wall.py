@@ -61,6 +61,15 @@ m.add_argument('--mortar-nu', type=float, default=0.25, help="mortar Poisson's r
 m.add_argument('--bond-ft', type=float, default=0.15, help='tensile bond strength of the joints (default 0.15)')
 m.add_argument('--bond-c', type=float, default=0.21, help='cohesion of the joints (default 0.21)')
 m.add_argument('--bond-mu', type=float, default=0.81, help='friction coefficient of the joints (default 0.81)')
+m.add_argument('--bond-GfI', type=float, default=18.0, help='mode-I fracture energy of the joints [J/m2] (softening; default 18, LourencoRots1997)')
+m.add_argument('--bond-GfII', type=float, default=125.0, help='mode-II fracture energy of the joints [J/m2] (softening; default 125, LourencoRots1997)')
+m.add_argument('--bond-fc', type=float, default=7.92,
+               help='compressive strength of the joints\' cap (softening; default 7.92, the masonry strength f_m of the database; 0: no cap)')
+m.add_argument('--bond-Gfc', type=float, default=5000.0, help='compressive fracture energy of the cap [J/m2] (softening; default 5000, LourencoRots1997)')
+m.add_argument('--brick-GfI', type=float, default=80.0, help='mode-I fracture energy of the bricks [J/m2] (softening; default 80, LourencoRots1997)')
+m.add_argument('--brick-GfII', type=float, default=800.0, help='mode-II fracture energy of the bricks [J/m2] (softening; default 800 = 10 G_f^I)')
+m.add_argument('--brick-fc', type=float, default=19.72,
+               help='compressive strength of the bricks\' cap (softening; default 19.72, f_b of the database; 0: no cap)')
 m.add_argument('--beam-E', type=float, default=30.0, help="beams' Young's modulus (default 30, concrete)")
 m.add_argument('--beam-nu', type=float, default=0.2, help="beams' Poisson's ratio (default 0.2)")
 m.add_argument('--beam-density', type=float, default=2400, help="beams' density (default 2400)")
@@ -116,14 +125,17 @@ os.makedirs(os.path.join(opts.out, 'vtk'), exist_ok=True)
 O.reset()
 setup0 = time.time()
 try:
+	cap = lambda fc: fc * 1e6 if fc > 0 else float('inf')
 	brick = O.materials.append(
 	        RdemMat(young=opts.brick_E * 1e9, poisson=opts.brick_nu, density=opts.density, tensileStrength=opts.brick_ft * 1e6, cohesion=opts.brick_c * 1e6,
-	                frictionAngle=math.atan(opts.brick_mu), label='brick'))
+	                frictionAngle=math.atan(opts.brick_mu), fractureEnergy=opts.brick_GfI, shearFractureEnergy=opts.brick_GfII,
+	                compressiveStrength=cap(opts.brick_fc), compressiveFractureEnergy=opts.bond_Gfc, label='brick'))
 	beam = O.materials.append(
 	        RdemMat(young=opts.beam_E * 1e9, poisson=opts.beam_nu, density=opts.beam_density, tensileStrength=float('inf'), cohesion=float('inf'),
 	                frictionAngle=math.atan(opts.bond_mu), label='beam'))
 	joint = RdemJoint(young=opts.mortar_E * 1e9, poisson=opts.mortar_nu, tensileStrength=opts.bond_ft * 1e6, cohesion=opts.bond_c * 1e6,
-	                  frictionAngle=math.atan(opts.bond_mu))
+	                  frictionAngle=math.atan(opts.bond_mu), fractureEnergy=opts.bond_GfI, shearFractureEnergy=opts.bond_GfII, compressiveStrength=cap(opts.bond_fc),
+	                  compressiveFractureEnergy=opts.bond_Gfc)
 	total = opts.failure_stress == 'total' and opts.formulation == 'consistent'
 	O.engines = rdem.engines(segmentsPerEdge=opts.springs,
 	                         poisson=None if opts.formulation == 'off' else opts.formulation,
@@ -131,11 +143,8 @@ try:
 	                         gravity=(0, 0, -opts.gravity),
 	                         safety=opts.safety,
 	                         verletDist=opts.verlet,
-	                         failureStress='total' if total else 'spring')
-	if opts.softening == 'on':
-		if not hasattr(rdem.law(), 'softening'):
-			sys.exit('--softening on: this build has no softening law yet (issue #18); run with --softening off')
-		rdem.law().softening = True
+	                         failureStress='total' if total else 'spring',
+	                         softening=opts.softening == 'on')  # before the wall: a bond's law is fixed when it is made
 	w = rdem.masonry.wall(opts.length, opts.height, opts.thickness, brick=opts.brick, joint=opts.joint, bond=opts.bond, blocksPerBrick=opts.blocks,
 	                      mortar=opts.mortar, openings=opts.openings, baseBeam=opts.beam, topBeam=opts.beam, beamBlocks=1, brickMaterial=brick,
 	                      jointMaterial=joint, beamMaterial=beam)

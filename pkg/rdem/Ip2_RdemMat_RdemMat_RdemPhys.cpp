@@ -11,6 +11,7 @@
 #include <pkg/rdem/RdemJoint.hpp>
 #include <pkg/rdem/math/Failure.hpp>
 #include <pkg/rdem/math/Heterogeneity.hpp>
+#include <algorithm>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -106,7 +107,9 @@ void Ip2_RdemMat_RdemMat_RdemPhys::checkSoftening(const RdemPhys& p, const RdemM
 	const std::string owner = joint
 	        ? "RdemJoint" + (joint->label.empty() ? std::string() : " '" + joint->label + "'")
 	        : "RdemMat" + (a.label.empty() ? std::string() : " '" + a.label + "'") + (&a == &b || b.label.empty() ? std::string() : "/'" + b.label + "'");
-	const std::string err   = rdem::checkSoftening(softeningConstants(p), owner);
+	// Per-segment strengths: the strongest segment is the one that could snap back (f_t²/(2G_f) grows with the factor).
+	const Real        f   = p.segStrengthFactor.empty() ? Real(1) : *std::max_element(p.segStrengthFactor.begin(), p.segStrengthFactor.end());
+	const std::string err = rdem::checkSoftening(rdem::scaledStrengths(softeningConstants(p), f), owner);
 	if (!err.empty()) throw std::invalid_argument(err);
 }
 
@@ -152,7 +155,14 @@ void Ip2_RdemMat_RdemMat_RdemPhys::go(const shared_ptr<Material>& m1, const shar
 	p->segShear.assign(nSeg, Vector3r::Zero());
 	p->segDashpot.assign(nSeg, Vector3r::Zero());
 	if (nSeg > 0 && softening) setSoftening(*p, a, b, joint);
-	if (nSeg > 0 && strengthCoV > 0) scaleStrengths(*p, bondFactor(*I, strengthCoV, 0));
+	if (nSeg > 0 && strengthCoV > 0) {
+		if (strengthPerSegment) { // streams 2, 3, ...: one per segment (0 and 1 are the bond's strength and stiffness)
+			p->segStrengthFactor.resize(nSeg);
+			for (size_t i = 0; i < nSeg; ++i)
+				p->segStrengthFactor[i] = bondFactor(*I, strengthCoV, 2 + int(i));
+		} else
+			scaleStrengths(*p, bondFactor(*I, strengthCoV, 0));
+	}
 	if (p->softening) checkSoftening(*p, a, b, joint);
 	I->phys = p;
 }

@@ -296,7 +296,10 @@ namespace {
 	   cells (it inlines alike). */
 	template <bool withCells> void segmentForces(BondStep& b, RdemPhys& p, Energies& e, Breaks& breaks)
 	{
+		const bool perSegment = !p.segStrengthFactor.empty(); // heterogeneous strengths per segment (doc/theory.md §2.2)
+		const auto k          = b.k;
 		forSegments(b.g.samplesPerEdge, [&](size_t i, Real s, Real r) {
+			if (perSegment) b.k = rdem::scaledStrengths(k, p.segStrengthFactor[i]);
 			const Vector3r d  = b.kin.displacement(s, r);
 			const Real     un = d.dot(b.n); // eq. (14): opening positive
 			const Vector3r us = d - un * b.n;
@@ -305,18 +308,30 @@ namespace {
 				return;
 			brokenSegment(b, p, i, s, r, un, us, e);
 		});
+		b.k = k;
 	}
 
 	/// segmentForces of a softening bond: softeningSpring in place of restoringSpring.
 	template <bool withCells> void softeningSegmentForces(BondStep& b, RdemPhys& p, Energies& e, Breaks& breaks)
 	{
-		const auto k = Ip2_RdemMat_RdemMat_RdemPhys::softeningConstants(p);
+		const auto k          = Ip2_RdemMat_RdemMat_RdemPhys::softeningConstants(p);
+		const bool perSegment = !p.segStrengthFactor.empty(); // heterogeneous strengths per segment (doc/theory.md §2.2)
 		forSegments(b.g.samplesPerEdge, [&](size_t i, Real s, Real r) {
 			const Vector3r d  = b.kin.displacement(s, r);
 			const Real     un = d.dot(b.n);
 			const Vector3r us = d - un * b.n;
 			if (p.segState[i] == int(rdem::SegmentState::Intact)
-			    && softeningSpring<withCells>(b, p, k, i, s, r, un, withCells ? Vector3r(us - b.slip) : us, e, breaks))
+			    && softeningSpring<withCells>(
+			            b,
+			            p,
+			            perSegment ? rdem::scaledStrengths(k, p.segStrengthFactor[i]) : k,
+			            i,
+			            s,
+			            r,
+			            un,
+			            withCells ? Vector3r(us - b.slip) : us,
+			            e,
+			            breaks))
 				return;
 			brokenSegment(b, p, i, s, r, un, us, e);
 		});

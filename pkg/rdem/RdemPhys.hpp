@@ -62,6 +62,7 @@ Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact s
 		((vector<Real>,segCrush,,,"Per bonded segment, with softening: plastic crushing closure $\\kappa$ [m]."))
 		((vector<Real>,segSoftening,,,"Per bonded segment, with softening: softening $\\xi$ of $f_t$ and $c$, 0 (intact) to 1 (broken)."))
 		((vector<Vector3r>,segSlip,,,"Per bonded segment, with softening: plastic slip of the Coulomb surface, in body 1's frame [m]."))
+		((vector<Real>,segStrengthFactor,,,"Per bonded segment, with :yref:`Ip2_RdemMat_RdemMat_RdemPhys::strengthPerSegment`: the factor of its strengths and fracture energies (doc/theory.md §2.2); empty: the bond's strengths hold for every segment."))
 		,
 		/* ctor */ createIndex();
 		,

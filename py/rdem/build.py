@@ -229,6 +229,7 @@ def engines(segmentsPerEdge=2,
             contactSamples=None,
             softening=False,
             strengthCoV=0.0,
+            strengthPerSegment=False,
             stiffnessCoV=0.0,
             seed=0):
 	"""The engine list of a refined-DEM scene.
@@ -260,6 +261,8 @@ def engines(segmentsPerEdge=2,
 	    unit crack area independent of the block size: :yref:`Ip2_RdemMat_RdemMat_RdemPhys.softening`, doc/theory.md §2.1).
 	:param strengthCoV: coefficient of variation of the bonds' strengths (one lognormal factor of mean 1 per bond,
 	    :yref:`Ip2_RdemMat_RdemMat_RdemPhys.strengthCoV`); 0: uniform.
+	:param strengthPerSegment: with ``strengthCoV``: one factor per segment (spring) instead of per bond
+	    (:yref:`Ip2_RdemMat_RdemMat_RdemPhys.strengthPerSegment`).
 	:param stiffnessCoV: the same for the bonds' spring stiffnesses.
 	:param seed: seed of the random factors; a fixed seed reproduces a scene bit for bit.
 	:param finiteGuard: append :yref:`RdemFiniteGuard` after the integrator: the run stops at the first NaN or infinite
@@ -285,7 +288,7 @@ def engines(segmentsPerEdge=2,
 	formulation, withPoisson = POISSON_MODES[poisson]
 	if contactSamples is not None and not (isinstance(contactSamples, int) and contactSamples >= 1):
 		raise ValueError('contactSamples = %r: must be an integer >= 1 (or None: segmentsPerEdge)' % (contactSamples, ))
-	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0)], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), strengthCoV=strengthCoV, stiffnessCoV=stiffnessCoV, seed=int(seed))],
+	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0)], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), strengthCoV=strengthCoV, strengthPerSegment=bool(strengthPerSegment), stiffnessCoV=stiffnessCoV, seed=int(seed))],
 	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True, totalStress=failureStress == 'total')])
 	eng = [ForceResetter()]
 	if recontact not in (True, False, 'always'):

@@ -258,6 +258,7 @@ MAGENES_CALVI = {
         'brick': dict(young=2991e6, poisson=0.25, density=1800, tensileStrength=1.28e6, cohesion=1.79e6, mu=0.81),
         'joint': dict(young=2991e6, poisson=0.25, tensileStrength=0.15e6, cohesion=0.21e6, mu=0.81),
         'beam': dict(young=30e9, poisson=0.2, density=2400),
+        'softening': dict(jointGfI=18.0, jointGfII=125.0, jointFc=7.92e6, Gfc=5000.0, brickGfI=80.0, brickGfII=800.0, brickFc=19.72e6, residual=0.2),
         'sources': {
                 'brick 250x120x55 mm, 31 courses, H = 2.0 m, t = 0.38 m (one and a half bricks)': 'MagenesCalvi1992 via the EPFL database',
                 'length 1.55 m (tested: 1.5 m)': 'the nearest length of English bond with whole 250 mm bricks and 10 mm joints (1.29 or 1.55 m); '
@@ -275,6 +276,12 @@ MAGENES_CALVI = {
                 'brick cohesion 1.79 MPa, friction 0.81': 'c = 1.4 f_t as for the joints (LourencoRots1997, potential cracks in the units); friction '
                 'of the joints (database)',
                 'density 1800 kg/m3': 'assumed, solid clay brick masonry (self-weight 0.035 MPa at the base)',
+                'softening (--softening on): joint G_f^I 18 J/m2, G_f^II 125 J/m2, cap G_fc 5000 J/m2': 'the interface values of '
+                'LourencoRots1997 for the TU Eindhoven walls (not measured by MagenesCalvi1992); the residual friction equals the initial',
+                'softening: joint cap f_c = 7.92 MPa, residual 0.2 f_c': 'f_m, the masonry compressive strength of the database (the cap of the '
+                'interface model is a masonry strength, LourencoRots1997); residual fraction: the default of RdemJoint, assumed',
+                'softening: brick G_f^I 80 J/m2, G_f^II 800 J/m2, cap f_c = 19.72 MPa': 'G_f^I of the units of LourencoRots1997 (potential cracks '
+                'in the bricks); G_f^II = 10 G_f^I assumed; f_c = f_b of the database',
                 'beams: concrete, E = 30 GPa, nu = 0.2, 2400 kg/m3, 0.2 m tall': 'assumed: reinforced concrete beams (EN1992-1-1 Table 3.1, C25/30: '
                 'E_cm = 31 GPa); they are rigid against the wall (0.2 % of its compliance)',
         }

@@ -51,6 +51,19 @@ TEST(FaceSprings, RestoringStateJudgedOnTotalStress)
 	EXPECT_EQ(rdem::restoringStress(spring, un, V::Zero().eval(), 1.5e6).sigma, 1e6);
 }
 
+TEST(FaceSprings, ScaledStrengthsMoveTheBreakingStress)
+{
+	// Heterogeneity (doc/theory.md §2.2): a segment of factor 0.5 breaks in tension at 0.5 f_t = 1e6 Pa and in shear at
+	// 0.5 c = 2e6 Pa; stiffnesses and friction are the bond's.
+	const auto weak = rdem::scaledStrengths(spring, 0.5);
+	EXPECT_EQ(weak.kn, spring.kn);
+	EXPECT_EQ(weak.tanPhi, spring.tanPhi);
+	EXPECT_EQ(rdem::restoringStress(weak, 0.99e6 / 4e12, V::Zero().eval(), 0.0).state, SegmentState::Intact);
+	EXPECT_EQ(rdem::restoringStress(weak, 1.01e6 / 4e12, V::Zero().eval(), 0.0).state, SegmentState::BrokenTension);
+	EXPECT_EQ(rdem::restoringStress(weak, 0.0, V(1.99e6 / 2e12, 0, 0), 0.0).state, SegmentState::Intact);
+	EXPECT_EQ(rdem::restoringStress(weak, 0.0, V(2.01e6 / 2e12, 0, 0), 0.0).state, SegmentState::BrokenShear);
+}
+
 // A contact point: k_n = 1e8 N/m, k_s = 5e7 N/m, c_n = 200, c_s = 100 N·s/m, tan φ = 0.5; normal along z.
 const rdem::ContactConstants<double> contact { 1e8, 5e7, 200, 100, 0.5 };
 const V                              nz(0, 0, 1);

@@ -216,3 +216,22 @@ TEST(Softening, InfiniteStrengthsNeverSoften)
 }
 
 } // namespace
+
+TEST(Softening, ScaledStrengthsScaleThePeakAndTheFractureEnergyNotTheOpening)
+{
+	// Heterogeneity (doc/theory.md §2.2): a segment of factor f = 1.3 peaks at f f_t and dissipates f G_f^I over the
+	// material's final opening w_I = 2G_f^I/f_t; stiffness, friction and residual unchanged.
+	const double f = 1.3;
+	const auto   k = rdem::scaledStrengths(joint(), f);
+	EXPECT_DOUBLE_EQ(k.kn, 1e11);
+	EXPECT_DOUBLE_EQ(k.tanPhiR, 0.6);
+	EXPECT_DOUBLE_EQ(rdem::finalOpening(k.ft, k.GfI), rdem::finalOpening(0.25e6, 18.0));
+	EXPECT_DOUBLE_EQ(k.c, f * 0.35e6);
+	EXPECT_DOUBLE_EQ(k.GfII, f * 125.0);
+	Path p(k);
+	p.to(2 * rdem::finalOpening(0.25e6, 18.0), V::Zero(), 20000);
+	EXPECT_EQ(p.state, SegmentState::BrokenTension);
+	EXPECT_NEAR(p.d.tension, f * 18.0, 1e-9 * 18.0);
+	// Peak: f f_t within one step's stress increment (k_n times the step 1.44e-8 m, 1.4e3 Pa against 3.25e5 Pa).
+	EXPECT_NEAR(p.peakSigma, f * 0.25e6, 1e11 * 2 * rdem::finalOpening(0.25e6, 18.0) / 20000);
+}

@@ -4,7 +4,8 @@ A 10×10×4 grid of 2 cm blocks (1020 bonds) bonded with strengthCoV = 0.3 and s
 factors have mean 1 and CoV 0.3, the stiffness factors mean 1 and CoV 0.2, within four standard errors of a sample of
 1020 (the bounds below); the two factors are uncorrelated; a bond's factor does not depend on which other bonds are made.
 A bar of six blocks pulled apart with softening springs cracks through at one joint, the weakest the seed made: the same seed reproduces the
-run bit for bit (every position equal), another seed does not. About 5 s."""
+run bit for bit (every position equal), another seed does not. With strengthPerSegment, every segment has its own factor
+(mean 1, CoV 0.3 over 4080 segments), and the weakest segment of a pulled pair breaks first. About 6 s."""
 import math
 import unittest
 import harness
@@ -16,10 +17,11 @@ E, NU, FT, C = 30e9, 0.2, 3e6, 6e6
 KN = E / (1 - NU**2) / 0.02  # eqs. 11-12: two 2 cm blocks (ℓ = 1 cm each) [N/m3]
 
 
-def grid(counts, seed, strengthCoV=0.3, stiffnessCoV=0.2, softening=False):
+def grid(counts, seed, strengthCoV=0.3, stiffnessCoV=0.2, softening=False, perSegment=False):
 	harness.freshScene()
 	mat = O.materials.append(RdemMat(young=E, poisson=NU, density=2300, tensileStrength=FT, cohesion=C))
-	O.engines = rdem.engines(poisson=None, recontact=False, softening=softening, strengthCoV=strengthCoV, stiffnessCoV=stiffnessCoV, seed=seed)
+	O.engines = rdem.engines(poisson=None, recontact=False, softening=softening, strengthCoV=strengthCoV, strengthPerSegment=perSegment,
+	                         stiffnessCoV=stiffnessCoV, seed=seed)
 	rdem.blockGrid(counts, (0.02, ) * 3, material=mat)
 
 
@@ -65,6 +67,34 @@ class Heterogeneity(unittest.TestCase):
 		rdem.bond(range(20))
 		for key, x in factors().items():
 			self.assertEqual(x, f[key])
+
+	def testFactorsPerSegment(self):
+		# strengthPerSegment: each of a bond's 2x2 segments has its own factor (RdemPhys.segStrengthFactor), of mean 1 and
+		# CoV 0.3 over the 4080 segments within four standard errors; the bond's own strengths stay the material's.
+		grid((10, 10, 4), seed=11, perSegment=True)
+		n = rdem.bond(range(len(O.bodies)))
+		seg = [f for i in O.interactions if i.isReal for f in i.phys.segStrengthFactor]
+		self.assertEqual(len(seg), 4 * n)
+		for i in O.interactions:
+			self.assertEqual(i.phys.tensileStrength, FT)
+			self.assertEqual(len(set(i.phys.segStrengthFactor)), 4)
+		m, cov = meanCoV(seg)
+		dm, dc = fourSE(0.3, len(seg))
+		self.assertAlmostEqual(m, 1, delta=dm)
+		self.assertAlmostEqual(cov, 0.3, delta=dc)
+
+	def testWeakSegmentBreaksFirst(self):
+		# Two blocks pulled apart slowly with per-segment strengths: the segment of the smallest factor breaks first, at
+		# the smallest f_t (the law runs the factors, not only the set-up).
+		grid((2, 1, 1), seed=5, stiffnessCoV=0.0, perSegment=True)
+		rdem.bond([0, 1])
+		O.bodies[0].state.blockedDOFs = O.bodies[1].state.blockedDOFs = 'xyzXYZ'
+		O.bodies[1].state.vel = Vector3(1e-3, 0, 0)
+		phys = O.interactions[0, 1].phys
+		weakest = min(range(4), key=lambda k: phys.segStrengthFactor[k])
+		while list(phys.segState).count(0) == 4:
+			O.step()
+		self.assertEqual([k for k in range(4) if phys.segState[k] != 0], [weakest])
 
 	def pulledBar(self, seed):
 		grid((6, 1, 1), seed=seed, stiffnessCoV=0.1, softening=True)

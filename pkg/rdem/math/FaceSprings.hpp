@@ -34,6 +34,15 @@ namespace rdem {
 		S kn, ks, tensileStrength, cohesion, tanPhi;
 	};
 
+	/// k with its strengths f_t and c multiplied by the heterogeneity factor f > 0 (doc/theory.md §2.2); stiffnesses and
+	/// friction unchanged.
+	template <class S> RestoringConstants<S> scaledStrengths(RestoringConstants<S> k, S f)
+	{
+		k.tensileStrength *= f;
+		k.cohesion *= f;
+		return k;
+	}
+
 	/// Stresses of a restoring spring and whether it holds them.
 	template <class S> struct RestoringStress {
 		S                      sigma;   ///< σ = k̄_n u_n, positive in tension [Pa]

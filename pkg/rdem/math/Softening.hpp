@@ -49,6 +49,19 @@ namespace rdem {
 		S fc, Gfc, residual; ///< compressive strength [Pa] (inf: no cap), its fracture energy [J/m²], residual fraction r
 	};
 
+	/// k with its strengths f_t, c, f_c and fracture energies G_f^I, G_f^II, G_fc multiplied by the heterogeneity factor
+	/// f > 0 (doc/theory.md §2.2): the final openings 2G/f stay the material's; stiffnesses, friction and r unchanged.
+	template <class S> SofteningConstants<S> scaledStrengths(SofteningConstants<S> k, S f)
+	{
+		k.ft *= f;
+		k.GfI *= f;
+		k.c *= f;
+		k.GfII *= f;
+		k.fc *= f;
+		k.Gfc *= f;
+		return k;
+	}
+
 	/// History of a softening spring: plastic crack opening w [m], crushing closure κ [m], softening ξ, plastic slip s [m].
 	template <class S> struct SofteningState {
 		S                      crack = 0, crush = 0, xi = 0;
