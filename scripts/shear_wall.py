@@ -164,7 +164,8 @@ print('shear_wall: %s; sigma0 %.3g MPa (N = %.1f kN), %s ends; time step %.3g s,
       flush=True)
 
 # 3. Recording -------------------------------------------------------------------------------------------------------
-ENERGIES = ('rdemElastic', 'rdemPoisson', 'rdemBondBreak', 'rdemDashpot', 'rdemFriction', 'rdemPoissonRelease', 'nonviscDamp', 'kinetic', 'gravWork')
+ENERGIES = ('rdemElastic', 'rdemPoisson', 'rdemBondBreak', 'rdemDashpot', 'rdemFriction', 'rdemPoissonRelease', 'rdemFractureTension', 'rdemFractureShear',
+            'rdemCrushing', 'nonviscDamp', 'kinetic', 'gravWork')
 history = dict(t=[], drift=[], shear=[], baseShear=[], axial=[], rotation=[], vertical=[], tension=[], shearBreaks=[], workH=[], workV=[],
                **{e: [] for e in ENERGIES})
 state = dict(peak=None, peakCracks=None, first=None, report=time.time(), iter=O.iter, vtkNext=0.0)
@@ -298,10 +299,13 @@ ax.set_title('%s: sigma0 = %.2f MPa, %s ends, %s' % (opts.wall if measured else 
                                                    'softening' if opts.softening == 'on' else 'brittle springs'))
 ax.legend(fontsize=7)
 ax = axes[1]
-dissipated = [sum(h[e][k] for e in ('rdemBondBreak', 'rdemDashpot', 'rdemFriction', 'rdemPoissonRelease', 'nonviscDamp')) for k in range(len(drift))]
+dissipated = [
+        sum(h[e][k] for e in ('rdemBondBreak', 'rdemDashpot', 'rdemFriction', 'rdemPoissonRelease', 'rdemFractureTension', 'rdemFractureShear', 'rdemCrushing', 'nonviscDamp'))
+        for k in range(len(drift))
+]
 ax.plot(drift, [a + b for a, b in zip(h['workH'], h['workV'])], 'k-', label='work of the actuator and the vertical load')
 ax.plot(drift, [a + b for a, b in zip(h['rdemElastic'], h['rdemPoisson'])], label='elastic (springs and cells)')
-ax.plot(drift, dissipated, label='dissipated (breaks, dashpots, friction, damping)')
+ax.plot(drift, dissipated, label='dissipated (breaks, fracture, crushing, dashpots, friction, damping)')
 ax.plot(drift, h['nonviscDamp'], ':', label="of which Cundall's damping")
 ax.plot(drift, h['kinetic'], label='kinetic')
 ax.set_ylabel('energy [J]')
