@@ -79,7 +79,7 @@ r.add_argument('--boundary', choices=['fixed', 'cantilever'], default='fixed', h
 r.add_argument('--drift', type=float, default=0.6, help='monotonic test: end drift [%%] (default 0.6)')
 r.add_argument('--cycles', type=str, default='', help='cyclic test instead: drift amplitudes [%%] separated by commas, e.g. 0.05,0.1,0.2 (default none)')
 r.add_argument('--repeat', type=int, default=1, help='cycles per amplitude (default 1)')
-r.add_argument('--stop-drop', type=float, default=0.3, help='monotonic test: stop once the load has dropped by this fraction of the peak (default 0.3; 0 = never)')
+r.add_argument('--stop-drop', type=float, default=0.3, help='monotonic test: stop once the load (averaged over --smooth samples) has dropped by this fraction of its peak (default 0.3; 0 = never)')
 r.add_argument('--max-wall', type=float, default=0, help='end the loading after this wall-clock time [s] and write the results so far (default 0: no limit)')
 r.add_argument('--rate', type=float, default=10.0, help='speed of the top beam [mm/s] (default 10)')
 r.add_argument('--ramp', type=float, default=0.05, help='duration of the velocity ramp at the start and at reversals [s] (default 0.05)')
@@ -95,12 +95,16 @@ k.add_argument('--verlet', type=float, default=0.003,
                help='sweep distance of the collider [m] once contacts can occur (default 0.003, about 5 %% of a course; 0: the collider runs every step)')
 k.add_argument('--safety', type=float, default=0.8, help='time step over its stable estimate (default 0.8)')
 o = parser.add_argument_group('output')
+o.add_argument('--smooth', type=int, default=21,
+               help='samples (of 100 steps) of the moving average for the smoothed peak, odd (default 21: about one first period of MI1)')
 o.add_argument('--out', default='output/shear_wall', help='output folder (default output/shear_wall)')
 o.add_argument('--vtk-every', type=float, default=0.05, help='ParaView output every this drift [%%] (default 0.05; 0 = none)')
 opts = parser.parse_args(sys.argv[1:])
 for name in ('rate', 'drift', 'beam', 'compress_time', 'density', 'beam_density'):
 	if not getattr(opts, name) > 0:
 		sys.exit('--%s = %g: must be > 0' % (name.replace('_', '-'), getattr(opts, name)))
+if not (opts.smooth >= 1 and opts.smooth % 2 == 1):
+	sys.exit('--smooth = %d: must be an odd integer >= 1' % opts.smooth)
 if not 0 <= opts.stop_drop < 1:
 	sys.exit('--stop-drop = %g: must be in [0, 1)' % opts.stop_drop)
 if opts.ramp < 0:
@@ -217,14 +221,17 @@ def onStep(t):
 
 
 def stop(t):
-	"""Monotonic test: the load has dropped by --stop-drop of the peak, once past the first crack (before it, the peak is
-	the residual of the vertical loading)."""
-	p = state['peak']
+	"""Monotonic test: the load, averaged over the last --smooth samples (crack bursts make single samples spike), has
+	dropped by --stop-drop of the largest such average, once past the first crack (before it, the peak is the residual
+	of the vertical loading)."""
 	if opts.max_wall > 0 and time.time() - t1 > opts.max_wall:
 		print('shear_wall: --max-wall %g s reached; results so far' % opts.max_wall, flush=True)
 		return True
-	return (not amplitudes and opts.stop_drop > 0 and state['first'] is not None and abs(p['driftPercent']) > 0.01
-	        and abs(history['shear'][-1]) < (1 - opts.stop_drop) * abs(p['shearKN']) * 1e3)
+	recent = history['shear'][-opts.smooth:]
+	mean = abs(sum(recent) / len(recent))
+	state['smoothPeak'] = max(state.get('smoothPeak', 0.0), mean)
+	return (not amplitudes and opts.stop_drop > 0 and state['first'] is not None and abs(state['peak']['driftPercent']) > 0.01
+	        and mean < (1 - opts.stop_drop) * state['smoothPeak'])
 
 
 # 4. Run ----------------------------------------------------------------------------------------------------------------
@@ -250,6 +257,8 @@ if state['peakCracks'] is None:
 # 5. Results ----------------------------------------------------------------------------------------------------------
 h = history
 peak, first = state['peak'], state['first']
+smoothV, smoothDrift = walltest.smoothedPeak(h['drift'], h['shear'], opts.smooth)
+smoothed = dict(shearKN=smoothV * 1e-3, driftPercent=smoothDrift * 100, window=opts.smooth)
 uFirst = first['driftPercent'] * 1e-2 * test.height if first else None
 stiffness = first['shearKN'] * 1e3 / uFirst if first and uFirst else float('nan')
 closedForm = (walltest.timoshenkoStiffness(opts.brick_E * 1e9, opts.brick_nu, w.layout.length, w.layout.thickness, w.layout.height, opts.boundary)
@@ -267,10 +276,11 @@ if measured:
 	mean = 0.5 * sum(measured['peak'])
 	comparison = dict(measuredPeakKN=[v * 1e-3 for v in measured['peak']], measuredMeanKN=mean * 1e-3, modelPeakKN=abs(peak['shearKN']),
 	                  peakError=abs(peak['shearKN']) * 1e3 / mean - 1, measuredDriftPercent=[d * 100 for d in measured['driftAtPeak']],
-	                  modelDriftPercent=abs(peak['driftPercent']), measuredFailure=measured['failure'])
+	                  modelDriftPercent=abs(peak['driftPercent']), smoothedPeakKN=abs(smoothed['shearKN']), smoothedPeakError=abs(smoothV) / mean - 1,
+	                  smoothedDriftPercent=abs(smoothed['driftPercent']), measuredFailure=measured['failure'])
 results = dict(input=vars(opts), sigma0=sigma0, axialForce=test.axialForce, blocks=len(w.ids), bonds=w.nBonds, bricks=len(w.bricks), courses=len(w.courses),
                joints={k: len(v) for k, v in w.joints.items()}, cells=rdem.poissonEngine().nCells if opts.formulation != 'off' else 0, timeStep=O.dt,
-               sources=walltest.MAGENES_CALVI['sources'], peak=peak, firstCrack=first, initialStiffnessKNPerMm=stiffness * 1e-6,
+               sources=walltest.MAGENES_CALVI['sources'], peak=peak, smoothedPeak=smoothed, firstCrack=first, initialStiffnessKNPerMm=stiffness * 1e-6,
                timoshenkoStiffnessKNPerMm=closedForm * 1e-6 if closedForm else None, cracksAtPeak=peakCount, cracksAtEnd=crackCount,
                brokenSprings=dict(tension=h['tension'][-1] - h['tension'][0], shear=h['shearBreaks'][-1] - h['shearBreaks'][0]),
                settlementMm=-h['vertical'][0] * 1e3, largestTopRotation=max(abs(r) for r in h['rotation']),
@@ -354,6 +364,7 @@ axes[1].legend(fontsize=7, loc='upper right')
 fig.tight_layout()
 fig.savefig(os.path.join(opts.out, 'cracks.png'), dpi=120)
 
+print('shear_wall: smoothed peak (%d samples) %.1f kN at %.3f %% drift' % (opts.smooth, smoothed['shearKN'], smoothed['driftPercent']), flush=True)
 print('shear_wall: peak %.1f kN at %.3f %% drift%s; first broken spring at %s; initial stiffness %.1f kN/mm%s; cracks at the end: joints %s, bricks %s; '
       'energy balance %s; %d + %d steps in %.1f + %.1f s (%.3f us per block-step, %d threads); results in %s' %
       (peak['shearKN'], peak['driftPercent'], (' (measured mean %.1f kN: %+.1f %%)' % (comparison['measuredMeanKN'], 100 * comparison['peakError'])) if comparison else '',

@@ -238,6 +238,25 @@ class ShearWallTest:
 				record(self)
 
 
+def smoothedPeak(drift, shear, window):
+	"""The largest $|V|$ of the centred moving average of ``shear`` over ``window`` samples (odd, >= 1), and the drift
+	there: the peak without the spikes of single samples after crack bursts (the wall rings at its first period for a
+	few cycles). Returns (V, drift) in the units given. ValueError if ``window`` is not an odd integer >= 1 or the
+	lists are empty or of different lengths."""
+	if not (isinstance(window, int) and window >= 1 and window % 2 == 1):
+		raise ValueError('window = %r: must be an odd integer >= 1' % (window, ))
+	if not shear or len(drift) != len(shear):
+		raise ValueError('drift and shear: must be non-empty lists of the same length (%d, %d)' % (len(drift), len(shear)))
+	h = window // 2
+	best = None
+	for k in range(len(shear)):
+		part = shear[max(0, k - h):k + h + 1]
+		v = sum(part) / len(part)
+		if best is None or abs(v) > abs(best[0]):
+			best = (v, drift[k])
+	return best
+
+
 def crackClasses(wall, segments):
 	"""The broken segments ``segments`` (:func:`rdem.measure.brokenSegments`) counted by where and how they broke:
 	``{'joint': {'tension': n, 'shear': n, 'released': n}, 'brick': {...}}``; *joint* = bed, head, collar and beam joints,

@@ -104,6 +104,22 @@ class ShearWall(unittest.TestCase):
 		bar = (N + weight / 2) * H / (E * L * T)
 		self.assertAlmostEqual(-test.verticalDisplacement() / bar, 1.0, delta=TOL_SETTLEMENT, msg='settlement %.5g m, bar %.5g m' % (-test.verticalDisplacement(), bar))
 
+	def testSmoothedPeak(self):
+		# A rising load with a one-sample spike to 70 at index 3 on a plateau of 30: the raw peak is the spike; the centred
+		# 3-sample averages are 5, 10, 33.3, 40, 43.3, 30, 30 (the ends over 2 samples), largest (70 + 30 + 30)/3 at index 4;
+		drift = [0, 1, 2, 3, 4, 5, 6]
+		shear = [0.0, 10.0, 20.0, 70.0, 30.0, 30.0, 30.0]
+		self.assertEqual(walltest.smoothedPeak(drift, shear, 1), (70.0, 3))
+		v, d = walltest.smoothedPeak(drift, shear, 3)
+		self.assertAlmostEqual(v, 130.0 / 3, delta=1e-12)
+		self.assertEqual(d, 4)
+		self.assertEqual(walltest.smoothedPeak(drift, [-v for v in shear], 1), (-70.0, 3))  # the largest |V|, sign kept
+		for window in (0, 2, 1.0):
+			with self.assertRaisesRegex(ValueError, '^window'):
+				walltest.smoothedPeak(drift, shear, window)
+		with self.assertRaisesRegex(ValueError, '^drift and shear'):
+			walltest.smoothedPeak(drift, shear[:-1], 1)
+
 	def testArguments(self):
 		w, test = tinyWall('fixed')
 		for kw, name in ((dict(boundary='pinned'), 'boundary'), (dict(sigma0=-1.0), 'sigma0'), (dict(sigma0=float('inf')), 'sigma0')):
