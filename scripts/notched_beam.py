@@ -18,6 +18,8 @@ Expected result
 How to run (about 9 minutes for the default three sizes, both laws, on this project's shared 2-core machine; the
 finest softening run alone 5-6 minutes)
     build/bin/yade -n scripts/notched_beam.py [--depths 4 8 16] [--laws softening brittle] [--out output/notched_beam]
+    build/bin/yade -n scripts/notched_beam.py --depths 8 --strength-cov 0.2 --per-segment --seeds 1 2 3 4 5
+                                                  heterogeneity: first-crack and peak scatter over five seeds
     build/bin/yade -n scripts/notched_beam.py --help
 
 Outputs (in --out, default output/notched_beam): results.json, load_deflection.png, ParaView files of each run's blocks
@@ -44,6 +46,9 @@ parser.add_argument('--gf', type=float, default=100.0, help='mode-I fracture ene
 parser.add_argument('--speed', type=float, default=2e-3, help='loading speed [m/s] (default 2e-3)')
 parser.add_argument('--deflection', type=float, default=1.2e-4, help='deflection at which a run stops [m] (default 1.2e-4)')
 parser.add_argument('--stop-drop', type=float, default=0.5, help='stop a run once the load has fallen below this fraction of its peak, past a quarter of --deflection (default 0.5; 0: never)')
+parser.add_argument('--strength-cov', type=float, default=0.0, help='coefficient of variation of the strengths (rdem.engines(strengthCoV=); default 0: uniform)')
+parser.add_argument('--per-segment', action='store_true', help='with --strength-cov: one strength factor per segment (spring) instead of per bond')
+parser.add_argument('--seeds', type=int, nargs='+', default=[0], help='seeds of the strengths: one run per seed (default 0)')
 parser.add_argument('--damping', type=float, default=0.2, help="Cundall's non-viscous damping of the integrator (default 0.2)")
 parser.add_argument('--out', default='output/notched_beam', help='output folder (default output/notched_beam)')
 parser.add_argument('--doc', action='store_true', help='also write the figure to doc/figures/notched_beam.png')
@@ -53,6 +58,8 @@ for name in ('length', 'span', 'depth', 'thickness', 'young', 'ft', 'gf', 'speed
 		sys.exit('--%s = %g: must be > 0' % (name, getattr(opts, name)))
 if not opts.span < opts.length:
 	sys.exit('--span = %g: must be less than --length = %g' % (opts.span, opts.length))
+if not opts.strength_cov >= 0:
+	sys.exit('--strength-cov = %g: must be >= 0' % opts.strength_cov)
 if not 0 <= opts.stop_drop < 1:
 	sys.exit('--stop-drop = %g: must be in [0, 1)' % opts.stop_drop)
 if not 0 < opts.notch < 1:
@@ -70,14 +77,15 @@ import rdem
 os.makedirs(os.path.join(opts.out, 'vtk'), exist_ok=True)
 
 
-def build(ny, softening):
+def build(ny, softening, seed):
 	"""The beam of ny blocks over the depth (square in the plane of bending); returns (supports, loaded, span)."""
 	O.reset()
 	b = opts.depth / ny
 	nx = 2 * int(round(opts.length / b / 2))  # even: mid-span is a block boundary
 	mat = O.materials.append(RdemMat(young=opts.young, poisson=0.2, density=2400, tensileStrength=opts.ft, cohesion=2 * opts.ft, fractureEnergy=opts.gf,
 	                                 shearFractureEnergy=10 * opts.gf))
-	O.engines = rdem.engines(poisson=None, recontact=True, damping=opts.damping, softening=softening)
+	O.engines = rdem.engines(poisson=None, recontact=True, damping=opts.damping, softening=softening, strengthCoV=opts.strength_cov,
+	                         strengthPerSegment=opts.per_segment, seed=seed)
 	x0 = -nx * b / 2
 	rdem.blockGrid((nx, 1, ny), (b, opts.thickness, b), material=mat, origin=(x0, -opts.thickness / 2, 0))
 	rdem.bond(range(len(O.bodies)))
@@ -100,8 +108,16 @@ def build(ny, softening):
 	return supports, loaded, span
 
 
-def run(ny, softening):
-	supports, loaded, span = build(ny, softening)
+def cracked(softening):
+	"""Whether a spring has cracked: broken (brittle), or begun to soften (softening: the onset of the crack)."""
+	if not softening:
+		return sum(rdem.breakCounts()) > 0
+	return any(x > 0 for i in O.interactions if i.isReal for x in i.phys.segSoftening)
+
+
+def run(ny, softening, seed):
+	supports, loaded, span = build(ny, softening, seed)
+	first = None
 	O.step()
 	z0 = O.bodies[loaded[0]].state.pos[2]
 	hist = dict(deflection=[], load=[])
@@ -111,6 +127,8 @@ def run(ny, softening):
 		O.run(max(1, steps // 400), True)
 		hist['deflection'].append(z0 - O.bodies[loaded[0]].state.pos[2])
 		hist['load'].append(sum(O.forces.f(i)[2] for i in loaded))
+		if first is None and cracked(softening):
+			first = hist['load'][-1]
 		if hist['deflection'][-1] > opts.deflection / 4 and hist['load'][-1] < opts.stop_drop * max(hist['load']):  # past the start's vibrations
 			break
 		if time.time() - last > 10:
@@ -118,48 +136,69 @@ def run(ny, softening):
 			print('  depth %d, %s: step %d of about %d, load %.0f N' % (ny, 'softening' if softening else 'brittle', O.iter, steps, hist['load'][-1]), flush=True)
 	wall = time.time() - wall0
 	peak = max(hist['load'])
-	VTKRecorder(fileName=os.path.join(opts.out, 'vtk', 'beam-%d-%s.' % (ny, 'softening' if softening else 'brittle')), recorders=['boxes'])()
-	return dict(blocksOverDepth=ny, blocks=len(O.bodies), law='softening' if softening else 'brittle', span=span, peakLoad=peak,
+	VTKRecorder(fileName=os.path.join(opts.out, 'vtk', 'beam-%d-%s-%d.' % (ny, 'softening' if softening else 'brittle', seed)), recorders=['boxes'])()
+	return dict(blocksOverDepth=ny, blocks=len(O.bodies), law='softening' if softening else 'brittle', seed=seed, span=span, peakLoad=peak, firstCrackLoad=first,
 	            nominalStrength=3 * peak * span / (2 * opts.thickness * opts.depth**2), dt=O.dt, steps=O.iter, wallSeconds=wall, history=hist)
 
 
+def meanCoV(x):
+	m = sum(x) / len(x)
+	return m, (math.sqrt(sum((v - m)**2 for v in x) / (len(x) - 1)) / m if len(x) > 1 else 0.0)
+
+
 def summarize(runs):
+	"""Per law: the spread of the nominal strength over the meshes (first seed); per law and mesh: mean and CoV over the
+	seeds of the peak load and of the load at the first crack."""
 	summary = {}
 	for law in opts.laws:
-		s = [r['nominalStrength'] for r in runs if r['law'] == law]
+		s = [r['nominalStrength'] for r in runs if r['law'] == law and r['seed'] == opts.seeds[0]]
 		if s:
-			summary[law] = dict(spread=(max(s) - min(s)) / max(s), strengths=s)
+			summary[law] = dict(spread=(max(s) - min(s)) / max(s), strengths=s, seeds={})
+		for ny in opts.depths:
+			rs = [r for r in runs if r['law'] == law and r['blocksOverDepth'] == ny]
+			if rs:
+				peak, first = meanCoV([r['peakLoad'] for r in rs]), meanCoV([r['firstCrackLoad'] or 0.0 for r in rs])
+				summary[law]['seeds'][ny] = dict(n=len(rs), peakMean=peak[0], peakCoV=peak[1], firstCrackMean=first[0], firstCrackCoV=first[1])
 	return summary
 
 
 runs = []
 for law in opts.laws:
 	for ny in opts.depths:
-		print('depth %d blocks, %s springs' % (ny, law), flush=True)
-		runs.append(run(ny, law == 'softening'))
-		print('  peak load %.0f N, nominal strength %.3f MPa, %d steps, %.1f s' % (runs[-1]['peakLoad'], runs[-1]['nominalStrength'] / 1e6, runs[-1]['steps'],
-		                                                                               runs[-1]['wallSeconds']), flush=True)
-		with open(os.path.join(opts.out, 'results.json'), 'w') as f:  # after every run: the runs so far
-			json.dump(dict(input=vars(opts), runs=runs, summary=summarize(runs)), f, indent=1)
+		for seed in opts.seeds:
+			print('depth %d blocks, %s springs, seed %d' % (ny, law, seed), flush=True)
+			runs.append(run(ny, law == 'softening', seed))
+			print('  peak load %.0f N, nominal strength %.3f MPa, first crack at %s, %d steps, %.1f s' %
+			      (runs[-1]['peakLoad'], runs[-1]['nominalStrength'] / 1e6, '%.0f N' % runs[-1]['firstCrackLoad'] if runs[-1]['firstCrackLoad'] else '-',
+			       runs[-1]['steps'], runs[-1]['wallSeconds']),
+			      flush=True)
+			with open(os.path.join(opts.out, 'results.json'), 'w') as f:  # after every run: the runs so far
+				json.dump(dict(input=vars(opts), runs=runs, summary=summarize(runs)), f, indent=1)
 summary = summarize(runs)
 
 fig, ax = plt.subplots(figsize=(7, 4.5))
 for r in runs:
 	ax.plot([d * 1e3 for d in r['history']['deflection']], [p / 1e3 for p in r['history']['load']], '-' if r['law'] == 'softening' else '--',
-	        label='%s, %d blocks over the depth' % (r['law'], r['blocksOverDepth']))
+	        label='%s, %d blocks over the depth%s' % (r['law'], r['blocksOverDepth'], ', seed %d' % r['seed'] if len(opts.seeds) > 1 else ''))
 ax.set_xlabel('mid-span deflection [mm]')
 ax.set_ylabel('load [kN]')
 ax.legend(fontsize=8)
 fig.tight_layout()
 fig.savefig(os.path.join(opts.out, 'load_deflection.png'), dpi=120)
 
-lines = ['| law | blocks over depth | blocks | span [m] | peak load [kN] | nominal strength [MPa] | steps | wall [s] |', '|---|---|---|---|---|---|---|---|']
+lines = ['| law | blocks over depth | seed | blocks | span [m] | first crack [kN] | peak load [kN] | nominal strength [MPa] | steps | wall [s] |',
+         '|---|---|---|---|---|---|---|---|---|---|']
 for r in runs:
-	lines.append('| %s | %d | %d | %.4f | %.3f | %.3f | %d | %.1f |' % (r['law'], r['blocksOverDepth'], r['blocks'], r['span'], r['peakLoad'] / 1e3,
-	                                                                 r['nominalStrength'] / 1e6, r['steps'], r['wallSeconds']))
+	lines.append('| %s | %d | %d | %d | %.4f | %s | %.3f | %.3f | %d | %.1f |' %
+	             (r['law'], r['blocksOverDepth'], r['seed'], r['blocks'], r['span'], '%.3f' % (r['firstCrackLoad'] / 1e3) if r['firstCrackLoad'] else '-',
+	              r['peakLoad'] / 1e3, r['nominalStrength'] / 1e6, r['steps'], r['wallSeconds']))
 for law, s in summary.items():
 	lines.append('')
 	lines.append('%s: spread of the nominal strength over the meshes (max - min)/max = %.1f %%' % (law, 100 * s['spread']))
+	for ny, q in s['seeds'].items():
+		if q['n'] > 1:
+			lines.append('%s, %d blocks over the depth, %d seeds: peak %.3f kN (CoV %.2f %%), first crack %.3f kN (CoV %.2f %%)' %
+			             (law, ny, q['n'], q['peakMean'] / 1e3, 100 * q['peakCoV'], q['firstCrackMean'] / 1e3, 100 * q['firstCrackCoV']))
 print('\n'.join(lines))
 if opts.doc:
 	fig.savefig('doc/figures/notched_beam.png', dpi=120)

@@ -38,6 +38,7 @@ CASES = {
         'springs3': ('3x3 springs per face', ['--springs', '3'], 1),
         'poissonOff': ('Poisson effect off', ['--formulation', 'off', '--failure-stress', 'spring'], 1),
         'softening': ('softening law on', ['--softening', 'on'], 1),
+        'softeningJ2': ('softening law on, two threads', ['--softening', 'on'], 2),
 }
 
 parser = argparse.ArgumentParser(prog='yade scripts/shear_wall_sweep.py', description=__doc__.split('\n\n')[0])

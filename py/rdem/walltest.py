@@ -291,7 +291,7 @@ MAGENES_CALVI = {
                 'joint tensile bond strength 0.15 MPa': 'c = 1.4 f_t (LourencoRots1997, the TU Eindhoven walls: f_t = 0.25, c = 0.35 MPa), '
                 'so f_t = 0.21/1.4',
                 'brick tensile strength 1.28 MPa': '0.065 f_b, f_b = 19.72 MPa (database): the middle of the range 0.03-0.10 of the ratio of a '
-                "unit's tensile to compressive strength (Schubert1988, quoted by Lourenco1996, ch. 2)",
+                "unit's tensile to compressive strength (attributed to Schubert1988 via Lourenco1996, ch. 2; not verified: neither text was available to the project)",
                 'brick cohesion 1.79 MPa, friction 0.81': 'c = 1.4 f_t as for the joints (LourencoRots1997, potential cracks in the units); friction '
                 'of the joints (database)',
                 'density 1800 kg/m3': 'assumed, solid clay brick masonry (self-weight 0.035 MPa at the base)',
