@@ -25,8 +25,9 @@ import subprocess
 import sys
 import time
 
-LAUNCHER = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'build', 'bin', 'yade')
-SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'shear_wall.py')
+HERE = os.path.dirname(os.path.abspath(sys.argv[0]))  # this script's folder (under YADE, __file__ names YADE's launcher)
+LAUNCHER = os.path.join(os.path.dirname(HERE), 'build', 'bin', 'yade')
+SCRIPT = os.path.join(HERE, 'shear_wall.py')
 #: name -> (description, options of shear_wall.py beyond the common ones, threads)
 CASES = {
         'base': ('base: 1 block per brick, 2x2 springs, Poisson cells, brittle, 10 mm/s', [], 1),
