@@ -12,6 +12,7 @@
 #include <pkg/rdem/math/BlockCells.hpp>
 #include <pkg/rdem/math/FaceSprings.hpp>
 #include <pkg/rdem/math/Softening.hpp>
+#include <pkg/rdem/math/SortedKeys.hpp>
 #include <limits>
 #include <type_traits>
 #include <utility>
@@ -57,31 +58,12 @@ namespace {
 		/// Velocity of body 2 relative to body 1 at the point x₂ + r₂ [m/s].
 		Vector3r relativeVelocity(const Vector3r& r2) const { return s2.vel + s2.angVel.cross(r2) - s1.vel - s1.angVel.cross(r2 + x2 - x1); }
 
-		/* Stability caps (c_n, c_s) of a contact dashpot at point C with normal n (explicit central differences) [N·s/m]: a
-		   dashpot may at most stop, never reverse, the relative motion of its point within one step,
-		   c ≤ share·m_eff/Δt, with m_eff the pair's effective mass at the point (1/m_eff = Σ 1/m + |r×e|²/I_min over the
-		   free blocks, e the direction of the dashpot) and share its part of the interaction's contact area. For the
-		   shear dashpot, whose direction changes, |r×e|² is bounded by |r|². The caps bind where a contact drives a small
-		   effective mass, at an edge or a corner of a tumbling block; eq. (13) holds elsewhere (doc/theory.md §3). */
-		Vector2r dashpotCap(const Vector3r& C, const Vector3r& n, Real share) const
-		{
-			Real invN = 0, invS = 0;
-			for (const auto& sx : { std::make_pair(&s1, x1), std::make_pair(&s2, x2) }) {
-				if (sx.first->blockedDOFs == State::DOF_ALL) continue;
-				const Vector3r r = C - sx.second;
-				invN += 1 / sx.first->mass + r.cross(n).squaredNorm() / sx.first->inertia.minCoeff();
-				invS += 1 / sx.first->mass + r.squaredNorm() / sx.first->inertia.minCoeff();
-			}
-			const Real inf = std::numeric_limits<Real>::infinity();
-			return Vector2r(invN > 0 ? share / (invN * dt) : inf, invS > 0 ? share / (invS * dt) : inf);
-		}
-
 		/// Contact spring of a point of area A [m²] at C with normal n (eqs. 13, 17): p's constants per area times the
 		/// weighted area, dashpots capped (dashpotCap) for the point's share of the contact area; friction tanPhi.
 		rdem::ContactConstants<Real> contactConstants(const RdemPhys& p, Real area, const Vector3r& C, const Vector3r& n, Real share, Real tanPhi) const
 		{
 			const Real     an = p.weightNormal * area, as = p.weightShear * area;
-			const Vector2r cMax = dashpotCap(C, n, share);
+			const Vector2r cMax = Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(s1, x1, s2, x2, C, n, share, dt);
 			return { p.kn * an, p.ks * as, math::min(p.cn * an, cMax[0]), math::min(p.cs * as, cMax[1]), tanPhi };
 		}
 	};
@@ -370,38 +352,57 @@ namespace {
 		return b.anyIntactOrTouching;
 	}
 
+	/// The contact-sample history of one pair being made for this step, in the order of RdemGeom::sampleKey; one per
+	/// thread, swapped with the pair's (RdemPhys::contactShear …), so that no step allocates once the sizes settle.
+	struct SampleHistory {
+		std::vector<int>      previous; ///< index of each sample in the last step's history, -1 if it was not in contact
+		std::vector<Vector3r> shear, dashpot;
+		std::vector<Real>     offset;
+	};
+
 	/* Blocks that are not bonded, in contact at the sample points of RdemGeom (doc/theory.md §4): each point's contact
-	   spring (rdem::contactSpringForce), its history kept per sample key. A point that starts its contact already δ₀ deep
+	   spring (rdem::contactSpringForce), its history kept by sample key for the samples in contact in the last step
+	   (RdemPhys::contactKey, matched by rdem::matchSortedKeys). A point that starts its contact already δ₀ deep
 	   entered through a gap of the sampling (a region of overlap that held no sample point, or a change of the pair's
 	   normal), not by the motion of one step: its spring counts from δ₀, lowered whenever the depth is (δ₀ = min over the
 	   contact of δ), so that it never releases energy it did not store. Returns false when no point is in contact (the
 	   collider drops the pair once the bounding boxes separate). */
 	bool sampledContactForces(const RdemGeom& g, RdemPhys& p, const Pair& pair, Energies& e, ForceOnBody2& out)
 	{
-		if (g.sampleKey.empty()) return false;
-		const size_t nKeys = size_t(2 * 6 * (g.samplesPerEdge + 1) * (g.samplesPerEdge + 1) + 1); // face samples, then the edge contact
-		p.sampleShear.resize(nKeys, Vector3r::Zero());
-		p.sampleDashpot.resize(nKeys, Vector3r::Zero());
-		p.sampleOffset.resize(nKeys, 0);
-		p.sampleActive.resize(nKeys, 0);
-		std::vector<char> active(nKeys, 0);
-		Real              contactArea = 0;
+		const size_t n = g.sampleKey.size();
+		if (n == 0) return false;
+		static thread_local SampleHistory next;
+		next.previous.resize(n);
+		next.shear.resize(n);
+		next.dashpot.resize(n);
+		next.offset.resize(n);
+		rdem::matchSortedKeys(p.contactKey, g.sampleKey.data(), n, next.previous.data());
+		Real contactArea = 0;
 		for (Real a : g.sampleArea)
 			contactArea += a;
-		for (size_t k = 0; k < g.sampleKey.size(); ++k) {
-			const size_t key    = size_t(g.sampleKey[k]);
-			p.sampleOffset[key] = p.sampleActive[key] ? math::min(p.sampleOffset[key], g.sampleDepth[k]) : g.sampleDepth[k];
-			active[key]         = 1;
+		for (size_t k = 0; k < n; ++k) {
+			const int h     = next.previous[k];
+			next.offset[k]  = h >= 0 ? math::min(p.contactOffset[size_t(h)], g.sampleDepth[k]) : g.sampleDepth[k];
+			next.shear[k]   = h >= 0 ? p.contactShear[size_t(h)] : Vector3r::Zero();
+			next.dashpot[k] = h >= 0 ? p.contactDashpot[size_t(h)] : Vector3r::Zero();
 			const auto c
 			        = pair.contactConstants(p, g.sampleArea[k], g.samplePoint[k], g.sampleNormal[k], g.sampleArea[k] / contactArea, p.tanFriction);
-			const Real     depth = g.sampleDepth[k] - p.sampleOffset[key];
-			const Vector3r F     = rdem::contactSpringForce<Real>(
-                                c, depth, g.sampleNormal[k], g.sampleVel[k], pair.dt, p.sampleShear[key], p.sampleDashpot[key], pair.trackEnergy, e);
+			const Vector3r F = rdem::contactSpringForce<Real>(
+			        c,
+			        g.sampleDepth[k] - next.offset[k],
+			        g.sampleNormal[k],
+			        g.sampleVel[k],
+			        pair.dt,
+			        next.shear[k],
+			        next.dashpot[k],
+			        pair.trackEnergy,
+			        e);
 			out.add(F, g.samplePoint[k] - pair.x2);
 		}
-		for (size_t key = 0; key < nKeys; ++key)
-			if (!active[key]) p.sampleShear[key] = p.sampleDashpot[key] = Vector3r::Zero();
-		p.sampleActive.assign(active.begin(), active.end());
+		p.contactKey.assign(g.sampleKey.begin(), g.sampleKey.end());
+		std::swap(p.contactShear, next.shear);
+		std::swap(p.contactDashpot, next.dashpot);
+		std::swap(p.contactOffset, next.offset);
 		return true;
 	}
 
@@ -416,6 +417,20 @@ namespace {
 		}
 	}
 } // namespace
+
+Vector2r Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(
+        const State& s1, const Vector3r& x1, const State& s2, const Vector3r& x2, const Vector3r& C, const Vector3r& n, Real share, Real dt)
+{
+	Real invN = 0, invS = 0;
+	for (const auto& sx : { std::make_pair(&s1, x1), std::make_pair(&s2, x2) }) {
+		if (sx.first->blockedDOFs == State::DOF_ALL) continue;
+		const Vector3r r = C - sx.second;
+		invN += 1 / sx.first->mass + r.cross(n).squaredNorm() / sx.first->inertia.minCoeff();
+		invS += 1 / sx.first->mass + r.squaredNorm() / sx.first->inertia.minCoeff();
+	}
+	const Real inf = std::numeric_limits<Real>::infinity();
+	return Vector2r(invN > 0 ? share / (invN * dt) : inf, invS > 0 ? share / (invS * dt) : inf);
+}
 
 long Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(const Scene* scene)
 {

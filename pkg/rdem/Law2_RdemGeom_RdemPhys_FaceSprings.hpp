@@ -23,6 +23,15 @@ public:
 	/// Whether, since the last call, an interaction started or stopped leaving deferred forces (over every instance of
 	/// this law in the scene); resets the record. Lets RdemForceAssembler keep its per-body lists between such events.
 	static bool takeActiveSetChanged(const Scene* scene);
+	/* Stability caps (c_n, c_s) of a contact dashpot at point C with normal n (explicit central differences) [N·s/m], for
+	   the blocks with states s1, s2 and centroids x1, x2: a dashpot may at most stop, never reverse, the relative motion
+	   of its point within one step, c ≤ share·m_eff/Δt, with m_eff the pair's effective mass at the point
+	   (1/m_eff = Σ 1/m + |r×e|²/I_min over the free blocks, e the direction of the dashpot) and share its part of the
+	   interaction's contact area. For the shear dashpot, whose direction changes, |r×e|² is bounded by |r|². The caps bind
+	   where a contact drives a small effective mass, at an edge or a corner of a tumbling block, and on small blocks at
+	   the paper's h = 1; eq. (13) holds elsewhere (doc/theory.md §3). RdemTimeStepper caps its dashpots the same way. */
+	static Vector2r
+	dashpotCap(const State& s1, const Vector3r& x1, const State& s2, const Vector3r& x2, const Vector3r& C, const Vector3r& n, Real share, Real dt);
 	/// Whether a Law2_RdemGeom_RdemPhys_FaceSprings of the scene has totalStress (RdemPoissonEngine::build then needs cells).
 	static bool totalStressOf(const Scene* scene);
 	/// Number of interactions that started or stopped leaving deferred forces since the last takeActiveSetChanged.
