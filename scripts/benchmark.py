@@ -258,8 +258,9 @@ def runCollapse(spec):
 	collapseScene(spec['blocks'])
 	setup = time.time() - t0
 	n = len(O.bodies)
-	out = dict(bodies=n, setupSeconds=setup, dt=O.dt)
+	out = dict(bodies=n, setupSeconds=setup)
 	out.update(timed(n, spec['steps'], spec['warmup']))
+	out['dt'] = O.dt  # RdemTimeStepper's, set at the first step (before it O.dt is YADE's default 1e-8 s)
 	out.update(interactions=len(O.interactions.all()), contacts=sum(1 for I in O.interactions if I.isReal), time=O.time)
 	return out
 

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -31,12 +32,29 @@ YADE_PLUGIN((RdemTimeStepper));
 CREATE_LOGGER(RdemTimeStepper);
 
 namespace {
-	/// Adds, for one point spring, the Gershgorin terms 2(k_t/m + k_r/I_min) of one body [1/s²].
-	void addPoint(vector<Real>& omega2, const State& s, Body::id_t id, const Vector3r& point, const Vector3r& n, Real area, const RdemPhys& p)
+	/// Adds, for one point spring (or dashpot), the Gershgorin terms 2(k_t/m + k_r/I_min) of one body [1/s²] (or
+	/// 2(c_t/m + c_r/I_min) [1/s]), from its normal and shear stiffnesses k_n, k_s [N/m] (or dashpots [N·s/m]).
+	void addPoint(vector<Real>& sum, const State& s, Body::id_t id, const Vector3r& point, const Vector3r& n, Real kn, Real ks)
 	{
 		if (s.blockedDOFs == State::DOF_ALL) return;
-		omega2[size_t(id)]
-		        += rdem::pointSpringOmega2<Real>(point - s.pos, n, area, p.weightNormal * p.kn, p.weightShear * p.ks, s.mass, s.inertia.minCoeff());
+		sum[size_t(id)] += rdem::pointSpringOmega2<Real>(point - s.pos, n, 1, kn, ks, s.mass, s.inertia.minCoeff());
+	}
+
+	/// Dashpots (c_n, c_s) [N·s/m] of a point of area a [m²] that has `share` of its interaction's contact area: eq. (13)
+	/// per area times the weighted area, capped as the law caps them for the step dt (Law2…::dashpotCap; no cap for dt = 0).
+	Vector2r pointDashpots(const RdemPhys& p, const State& s1, const State& s2, const Vector3r& point, const Vector3r& n, Real a, Real share, Real dt)
+	{
+		const Vector2r c(p.weightNormal * p.cn * a, p.weightShear * p.cs * a);
+		return dt > 0 ? Vector2r(c.cwiseMin(Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(s1, s1.pos, s2, s2.pos, point, n, share, dt))) : c;
+	}
+
+	/// Whether segment i of a bond has a contact dashpot that acts: its restoring spring is broken (eq. 13; intact and
+	/// softening springs have none) and it touched in the last step (the law left it a stress). Segments that touch
+	/// again before the next update are covered by the safety factor, as contacts that start.
+	bool segmentDamped(const RdemPhys& p, size_t i)
+	{
+		return i < p.segState.size() && p.segState[i] != int(rdem::SegmentState::Intact) && i < p.segSigma.size()
+		        && (p.segSigma[i] < 0 || p.segTau[i] > 0);
 	}
 
 	/// How contacts are made: the scene's formulation (Ip2_RdemMat_RdemMat_RdemPhys::formulationOf) and the sample grid of
@@ -59,6 +77,17 @@ namespace {
 		return c;
 	}
 
+	/// Springs per area [N/m³] of a contact that a block without bonds can still make: its own stiffness per area for
+	/// its smallest half-extent ℓ (eq. 11; a contact spring, in series with the other block's (eq. 12), is softer).
+	/// Their dashpots are left out: a contact that has not started has no velocity history to damp, and the caps of the
+	/// law (Law2…::dashpotCap) would make any bound on them the caps' sum over six faces, six times m/Δt, which no step
+	/// satisfies; the contact's own dashpots enter the estimate once it exists (contact samples).
+	std::pair<Real, Real> contactToCome(const RdemBlock& shape, const RdemMat& mat, const ContactSetup& setup)
+	{
+		const Real ell = shape.extents.minCoeff();
+		return { rdem::normalStiffnessPerArea(mat.young, mat.poisson, ell, setup.modulus), rdem::shearStiffnessPerArea(mat.young, mat.poisson, ell) };
+	}
+
 	/* Adds to every free block that carries no bond the Gershgorin terms of a flush contact on each of its six faces
 	   (rdem::faceContactOmega2), at the block's own stiffness per area for its smallest half-extent ℓ (eq. 11; a contact
 	   spring, in series with the other block's (eq. 12), is softer): the contacts the collider has not made yet, which the
@@ -73,19 +102,17 @@ namespace {
 			const auto* shape = dynamic_cast<RdemBlock*>(b->shape.get());
 			const auto* mat   = dynamic_cast<RdemMat*>(b->material.get());
 			if (!shape || !mat) continue;
-			const Real ell = shape->extents.minCoeff();
-			const Real kn  = rdem::normalStiffnessPerArea(mat->young, mat->poisson, ell, setup.modulus);
-			const Real ks  = rdem::shearStiffnessPerArea(mat->young, mat->poisson, ell);
+			const auto k = contactToCome(*shape, *mat, setup);
 			for (int face = 0; face < 6; ++face)
 				omega2[size_t(b->id)] += rdem::faceContactOmega2<Real>(
-				        shape->extents, face / 2, setup.samplesPerEdge, kn, ks, b->state->mass, b->state->inertia.minCoeff());
+				        shape->extents, face / 2, setup.samplesPerEdge, k.first, k.second, b->state->mass, b->state->inertia.minCoeff());
 		}
 	}
 }
 
 Real RdemTimeStepper::gershgorin(Scene* sc) const
 {
-	vector<Real> omega2(sc->bodies->size(), 0);
+	vector<Real> omega2(sc->bodies->size(), 0); // row sums of the mass-normalised stiffness per body [1/s²]
 	vector<char> bonded(sc->bodies->size(), 0);
 	for (const auto& I : *sc->interactions) {
 		if (!I->isReal()) continue;
@@ -96,15 +123,15 @@ Real RdemTimeStepper::gershgorin(Scene* sc) const
 		const State& s2 = *Body::byId(I->getId2(), sc)->state;
 		if (g->nSegments() > 0) bonded[size_t(I->getId1())] = bonded[size_t(I->getId2())] = 1;
 		const Vector3r normal = g->normal.squaredNorm() > 0 ? g->normal : Vector3r(s1.ori * g->segNormal1);
-		for (const Vector3r& p1 : g->segmentPoints1()) {
-			const Vector3r point = s1.pos + s1.ori * p1;
-			addPoint(omega2, s1, I->getId1(), point, normal, g->segmentArea(), *p);
-			addPoint(omega2, s2, I->getId2(), point, normal, g->segmentArea(), *p);
-		}
-		for (size_t k = 0; k < g->sampleKey.size(); ++k) {
-			addPoint(omega2, s1, I->getId1(), g->samplePoint[k], g->sampleNormal[k], g->sampleArea[k], *p);
-			addPoint(omega2, s2, I->getId2(), g->samplePoint[k], g->sampleNormal[k], g->sampleArea[k], *p);
-		}
+		const auto     both   = [&](const Vector3r& point, const Vector3r& n, Real area) {
+                        const Real kn = p->weightNormal * p->kn * area, ks = p->weightShear * p->ks * area;
+                        addPoint(omega2, s1, I->getId1(), point, n, kn, ks);
+                        addPoint(omega2, s2, I->getId2(), point, n, kn, ks);
+		};
+		for (const Vector3r& p1 : g->segmentPoints1())
+			both(s1.pos + s1.ori * p1, normal, g->segmentArea());
+		for (size_t k = 0; k < g->sampleKey.size(); ++k)
+			both(g->samplePoint[k], g->sampleNormal[k], g->sampleArea[k]);
 	}
 	if (contactBound) addContactBound(omega2, bonded, sc);
 	if (RdemPoissonEngine* poisson = RdemPoissonEngine::of(sc)) {
@@ -121,24 +148,36 @@ Real RdemTimeStepper::gershgorin(Scene* sc) const
 }
 
 namespace {
-	/// The springs of one interaction (its bonded segments and contact samples) as point springs of K [N/m].
-	void addInteraction(rdem::BlockStiffness<Real>& K, const Interaction& I, const RdemGeom& g, const RdemPhys& p, Scene* sc)
+	/// The springs of one interaction (its bonded segments and contact samples) as point springs of K [N/m], and the
+	/// dashpots of its contact samples and broken segments (eq. 13) as point dashpots of C [N·s/m].
+	void addInteraction(
+	        rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, const Interaction& I, const RdemGeom& g, const RdemPhys& p, Scene* sc, Real capDt)
 	{
 		const State& s1 = *Body::byId(I.getId1(), sc)->state;
 		const State& s2 = *Body::byId(I.getId2(), sc)->state;
 		const long   b1 = I.getId1(), b2 = I.getId2();
 		if (g.nSegments() == 0 && g.sampleKey.empty()) return;
 		K.beginPair(b1, b2);
-		const Real     kn = p.weightNormal * p.kn, ks = p.weightShear * p.ks; // [N/m³]
+		C.beginPair(b1, b2);
+		const Real     wn = p.weightNormal, ws = p.weightShear;
 		const Vector3r normal = g.normal.squaredNorm() > 0 ? g.normal : Vector3r(s1.ori * g.segNormal1);
 		const Real     A      = g.segmentArea();
-		for (const Vector3r& p1 : g.segmentPoints1()) {
-			const Vector3r arm1 = s1.ori * p1;
-			K.addPointSpring(b1, b2, arm1, s1.pos + arm1 - s2.pos, normal, kn * A, ks * A);
+		const auto     points = g.segmentPoints1();
+		for (size_t i = 0; i < points.size(); ++i) {
+			const Vector3r arm1 = s1.ori * points[i], arm2 = s1.pos + arm1 - s2.pos;
+			K.addPointSpring(b1, b2, arm1, arm2, normal, wn * p.kn * A, ws * p.ks * A);
+			if (!segmentDamped(p, i)) continue;
+			const Vector2r c = pointDashpots(p, s1, s2, s1.pos + arm1, normal, A, 1, capDt); // share ≤ 1 in the law
+			C.addPointSpring(b1, b2, arm1, arm2, normal, c[0], c[1]);
 		}
-		for (size_t k = 0; k < g.sampleKey.size(); ++k)
-			K.addPointSpring(
-			        b1, b2, g.samplePoint[k] - s1.pos, g.samplePoint[k] - s2.pos, g.sampleNormal[k], kn * g.sampleArea[k], ks * g.sampleArea[k]);
+		const Real contactArea = std::accumulate(g.sampleArea.begin(), g.sampleArea.end(), Real(0));
+		for (size_t k = 0; k < g.sampleKey.size(); ++k) {
+			const Vector3r arm1 = g.samplePoint[k] - s1.pos, arm2 = g.samplePoint[k] - s2.pos;
+			const Real     a = g.sampleArea[k];
+			K.addPointSpring(b1, b2, arm1, arm2, g.sampleNormal[k], wn * p.kn * a, ws * p.ks * a);
+			const Vector2r c = pointDashpots(p, s1, s2, g.samplePoint[k], g.sampleNormal[k], a, a / contactArea, capDt);
+			C.addPointSpring(b1, b2, arm1, arm2, g.sampleNormal[k], c[0], c[1]);
+		}
 	}
 
 	/* The contacts a free block without bonds can still make (contactBound, doc/theory.md §6): springs to fixed points at
@@ -150,21 +189,20 @@ namespace {
 		const auto* shape = dynamic_cast<const RdemBlock*>(b.shape.get());
 		const auto* mat   = dynamic_cast<const RdemMat*>(b.material.get());
 		if (!shape || !mat) return;
-		const Real      ell = shape->extents.minCoeff();
-		const Real      kn  = rdem::normalStiffnessPerArea(mat->young, mat->poisson, ell, setup.modulus);
-		const Real      ks  = rdem::shearStiffnessPerArea(mat->young, mat->poisson, ell);
-		const Matrix3r  R   = b.state->ori.toRotationMatrix();
-		const Vector3r& h   = shape->extents;
+		const auto      k = contactToCome(*shape, *mat, setup);
+		const Matrix3r  R = b.state->ori.toRotationMatrix();
+		const Vector3r& h = shape->extents;
 		for (int face = 0; face < 6; ++face) {
-			const int      k = face / 2, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-			const Vector3r n = (face % 2 ? 1 : -1) * Vector3r::Unit(k);
-			for (const auto& p : rdem::faceSamplePoints<Real>(h[k] * n, Vector3r::Unit(k1), Vector3r::Unit(k2), h[k1], h[k2], setup.samplesPerEdge))
-				K.addPointSpring(b.id, -1, R * p.pos, Vector3r::Zero(), R * n, kn * p.weight, ks * p.weight);
+			const int      axis = face / 2, k1 = (axis + 1) % 3, k2 = (axis + 2) % 3;
+			const Vector3r n = (face % 2 ? 1 : -1) * Vector3r::Unit(axis);
+			for (const auto& p :
+			     rdem::faceSamplePoints<Real>(h[axis] * n, Vector3r::Unit(k1), Vector3r::Unit(k2), h[k1], h[k2], setup.samplesPerEdge))
+				K.addPointSpring(b.id, -1, R * p.pos, Vector3r::Zero(), R * n, k.first * p.weight, k.second * p.weight);
 		}
 	}
 }
 
-void RdemTimeStepper::assemble(Scene* sc, rdem::BlockStiffness<Real>& K, vector<rdem::BodyScale<Real>>& scale) const
+void RdemTimeStepper::assemble(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, vector<rdem::BodyScale<Real>>& scale) const
 {
 	const size_t nB = sc->bodies->size();
 	vector<char> bonded(nB, 0);
@@ -174,7 +212,7 @@ void RdemTimeStepper::assemble(Scene* sc, rdem::BlockStiffness<Real>& K, vector<
 		const auto* p = dynamic_cast<RdemPhys*>(I->phys.get());
 		if (!g || !p) continue;
 		if (g->nSegments() > 0) bonded[size_t(I->getId1())] = bonded[size_t(I->getId2())] = 1;
-		addInteraction(K, *I, *g, *p, sc);
+		addInteraction(K, C, *I, *g, *p, sc, capDt);
 	}
 	scale.assign(nB, rdem::BodyScale<Real>());
 	const ContactSetup setup = contactBound ? contactSetup(sc) : ContactSetup();
@@ -190,27 +228,31 @@ void RdemTimeStepper::assemble(Scene* sc, rdem::BlockStiffness<Real>& K, vector<
 
 Real RdemTimeStepper::lanczos(Scene* sc)
 {
-	rdem::BlockStiffness<Real>    K(sc->bodies->size());
+	const size_t                  nB = sc->bodies->size();
+	rdem::BlockStiffness<Real>    K(nB), C(nB);
 	vector<rdem::BodyScale<Real>> scale;
-	assemble(sc, K, scale);
+	assemble(sc, K, C, scale);
 	const size_t n = 6 * scale.size();
 	vector<char> mask(n, 0);
 	for (size_t b = 0; b < scale.size(); ++b)
 		for (size_t k = 0; k < 6; ++k)
 			mask[6 * b + k] = scale[b].free[k];
 	vector<Real> w(n);
-	auto         apply = [&](const Real* x, Real* y) { // y = P S K S P x
-                w.assign(x, x + n);
-                rdem::scaleDofs(scale, w.data());
-                K.multiply(w.data(), y);
-                rdem::scaleDofs(scale, y);
+	const auto   largest = [&](const rdem::BlockStiffness<Real>& X, vector<Real>& start) { // λ_max of P S X S P
+                auto apply = [&](const Real* x, Real* y) {
+                        w.assign(x, x + n);
+                        rdem::scaleDofs(scale, w.data());
+                        X.multiply(w.data(), y);
+                        rdem::scaleDofs(scale, y);
+                };
+                // warm start mixed with 10 % of a generic vector: a new stiff spot (a contact) far from the old mode is still found
+                return rdem::lanczosLargest<Real>(apply, n, mask, start, 2, lanczosMaxSteps, lanczosTolerance, Real(0.1));
 	};
-	// warm start mixed with 10 % of a generic vector: a new stiff spot (a contact) far from the old mode is still found
-	const auto est  = rdem::lanczosLargest<Real>(apply, n, mask, ritzVector, 2, lanczosMaxSteps, lanczosTolerance, Real(0.1));
+	const auto est  = largest(K, ritzVector);
 	lanczosSteps    = est.steps;
 	lanczosResidual = est.ritz > 0 ? est.residual / est.ritz : Real(0);
-	const Real w2   = est.upper();
-	return w2 > 0 ? 2 / math::sqrt(w2) : std::numeric_limits<Real>::infinity();
+	dashpotRate     = C.empty() ? Real(0) : largest(C, dashpotRitzVector).upper();
+	return rdem::dampedCriticalStep(est.upper(), dashpotRate);
 }
 
 vector<Real> RdemTimeStepper::springSignature(Scene* sc) const
@@ -235,7 +277,11 @@ vector<Real> RdemTimeStepper::springSignature(Scene* sc) const
 	return { Real(sc->bodies->size()), nReal, nSegments, nSamples, stiffness, blocked, mass, Real(Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(sc)) };
 }
 
-Real RdemTimeStepper::estimate(Scene* sc) { return method == "gershgorin" ? gershgorin(sc) : lanczos(sc); }
+Real RdemTimeStepper::estimate(Scene* sc)
+{
+	capDt = sc->dt > 0 && std::isfinite(sc->dt) ? sc->dt : Real(0); // the dashpots as the law caps them in this step
+	return method == "gershgorin" ? gershgorin(sc) : lanczos(sc);
+}
 
 Real RdemTimeStepper::estimatePy(const string& how)
 {
@@ -261,7 +307,9 @@ void RdemTimeStepper::postLoad(RdemTimeStepper&)
 bool RdemTimeStepper::isActivated()
 {
 	if (timeStepUpdateInterval < 1) throw std::invalid_argument("RdemTimeStepper.timeStepUpdateInterval = 0: must be an integer >= 1 [steps]");
-	return scene->iter % timeStepUpdateInterval == 0 || !(scene->dt > 0 && std::isfinite(scene->dt)) || (!active && scene->dt != checkedDt);
+	// also at once when a spring breaks: its contact dashpot acts from the next step, and may need a shorter step now
+	return scene->iter % timeStepUpdateInterval == 0 || !(scene->dt > 0 && std::isfinite(scene->dt)) || (!active && scene->dt != checkedDt)
+	        || Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(scene) != brokenAtEstimate;
 }
 
 void RdemTimeStepper::checkFixedDt(Scene* sc)
@@ -295,6 +343,7 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 		lastSignature = signature;
 		reused        = 0;
 	}
+	brokenAtEstimate = Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(sc);
 	if (!std::isfinite(criticalDt)) { // nothing elastic yet: nothing to check a fixed O.dt against
 		checkedDt = sc->dt;
 		return;

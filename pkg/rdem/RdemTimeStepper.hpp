@@ -16,26 +16,28 @@ namespace yade {
 class RdemTimeStepper : public TimeStepper {
 public:
 	void computeTimeStep(Scene*) override;
-	/// Every timeStepUpdateInterval steps, and every step while O.dt is not a positive number (computeTimeStep refuses it).
+	/// Every timeStepUpdateInterval steps, at the step after a spring broke, and every step while O.dt is not a positive
+	/// number (computeTimeStep refuses it).
 	/// Throws std::invalid_argument (Python: ValueError) for timeStepUpdateInterval = 0.
 	bool isActivated() override;
 	/// Throws std::invalid_argument (Python: ValueError) for safety outside (0, 1], an unknown method or bad Lanczos settings.
 	void postLoad(RdemTimeStepper&);
-	/// The estimate itself, 2/ω_max [s] (no safety factor), by ``method``; inf if nothing is elastic yet.
+	/// The estimate itself, Δt_crit [s] (2/ω_max without dashpots; no safety factor), by ``method``; inf if nothing is elastic yet.
 	Real estimate(Scene* scene);
 	/// Python: the estimate by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``).
 	Real estimatePy(const string& method);
-	/// The linear stiffness of the scene (springs, contact samples, contacts that can still form, Poisson elements and
-	/// cells) and each body's mass normalisation.
-	void assemble(Scene* scene, rdem::BlockStiffness<Real>& K, vector<rdem::BodyScale<Real>>& scale) const;
+	/// The linear stiffness K of the scene (springs, contact samples, contacts that can still form, Poisson elements and
+	/// cells), its contact dashpots C (contact samples, broken segments, contacts that can still form) and each body's
+	/// mass normalisation.
+	void assemble(Scene* scene, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, vector<rdem::BodyScale<Real>>& scale) const;
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemTimeStepper,TimeStepper,R"""(Time step for the refined DEM with the Poisson effect: ``O.dt = safety·Δt_crit``.
 
-YADE's :yref:`PWaveTimeStep<yade.utils.PWaveTimeStep>` ignores boxes and :yref:`GlobalStiffnessTimeStepper` assumes sphere contacts, so this stepper finds the highest eigenfrequency $\omega_{max}$ of the assembly itself; $\Delta t_{crit}=2/\omega_{max}$ (central differences).
+YADE's :yref:`PWaveTimeStep<yade.utils.PWaveTimeStep>` ignores boxes and :yref:`GlobalStiffnessTimeStepper` assumes sphere contacts, so this stepper finds the highest eigenfrequency $\omega_{max}$ of the assembly itself; $\Delta t_{crit}=2/\omega_{max}$ (central differences) while no contact dashpot acts. The contact dashpots of eq. 13 act on the mid-step velocity and lower the limit: leapfrog is stable while $\lambda_{max}(\Delta t^2\tilde{K}+2\Delta t\tilde{C})\le 4$ ($\tilde{K}$, $\tilde{C}$ the mass-normalised stiffness and dashpots), which holds for $\Delta t_{crit}=4/(\lambda_C+\sqrt{\lambda_C^2+4\lambda_K})$, $\lambda_K=\omega_{max}^2$, $\lambda_C$ the largest eigenvalue of $\tilde{C}$ (``rdem::dampedCriticalStep``; for one oscillator $(2/\omega)(\sqrt{1+\zeta^2}-\zeta)$ [Belytschko2000]_, 0.41 of $2/\omega$ at critical damping). $\tilde{C}$ holds the dashpots of the contact samples, and of the broken segments that touch, capped as the law caps them for the current ``O.dt`` (a larger step lowers the caps); the contacts to come (``contactBound``) add their springs only.
 
-*Lanczos* (``method='lanczos'``, the default): $\omega_{max}^2=\lambda_{max}$ of $A=PSKSP$, $K$ the linear stiffness of the current configuration (every segment spring of a bond, every contact sample, the contacts blocks can still make with ``contactBound``, the Poisson elements and cells, without the geometric stiffness), $S$ the inverse square root of each block's mass and rotated inertia, $P$ its free DOFs; by Lanczos iterations with full reorthogonalisation, warm-started from the last estimate's Ritz vector, until the residual of the largest Ritz value $\theta$ is below ``lanczosTolerance``·$\theta$; $\lambda_{max}\approx\theta+r$ [Parlett1998]_ [ZhouLi2011]_. Measured against the exact limit (doc/stability.md): 0.02–0.05 % below it. Not yet the automatic step of ``rdem.engines``, which uses it only to check a fixed ``O.dt`` and keeps Gershgorin: contact dashpots lower the limit (at worst to 0.41 of it for a critically damped highest mode [Belytschko2000]_), and at 0.8 of it the paper's scene broke 2397 springs within 180 steps of its first crack, against 24 at 2 µs (cause not established, doc/stability.md).
+*Lanczos* (``method='lanczos'``, the default): $\omega_{max}^2=\lambda_{max}$ of $A=PSKSP$, $K$ the linear stiffness of the current configuration (every segment spring of a bond, every contact sample, the contacts blocks can still make with ``contactBound``, the Poisson elements and cells, without the geometric stiffness), $S$ the inverse square root of each block's mass and rotated inertia, $P$ its free DOFs; by Lanczos iterations with full reorthogonalisation, warm-started from the last estimate's Ritz vector, until the residual of the largest Ritz value $\theta$ is below ``lanczosTolerance``·$\theta$; $\lambda_{max}\approx\theta+r$ [Parlett1998]_ [ZhouLi2011]_. Measured against the exact limit (doc/stability.md): 0.02–0.05 % below it. $\lambda_C$ the same way, from its own Ritz vector, when a dashpot acts.
 
-*Gershgorin* (``method='gershgorin'``, the fallback, 2.2–2.7 times below the limit): for every free block $b$, $\omega_b^2=\sum_i 2\left(k_{t,i}/m_b + k_{r,i}/I_{min,b}\right)+P_b/m_b$, summed over the springs $i$ of its segments and contact samples, $k_{t}=\max(\bar{k}_n,\bar{k}_s)A$, $k_{r}=A(\bar{k}_n|\mathbf{r}\times\mathbf{n}|^2+\bar{k}_s(|\mathbf{r}|^2+(\mathbf{r}\cdot\mathbf{n})^2))$ with $\mathbf{r}$ the arm from the centroid, and $P_b$ the Poisson row-sum bound of :yref:`RdemPoissonEngine`; $\omega_{max}\le\max_b\omega_b$.
+*Gershgorin* (``method='gershgorin'``, the fallback, 2.2–2.7 times below the limit): for every free block $b$, $\omega_b^2=\sum_i 2\left(k_{t,i}/m_b + k_{r,i}/I_{min,b}\right)+P_b/m_b$, summed over the springs $i$ of its segments and contact samples, $k_{t}=\max(\bar{k}_n,\bar{k}_s)A$, $k_{r}=A(\bar{k}_n|\mathbf{r}\times\mathbf{n}|^2+\bar{k}_s(|\mathbf{r}|^2+(\mathbf{r}\cdot\mathbf{n})^2))$ with $\mathbf{r}$ the arm from the centroid, and $P_b$ the Poisson row-sum bound of :yref:`RdemPoissonEngine`; $\omega_{max}\le\max_b\omega_b$. It leaves the dashpots out: at 0.37–0.44 of the undamped limit it is already about where critical dashpots put the limit (0.41 of it), and the law's caps keep the dashpots of small blocks below critical (doc/stability.md).
 
 When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the user), a fixed ``O.dt`` above the Lanczos estimate is refused when it is first seen (at the first step, or when it was changed): the step stops before the integrator moves anything and ``O.run`` raises ``RuntimeError`` with a message naming ``O.dt`` and the limit, unless ``refuseUnstableDt`` is false; if the limit falls below it later (contacts), or with the Gershgorin method, it warns once (and sets ``warned``). ``O.dt`` zero or not finite stops the run the same way.)""",
 		((Real,safety,0.8,Attr::triggerPostLoad,"Fraction of the critical step used for ``O.dt``."))
@@ -47,6 +49,8 @@ When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the
 		((int,lanczosSteps,0,(Attr::readonly|Attr::noSave),"Lanczos steps of the last estimate."))
 		((Real,lanczosResidual,0,(Attr::readonly|Attr::noSave),"Residual $r/\\theta$ of the last Lanczos estimate."))
 		((vector<Real>,ritzVector,,(Attr::hidden|Attr::readonly),"The last estimate's Ritz vector, 6 values per body (saved: the next estimate starts from it, also after ``O.load``)."))
+		((vector<Real>,dashpotRitzVector,,(Attr::hidden|Attr::readonly),"As ``ritzVector``, of the dashpots' $\\lambda_C$."))
+		((Real,dashpotRate,0,(Attr::readonly|Attr::noSave),"$\\lambda_C$ of the last Lanczos estimate: largest eigenvalue of the mass-normalised contact dashpots [1/s]; 0 when no dashpot acts (a bonded assembly before it cracks)."))
 		((vector<Real>,lastSignature,,(Attr::hidden|Attr::readonly),"What the springs were at the last Lanczos estimate (reuseUnchanged; saved, so that a reloaded run takes the same decisions)."))
 		((int,reused,0,Attr::readonly,"Updates that kept the last Lanczos estimate since it was made (``reuseUnchanged``)."))
 		((Real,checkedDt,0,(Attr::hidden|Attr::readonly|Attr::noSave),"The fixed ``O.dt`` last checked against the limit [s]."))
@@ -64,6 +68,11 @@ private:
 	Real gershgorin(Scene* scene) const;
 	Real lanczos(Scene* scene);
 	void checkFixedDt(Scene* scene);
+	/// The step for which the dashpots are capped as the law caps them (Law2…::dashpotCap): O.dt when the estimate
+	/// is made, 0 (no cap) if O.dt is not yet set [s]. A step chosen larger than it lowers the caps, so the estimate holds.
+	Real capDt = 0;
+	/// Springs broken when the last estimate was made (a break triggers a new one).
+	long brokenAtEstimate = 0;
 	/// What K depends on besides the poses (reuseUnchanged).
 	vector<Real> springSignature(Scene* scene) const;
 };

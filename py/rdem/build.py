@@ -244,7 +244,7 @@ def engines(segmentsPerEdge=2,
 	    ``'always'``: the collider runs from the first step; ``False``: no new contact is ever made.
 	:param damping: Cundall's non-viscous damping of :yref:`NewtonIntegrator` (0 = none, as in the paper).
 	:param dt: ``None``: :yref:`RdemTimeStepper` sets ``O.dt = safety·Δt_crit`` with its Gershgorin bound of Δt_crit; a number:
-	    fixed ``O.dt`` [s], checked against the stepper's Lanczos estimate of the exact limit: refused above it
+	    fixed ``O.dt`` [s], checked against the stepper's Lanczos estimate (with the contact dashpots): refused above it
 	    (doc/stability.md).
 	:param verletDist: collider sweep distance [m] (default: none, the collider runs every step; set it to about 5 % of the
 	    block size for speed).
@@ -302,9 +302,9 @@ def engines(segmentsPerEdge=2,
 	eng += [loop, RdemForceAssembler()]  # forces summed per body in a fixed order: O.load continues bit for bit
 	if withPoisson:
 		eng.append(RdemPoissonEngine(corotational=corotational))
-	# The automatic step keeps the Gershgorin bound: at 0.8 of the tight (Lanczos) limit the paper's scene broke 2397
-	# springs within 180 steps of its first crack, 24 at 2 us (cause not established, doc/stability.md). A fixed step is
-	# checked against the Lanczos estimate: refused above the limit.
+	# The automatic step keeps the Gershgorin bound (2.2-2.7 times below the limit) until the tests whose tolerances were
+	# set at its steps (energy drift, penetration depth) are checked at the Lanczos step; a fixed step is checked against
+	# the Lanczos estimate with the contact dashpots, refused above it (doc/stability.md)
 	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None, contactBound=bool(recontact),
 	                          method='gershgorin' if dt is None else 'lanczos')
 	eng += [stepper, NewtonIntegrator(damping=damping, gravity=Vector3(gravity))]

@@ -28,6 +28,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -73,6 +74,9 @@ namespace rdem {
 
 		size_t nBodies() const { return diag.size(); }
 
+		/// Whether nothing nonzero was added (then K x = 0 for every x).
+		bool empty() const { return !anyTerm; }
+
 		/// Opens the pair (b1, b2) for addPointSpring (b1 ≠ b2, both ≥ 0); springs to a fixed point need none.
 		void beginPair(long b1, long b2)
 		{
@@ -84,6 +88,8 @@ namespace rdem {
 		/// k_n, k_s [N/m]; b2 < 0: a spring to a fixed point. Adds to the pair opened last by beginPair when b2 ≥ 0.
 		void addPointSpring(long b1, long b2, const V3& r1, const V3& r2, const V3& n, S kn, S ks)
 		{
+			if (kn == 0 && ks == 0) return;
+			anyTerm     = true;
 			const M3 Ks = kn * n * n.transpose() + ks * (M3::Identity() - n * n.transpose());
 			diag[size_t(b1)] += jtkj(Ks, r1, r1);
 			if (b2 < 0) return;
@@ -94,7 +100,9 @@ namespace rdem {
 		/// A Poisson element: ½ s uᵀK u on the translations of its 8 nodes (body ids; K [N/m], not copied: it must outlive this).
 		void addElement(const std::array<long, 8>& nodes, const M24* K, S s)
 		{
-			if (s > 0) elements.push_back({ nodes, K, s });
+			if (!(s > 0)) return;
+			elements.push_back({ nodes, K, s });
+			anyTerm = true;
 		}
 
 		/// A bond opening u_n = n·(u₂ - u₁) + a₂·θ₂ - a₁·θ₁ (a = r×n [m]) for addCell; returns its index.
@@ -105,7 +113,11 @@ namespace rdem {
 		}
 
 		/// A Poisson cell: ½ εᵀK ε [J] (K [N·m]), ε_d = Σ c u_n over its terms (opening index, axis d, c [1/m]).
-		void addCell(const M3& K, const std::vector<std::tuple<size_t, int, S>>& terms) { cells.push_back({ K, terms }); }
+		void addCell(const M3& K, const std::vector<std::tuple<size_t, int, S>>& terms)
+		{
+			cells.push_back({ K, terms });
+			anyTerm = true;
+		}
 
 		/// y = K x (6 values per body) [N, N·m]; x and y of size 6·nBodies, y overwritten.
 		void multiply(const S* x, S* y) const
@@ -175,6 +187,7 @@ namespace rdem {
 		std::vector<Element> elements;
 		std::vector<Opening> openings;
 		std::vector<Cell>    cells;
+		bool                 anyTerm = false;
 
 		/// J_aᵀ K_s J_b, J = [I, -[r]×] the map from a body's (u, θ) to the displacement of the material point at arm r.
 		static M6 jtkj(const M3& Ks, const V3& ra, const V3& rb)
@@ -305,6 +318,21 @@ namespace rdem {
 		}
 		start.assign(ritzVec.data(), ritzVec.data() + n);
 		return res;
+	}
+
+	/* Critical time step of leapfrog (YADE's NewtonIntegrator) with dashpots that act on the mid-step velocity v_{n-1/2}
+	   [s], from λ_K = λ_max(M^-½ K M^-½) [1/s²] and λ_C = λ_max(M^-½ C M^-½) [1/s] of the stiffness K and dashpot C
+	   matrices (the same mass normalisation). The scheme v_{n+1/2} = v_{n-1/2} - Δt M⁻¹(K x_n + C v_{n-1/2}),
+	   x_{n+1} = x_n + Δt v_{n+1/2} loses stability where its amplification has the eigenvalue -1 (x_{n+1} = -x_n), i.e. where
+	   (Δt² K̃ + 2Δt C̃) x = 4x: Δt_crit solves λ_max(Δt² K̃ + 2Δt C̃) = 4. As λ_max(Δt² K̃ + 2Δt C̃) ≤ Δt² λ_K + 2Δt λ_C, the
+	   root of Δt² λ_K + 2Δt λ_C = 4, Δt = 4/(λ_C + √(λ_C² + 4λ_K)), is a lower bound of it, exact when the stiffest and the
+	   most damped mode are the same: for one oscillator (λ_K = ω², λ_C = 2ζω) it is (2/ω)(√(1+ζ²) - ζ) [Belytschko2000]_
+	   §6.3, 0.414·2/ω for critical damping; without dashpots 2/ω. Infinite when both are zero. */
+	template <class S> S dampedCriticalStep(S lambdaK, S lambdaC)
+	{
+		using std::sqrt;
+		const S d = lambdaC + sqrt(lambdaC * lambdaC + 4 * lambdaK);
+		return d > 0 ? 4 / d : std::numeric_limits<S>::infinity();
 	}
 
 } // namespace rdem
