@@ -248,10 +248,11 @@ Real RdemTimeStepper::lanczos(Scene* sc)
                 // warm start mixed with 10 % of a generic vector: a new stiff spot (a contact) far from the old mode is still found
                 return rdem::lanczosLargest<Real>(apply, n, mask, start, 2, lanczosMaxSteps, lanczosTolerance, Real(0.1));
 	};
-	const auto est  = largest(K, ritzVector);
-	lanczosSteps    = est.steps;
-	lanczosResidual = est.ritz > 0 ? est.residual / est.ritz : Real(0);
-	dashpotRate     = C.empty() ? Real(0) : largest(C, dashpotRitzVector).upper();
+	const auto est   = largest(K, ritzVector);
+	lanczosSteps     = est.steps;
+	lanczosResidual  = est.ritz > 0 ? est.residual / est.ritz : Real(0);
+	dashpotRate      = C.empty() ? Real(0) : largest(C, dashpotRitzVector).upper();
+	springCriticalDt = est.upper() > 0 ? 2 / math::sqrt(est.upper()) : std::numeric_limits<Real>::infinity();
 	return rdem::dampedCriticalStep(est.upper(), dashpotRate);
 }
 
@@ -279,8 +280,11 @@ vector<Real> RdemTimeStepper::springSignature(Scene* sc) const
 
 Real RdemTimeStepper::estimate(Scene* sc)
 {
-	capDt = sc->dt > 0 && std::isfinite(sc->dt) ? sc->dt : Real(0); // the dashpots as the law caps them in this step
-	return method == "gershgorin" ? gershgorin(sc) : lanczos(sc);
+	springCriticalDt = std::numeric_limits<Real>::infinity();                  // set by the Lanczos estimate; the Gershgorin bound is one value
+	capDt            = sc->dt > 0 && std::isfinite(sc->dt) ? sc->dt : Real(0); // the dashpots as the law caps them in this step
+	if (method != "gershgorin") return lanczos(sc);
+	springCriticalDt = gershgorin(sc);
+	return springCriticalDt;
 }
 
 Real RdemTimeStepper::estimatePy(const string& how)
@@ -317,16 +321,21 @@ void RdemTimeStepper::checkFixedDt(Scene* sc)
 	const bool firstSeen = sc->dt != checkedDt;
 	checkedDt            = sc->dt;
 	if (!(sc->dt > criticalDt)) return;
+	// above the springs' limit the run blows up; between it and the lower limit with the contact dashpots it may, but the
+	// dashpots' compression-only clamp and caps (Law2…::dashpotCap) often hold it (doc/stability.md): a warning
+	const bool         springs = sc->dt > springCriticalDt;
 	std::ostringstream msg;
-	msg << "O.dt = " << sc->dt << " s exceeds the critical time step " << criticalDt << " s (2/omega_max, " << method
+	msg << "O.dt = " << sc->dt << " s exceeds the critical time step " << (springs ? springCriticalDt : criticalDt) << " s ("
+	    << (springs ? "2/omega_max of the springs" : "with the contact dashpots") << ", " << method
 	    << " estimate of RdemTimeStepper) of this block assembly: the explicit integration is unstable ";
-	if (firstSeen && method == "lanczos" && refuseUnstableDt) {
-		msg << "and would blow up. Set O.dt <= " << criticalDt
+	if (springs && firstSeen && method == "lanczos" && refuseUnstableDt) {
+		msg << "and would blow up. Set O.dt <= " << springCriticalDt
 		    << " s, or O.dt = -1 to let RdemTimeStepper choose (RdemTimeStepper.refuseUnstableDt = False to run anyway).";
 		throw std::invalid_argument(msg.str());
 	}
 	if (warned) return;
-	msg << "or may become so. Use O.dt = -1 to let RdemTimeStepper choose.";
+	msg << (springs ? "or may become so." : "where the dashpots act, unless their clamp and caps hold it; watch the energy.")
+	    << " Use O.dt = -1 to let RdemTimeStepper choose.";
 	LOG_WARN(msg.str());
 	warned = true;
 }
