@@ -305,7 +305,7 @@ def countInstructions(steps=200, blocks=10, cacheSim=False, load=None):
 	cmd = ['valgrind', '--tool=callgrind', '--trace-children=yes', '--callgrind-out-file=/dev/null', '--collect-atstart=no']
 	if cacheSim:
 		cmd += ['--cache-sim=yes', '--LL=33554432,16,64']
-	cmd += ['--toggle-collect=yade::Scene::moveToNextTimeStep()', rdem.batch.LAUNCHER, '-j1', '-n', '-x', sys.argv[0], '--child', json.dumps(spec)]
+	cmd += ['--toggle-collect=yade::Scene::moveToNextTimeStep()'] + rdem.batch.yadeCommand() + ['-j1', '-n', '-x', sys.argv[0], '--child', json.dumps(spec)]
 	proc = subprocess.run(cmd, env=dict(os.environ, OMP_NUM_THREADS='1'), stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
 	# "Collected : Ir [Dr Dw I1mr D1mr D1mw ILmr DLmr DLmw]" of the process that ran the steps (the one with most Ir)
 	collected = [[int(c) for c in line.split()] for line in re.findall(r'Collected : ([0-9 ]+)', proc.stdout.replace(',', ''))]

@@ -18,8 +18,8 @@ mortar and their touching pairs as plain boxes; pure Python: without YADE, ``imp
 :mod:`rdem.ground_motion` (earthquake records, their velocity and displacement, baseline correction, synthetic pulses;
 numpy only; without YADE ``import rdem`` gives it and rdem.wall_layout).
 """
-from rdem.wall_layout import wallLayout, WallLayout
-from rdem import ground_motion
+from .wall_layout import wallLayout, WallLayout
+from . import ground_motion
 
 try:
 	import yade as _yade
@@ -29,10 +29,10 @@ except ModuleNotFoundError as e:  # plain Python: only the YADE-free modules (rd
 	_yade = None
 
 if _yade is not None:
-	from rdem.build import block, blockGrid, bond, bondPairs, engines, poissonEngine, newtonIntegrator, timeStepper, law, geomFunctor, contactGate
-	from rdem import masonry, earthquake
-	from rdem.measure import segmentTable, bondSnapshot, brokenSegments, breakCounts, apparentPoisson
-	from rdem.export import CrackExport
+	from .build import block, blockGrid, bond, bondPairs, engines, poissonEngine, newtonIntegrator, timeStepper, law, geomFunctor, contactGate
+	from . import masonry, earthquake
+	from .measure import segmentTable, bondSnapshot, brokenSegments, breakCounts, apparentPoisson
+	from .export import CrackExport
 
 __all__ = ['wallLayout', 'WallLayout', 'ground_motion'] + ([
         'block', 'blockGrid', 'bond', 'bondPairs', 'masonry', 'earthquake', 'engines', 'poissonEngine', 'newtonIntegrator', 'timeStepper', 'law', 'geomFunctor', 'contactGate', 'segmentTable', 'bondSnapshot', 'brokenSegments', 'breakCounts',

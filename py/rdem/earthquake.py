@@ -14,10 +14,10 @@ against :func:`rdem.limit_analysis.stackTilt`) and for overturning under a pulse
 import math
 from yade import O, Vector3
 from yade.wrapper import RdemGroundShaker, RdemMat
-from rdem import ground_motion
-from rdem.limit_analysis import stackTilt
-from rdem.wall_layout import wallLayout
-import rdem.build as build
+from . import ground_motion
+from .limit_analysis import stackTilt
+from .wall_layout import wallLayout
+from . import build
 
 MODES = ('prescribed', 'inertial')
 
@@ -189,7 +189,7 @@ def building(length, width, height, brickMaterial, jointMaterial, thickness=0.12
 	:param slab, baseSlab: heights of the roof and base slabs [m] (``None``: no roof slab; the base slab is needed).
 	:param slabMaterial: :yref:`RdemMat` of the slabs; default: the brick's elastic constants and density, unbreakable.
 	:return: a :class:`Building`."""
-	from rdem import masonry
+	from . import masonry
 	from yade import Quaternion
 	for name, value in (('length', length), ('width', width), ('height', height), ('thickness', thickness), ('baseSlab', baseSlab)):
 		if not (value is not None and math.isfinite(value) and value > 0):

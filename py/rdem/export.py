@@ -4,8 +4,7 @@ Blocks themselves are written by YADE's ``VTKRecorder(recorders=['boxes'])``. Fi
 (``.vtu``, ASCII) plus a ``.pvd`` collection per series so ParaView can play them in time."""
 import os
 from yade import O
-import rdem.build
-import rdem.measure
+from . import build, measure
 
 
 def _writeVtu(path, points, cells, cellType, cellData):
@@ -43,18 +42,18 @@ class CrackExport:
 		if d:
 			os.makedirs(d, exist_ok=True)
 		self.series = {'cracks': [], 'poisson': []}
-		self.snapshot = rdem.measure.bondSnapshot()  # the bonds of the scene when the export starts
+		self.snapshot = measure.bondSnapshot()  # the bonds of the scene when the export starts
 
 	def write(self):
 		self._cracks()
 		try:
-			self._poisson(rdem.build.poissonEngine())
+			self._poisson(build.poissonEngine())
 		except RuntimeError:
 			pass  # no Poisson engine in this scene
 
 	def _cracks(self):
 		points, cells, state = [], [], []
-		for sg in rdem.measure.brokenSegments(self.snapshot):
+		for sg in measure.brokenSegments(self.snapshot):
 			c, t1, t2 = sg['point'], sg['t1'], sg['t2']
 			h1, h2 = sg['halfSizes']
 			base = len(points)

@@ -18,8 +18,8 @@ the joint's strengths.
 import math
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem.build as build
-from rdem.wall_layout import wallLayout
+from . import build
+from .wall_layout import wallLayout
 
 #: Colours of the blocks by unit kind (ParaView and the Qt viewer).
 COLORS = {'brick': Vector3(0.72, 0.33, 0.22), 'bat': Vector3(0.82, 0.45, 0.3), 'mortar': Vector3(0.8, 0.8, 0.75), 'beam': Vector3(0.5, 0.55, 0.65)}

@@ -1,7 +1,7 @@
 """Post-processing: per-segment state, break counts, apparent elastic constants."""
 from yade import O
 from yade.wrapper import RdemGeom, RdemPhys
-import rdem.build
+from . import build
 
 
 def segmentTable():
@@ -51,7 +51,7 @@ def brokenSegments(snapshot):
 
 def breakCounts():
 	"""(tension, shear): restoring springs broken so far (eqs. 15, 16)."""
-	law = rdem.build.law()
+	law = build.law()
 	return int(law.tensionBreaks), int(law.shearBreaks)
 
 

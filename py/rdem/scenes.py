@@ -10,8 +10,7 @@ give them their own (joints then combine both materials by eq. 12).
 import math
 from yade import O, Vector3, Quaternion
 from yade.wrapper import RdemMat
-import rdem.build as build
-import rdem.measure as measure
+from . import build, measure
 
 
 class CompressionTest:
