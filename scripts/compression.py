@@ -19,8 +19,8 @@ How to run
     build/bin/yade scripts/compression.py --help          all options
     build/bin/yade -j2 scripts/compression.py --blocks 6  smaller, on two threads
 
-Outputs (in --out, default output/compression): results.json, plots (PNG), ParaView files (*.pvd: blocks from YADE's
-VTKRecorder, crack faces and Poisson elements from rdem.export).
+Outputs (in --out, default output/compression): results.json, history.txt (yade.plot's saveDataTxt), plots (PNG),
+ParaView files (*.pvd: blocks from YADE's VTKRecorder, crack faces and Poisson elements from rdem.export).
 """
 import argparse
 import json
@@ -57,7 +57,7 @@ for name, value in (('rate', opts.rate), ('end', opts.end), ('dt', 1 if dt is No
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
-from yade import O, PyRunner, VTKRecorder
+from yade import O, PyRunner, VTKRecorder, plot
 import rdem
 from rdem.scenes import CompressionTest
 
@@ -82,7 +82,10 @@ print('compression: %d blocks, %d bonds, %d Poisson elements, %d steps of %.3g s
       (len(test.ids), test.nBonds, test.nElements, nSteps, dtRun, critical, time.time() - wall0))
 
 # 3. Recording -------------------------------------------------------------------------------------------------------
-history = dict(t=[], disp=[], stress=[], nu=[], tension=[], shear=[])
+# yade.plot keeps the history (plot.data): live curves with plot.plot() in a YADE with a GUI, history.txt by saveDataTxt.
+plot.reset()
+plot.plots = {'disp': ('stress', ), 't': ('nu', )}
+history = plot.data
 first = {}
 vtkEvery = int(round(opts.vtk_every * 1e-3 / (opts.rate * 1e-3) / dtRun)) if opts.vtk_every > 0 else 0
 cracks = rdem.CrackExport(os.path.join(opts.out, 'vtk', ''))
@@ -90,12 +93,7 @@ cracks = rdem.CrackExport(os.path.join(opts.out, 'vtk', ''))
 
 def record():
 	nT, nS = rdem.breakCounts()
-	history['t'].append(O.time)
-	history['disp'].append(test.displacement())
-	history['stress'].append(test.stress())
-	history['nu'].append(test.apparentPoisson())
-	history['tension'].append(nT)
-	history['shear'].append(nS)
+	plot.addData(t=O.time, disp=test.displacement(), stress=test.stress(), nu=test.apparentPoisson(), tension=nT, shear=nS)
 	if nT + nS > 0 and not first:
 		first.update(time=O.time, iter=O.iter, stress=history['stress'][-1], disp=history['disp'][-1], segments=rdem.brokenSegments(cracks.snapshot))
 
@@ -174,6 +172,7 @@ results = dict(
         history=history)
 with open(os.path.join(opts.out, 'results.json'), 'w') as f:
 	json.dump(results, f, indent=1)
+plot.saveDataTxt(os.path.join(opts.out, 'history.txt'))
 
 # Figures: apparent Poisson's ratio vs time (paper Fig. 9b), stress vs displacement, crack pattern (paper Fig. 10).
 fig, ax = plt.subplots(figsize=(6, 4))

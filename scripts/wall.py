@@ -25,7 +25,7 @@ How to run
     build/bin/yade scripts/wall.py --bond english --thickness 0.25 --blocks 1,1,1 --end 0.3
     build/bin/yade -n scripts/wall.py --openings 0.39,0.26,0.25,0.26   a window; -n: no viewer
 
-Outputs (in --out, default output/wall): results.json, stress_displacement.png, cracks.png (front view of the wall
+Outputs (in --out, default output/wall): results.json, history.txt (yade.plot), stress_displacement.png, cracks.png (front view of the wall
 with its broken springs), ParaView files in vtk/ (blocks.*.vtu from YADE's VTKRecorder, cracks.pvd).
 """
 import argparse
@@ -70,7 +70,7 @@ for name in ('rate', 'end', 'beam'):
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
-from yade import O, PyRunner, VTKRecorder, Vector3
+from yade import O, PyRunner, VTKRecorder, Vector3, plot
 from yade.wrapper import RdemMat, RdemJoint
 
 os.makedirs(opts.out, exist_ok=True)
@@ -114,7 +114,9 @@ for kind, pairs in w.joints.items():
 	for a, b in pairs:
 		kindOf[(min(a, b), max(a, b))] = kind
 cracks = rdem.CrackExport(os.path.join(opts.out, 'vtk', ''))
-history = dict(t=[], shortening=[], stress=[], jointBreaks=[], brickBreaks=[])
+plot.reset()  # yade.plot keeps the history (plot.data): live plot.plot() in a GUI, history.txt by saveDataTxt
+plot.plots = {'shortening': ('stress', )}
+history = plot.data
 first = {}
 
 
@@ -136,11 +138,7 @@ def breaks():
 
 def record():
 	nJ, nB, segs = breaks()
-	history['t'].append(O.time)
-	history['shortening'].append(shortening())
-	history['stress'].append(stress())
-	history['jointBreaks'].append(nJ)
-	history['brickBreaks'].append(nB)
+	plot.addData(t=O.time, shortening=shortening(), stress=stress(), jointBreaks=nJ, brickBreaks=nB)
 	for key, n in (('joint', nJ), ('brick', nB)):
 		if n > 0 and key not in first:
 			first[key] = dict(time=O.time, stressMPa=history['stress'][-1] * 1e-6, shorteningMm=history['shortening'][-1] * 1e3)
@@ -155,8 +153,8 @@ def report():
 	progress.update(wall=now, iter=O.iter)
 	left = (nSteps - O.iter) / rate if rate > 0 else float('nan')
 	print('step %7d/%d  shortening %.4f mm  stress %6.2f MPa  broken springs: joints %d, bricks %d  %.0f steps/s  %.0f s left' %
-	      (O.iter, nSteps, 1e3 * shortening(), 1e-6 * stress(), history['jointBreaks'][-1] if history['t'] else 0,
-	       history['brickBreaks'][-1] if history['t'] else 0, rate, left),
+	      (O.iter, nSteps, 1e3 * shortening(), 1e-6 * stress(), history['jointBreaks'][-1] if history.get('t') else 0,
+	       history['brickBreaks'][-1] if history.get('t') else 0, rate, left),
 	      flush=True)
 
 
@@ -200,6 +198,7 @@ results = dict(input=vars(opts),
                history=history)
 with open(os.path.join(opts.out, 'results.json'), 'w') as f:
 	json.dump(results, f, indent=1)
+plot.saveDataTxt(os.path.join(opts.out, 'history.txt'))
 
 fig, ax = plt.subplots(figsize=(6, 4))
 ax.plot([1e3 * d for d in history['shortening']], [1e-6 * s for s in history['stress']], 'k-')
