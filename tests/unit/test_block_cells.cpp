@@ -9,6 +9,7 @@
    platen blocks (exact: the cell is a divergence-theorem average of an affine field), the spring weights of the free
    faces, and the offset correction of running bond with its gradient against finite differences. */
 #include <pkg/rdem/math/BlockCells.hpp>
+#include <tests/unit/Scalar.hpp>
 
 #include <gtest/gtest.h>
 
@@ -17,19 +18,21 @@
 
 namespace {
 
+using rdem_test::Scalar;
+
 namespace rdem = yade::rdem;
-using Vec3     = Eigen::Matrix<double, 3, 1>;
-using Mat3     = Eigen::Matrix<double, 3, 3>;
-using Bond     = rdem::CellBond<double>;
+using Vec3     = Eigen::Matrix<Scalar, 3, 1>;
+using Mat3     = Eigen::Matrix<Scalar, 3, 3>;
+using Bond     = rdem::CellBond<Scalar>;
 
-constexpr double E = 16.7e9, nu = 0.15; // a clay brick [Pa], [-]
+constexpr Scalar E = 16.7e9, nu = 0.15; // a clay brick [Pa], [-]
 
-double lambda() { return E * nu / ((1 + nu) * (1 - 2 * nu)); }
-double mu() { return E / (2 * (1 + nu)); }
-double M() { return lambda() + 2 * mu(); }
+Scalar lambda() { return E * nu / ((1 + nu) * (1 - 2 * nu)); }
+Scalar mu() { return E / (2 * (1 + nu)); }
+Scalar M() { return lambda() + 2 * mu(); }
 
 /// The cell strain Σ coef u_n of a uniform strain ε (diagonal, block axes): each bond opens by ε_axis times its centroid distance.
-Vec3 cellStrainOfUniform(const rdem::CellInput<double>& in, const rdem::Cell<double>& c, const Vec3& eps)
+Vec3 cellStrainOfUniform(const rdem::CellInput<Scalar>& in, const rdem::Cell<Scalar>& c, const Vec3& eps)
 {
 	Vec3 out = Vec3::Zero();
 	for (size_t q = 0; q < in.bonds.size(); ++q)
@@ -37,9 +40,9 @@ Vec3 cellStrainOfUniform(const rdem::CellInput<double>& in, const rdem::Cell<dou
 	return c.condensation * out;
 }
 
-rdem::CellInput<double> block(double hx, double hy, double hz)
+rdem::CellInput<Scalar> block(Scalar hx, Scalar hy, Scalar hz)
 {
-	rdem::CellInput<double> in;
+	rdem::CellInput<Scalar> in;
 	in.half  = Vec3(hx, hy, hz);
 	in.young = E;
 	in.poisson = nu;
@@ -51,7 +54,7 @@ TEST(BlockCells, ElasticityAllAxesIsThePoissonPart)
 	// Every axis resolved: D - M I is the paper's D_p (eq. 19): λ off the diagonal, 0 on it. Tolerance: a few roundings of
 	// O(1e10) Pa values, 1e-15 relative.
 	Mat3       C;
-	const Mat3 D = rdem::cellElasticity<double>(E, nu, { rdem::CellAxis::Resolved, rdem::CellAxis::Resolved, rdem::CellAxis::Half }, C);
+	const Mat3 D = rdem::cellElasticity<Scalar>(E, nu, { rdem::CellAxis::Resolved, rdem::CellAxis::Resolved, rdem::CellAxis::Half }, C);
 	for (int i = 0; i < 3; ++i)
 		for (int j = 0; j < 3; ++j) {
 			EXPECT_NEAR(D(i, j), i == j ? 0.0 : lambda(), 1e-15 * M()) << i << j;
@@ -64,8 +67,8 @@ TEST(BlockCells, OneCondensedAxisIsPlaneStress)
 	// No bond along y (a one-wythe wall): σ_yy = 0 condenses D to plane stress, D11 = E/(1-ν²), D13 = νE/(1-ν²); the
 	// cell holds it minus M on the diagonal; ε_yy = -λ/M (ε_xx + ε_zz).
 	Mat3       C;
-	const Mat3 D    = rdem::cellElasticity<double>(E, nu, { rdem::CellAxis::Resolved, rdem::CellAxis::Condensed, rdem::CellAxis::Resolved }, C);
-	const double ps = E / (1 - nu * nu), tol = 1e-14 * M();
+	const Mat3 D    = rdem::cellElasticity<Scalar>(E, nu, { rdem::CellAxis::Resolved, rdem::CellAxis::Condensed, rdem::CellAxis::Resolved }, C);
+	const Scalar ps = E / (1 - nu * nu), tol = 1e-14 * M();
 	EXPECT_NEAR(D(0, 0), ps - M(), tol);
 	EXPECT_NEAR(D(2, 2), ps - M(), tol);
 	EXPECT_NEAR(D(0, 2), nu * ps, tol);
@@ -80,7 +83,7 @@ TEST(BlockCells, TwoCondensedAxesIsUniaxial)
 {
 	// A column of blocks: only z has bonds; condensing x and y leaves E (uniaxial stress); ε_xx = ε_yy = -ν ε_zz.
 	Mat3       C;
-	const Mat3 D = rdem::cellElasticity<double>(E, nu, { rdem::CellAxis::Condensed, rdem::CellAxis::Condensed, rdem::CellAxis::Resolved }, C);
+	const Mat3 D = rdem::cellElasticity<Scalar>(E, nu, { rdem::CellAxis::Condensed, rdem::CellAxis::Condensed, rdem::CellAxis::Resolved }, C);
 	EXPECT_NEAR(D(2, 2), E - M(), 1e-14 * M());
 	EXPECT_NEAR(C(0, 2), -nu, 1e-14);
 	EXPECT_NEAR(C(1, 2), -nu, 1e-14);
@@ -90,7 +93,7 @@ TEST(BlockCells, InteriorCubeAveragesItsSixBonds)
 {
 	// A cube of half-size h bonded to six equal cubes: each bond's share is ½ and there is no free face, so
 	// coef = A·½/V = 4h²/2/8h³ = 1/(4h); no weight added. A uniform strain gives back exactly that strain.
-	const double h  = 0.01;
+	const Scalar h  = 0.01;
 	auto         in = block(h, h, h);
 	for (int d = 0; d < 3; ++d)
 		for (int s : { -1, 1 })
@@ -109,7 +112,7 @@ TEST(BlockCells, FreeFaceExtrapolatesAndWeightsTheBond)
 {
 	// A cube whose +x face is free: the -x bond carries the strain along x alone, coef = (A/2 + h·A·A/(A·2h))/V = 1/(2h),
 	// and its spring gets w_n = 1 + h·A/(2h·A) = 1.5 (doc/theory.md §5.2 for cubes).
-	const double h  = 0.02;
+	const Scalar h  = 0.02;
 	auto         in = block(h, h, h);
 	in.bonds.push_back(Bond { 0, -1, 4 * h * h, 0.5, 2 * h });
 	for (int d = 1; d < 3; ++d)
@@ -118,7 +121,7 @@ TEST(BlockCells, FreeFaceExtrapolatesAndWeightsTheBond)
 	const auto c = rdem::blockCell(in);
 	EXPECT_NEAR(c.coef[0], 1 / (2 * h), 1e-13 / h);
 	EXPECT_NEAR(c.extraWeight[0], 0.5, 1e-15);
-	EXPECT_NEAR(rdem::cellBondWeightNormal(c.lateral[0], 1.0, c.extraWeight[0], 0.0), 1.5, 1e-15);
+	EXPECT_NEAR(rdem::cellBondWeightNormal<Scalar>(c.lateral[0], 1, c.extraWeight[0], 0), 1.5, 1e-15);
 	const Vec3 eps(-3e-5, 2e-5, 1e-4);
 	EXPECT_NEAR((cellStrainOfUniform(in, c, eps) - eps).norm(), 0.0, 1e-18);
 }
@@ -127,7 +130,7 @@ TEST(BlockCells, RunningBondBricksAreExact)
 {
 	// Stretcher 2a × 2b × 2h (a = 0.13, b = 0.06, h = 0.0325 m: a 250×120×55 brick with a 10 mm joint), in running bond:
 	// two bricks above and two below, each over half the bed face; two head joints; one wythe (no bond along y).
-	const double a = 0.13, b = 0.06, h = 0.0325;
+	const Scalar a = 0.13, b = 0.06, h = 0.0325;
 	auto         in = block(a, b, h);
 	for (int s : { -1, 1 }) {
 		in.bonds.push_back(Bond { 2, s, 2 * a * b, 0.5, 2 * h }); // half bed faces
@@ -142,7 +145,7 @@ TEST(BlockCells, RunningBondBricksAreExact)
 	EXPECT_NEAR((cellStrainOfUniform(in, c, eps) - expected).norm(), 0.0, 1e-17);
 	// The same brick in the top course: its top face is free, and the strain along z is extrapolated from the two bonds
 	// below; each gets w_n = 1 + h·(4ab)/(2h·4ab) = 1.5.
-	rdem::CellInput<double> top = in;
+	rdem::CellInput<Scalar> top = in;
 	top.bonds.erase(top.bonds.begin() + 3, top.bonds.begin() + 5); // the two bonds above
 	const auto ct = rdem::blockCell(top);
 	EXPECT_NEAR((cellStrainOfUniform(top, ct, eps) - expected).norm(), 0.0, 1e-17);
@@ -157,13 +160,13 @@ TEST(BlockCells, DifferentMaterialsSplitTheOpeningBySeriesCompliance)
 	// the opening from the brick's side. For a layered field with the strain ε_b in the brick and ε_m in the mortar, the
 	// openings are ε_b h_b + ε_m h_m, and if the stresses M ε are continuous (M_b ε_b = M_m ε_m) the face point is exact,
 	// so the brick's cell sees ε_b.
-	const double hb = 0.025, hm = 0.005, Mb = M(), Mm = 2.4e9;
-	const double Cb = hb / Mb, Cm = hm / Mm, share = Cb / (Cb + Cm);
+	const Scalar hb = 0.025, hm = 0.005, Mb = M(), Mm = 2.4e9;
+	const Scalar Cb = hb / Mb, Cm = hm / Mm, share = Cb / (Cb + Cm);
 	auto         in = block(0.05, 0.05, hb);
 	for (int s : { -1, 1 })
 		in.bonds.push_back(Bond { 2, s, 0.01, share, hb + hm });
 	const auto   c    = rdem::blockCell(in);
-	const double epsB = 1e-4, epsM = epsB * Mb / Mm, opening = epsB * hb + epsM * hm;
+	const Scalar epsB = 1e-4, epsM = epsB * Mb / Mm, opening = epsB * hb + epsM * hm;
 	EXPECT_NEAR((c.coef[0] + c.coef[1]) * opening, epsB, 1e-15);
 }
 
@@ -171,7 +174,7 @@ TEST(BlockCells, PlatenIsAHalfCell)
 {
 	// A top platen cube prescribed along z, bonded below only: a half cell (V/2), coef of the bond below = A·½/(V/2) =
 	// 1/(2h) as if the cell stopped at the centroid plane; its bonds along x and y have lateral ½ and so weight ½.
-	const double h  = 0.01;
+	const Scalar h  = 0.01;
 	auto         in = block(h, h, h);
 	in.prescribed   = { false, false, true };
 	in.bonds.push_back(Bond { 2, -1, 4 * h * h, 0.5, 2 * h });
@@ -185,7 +188,7 @@ TEST(BlockCells, PlatenIsAHalfCell)
 	EXPECT_EQ(c.extraWeight[0], 0.0);
 	EXPECT_EQ(c.lateral[0], 0.5);
 	EXPECT_EQ(c.lateral[2], 1.0);
-	EXPECT_EQ(rdem::cellBondWeightNormal(c.lateral[0], 0.5, 0.0, 0.0), 0.5);
+	EXPECT_EQ(rdem::cellBondWeightNormal<Scalar>(c.lateral[0], 0.5, 0, 0), 0.5);
 	const Vec3 eps(1e-5, 1e-5, -1e-4);
 	EXPECT_NEAR((cellStrainOfUniform(in, c, eps) - eps).norm(), 0.0, 1e-18);
 }
@@ -202,10 +205,10 @@ TEST(BlockCells, OffsetSlipOfRunningBond)
 	// Bed joint (n = z) between bricks offset by half a brick along x: a uniform strain makes them translate apart by
 	// ε_xx δ_x along the face, which the correction takes out; the normal part is dropped. Exact arithmetic: 1e-20 m.
 	const Vec3 delta(0.13, 0.0, 0.0), n(0, 0, 1), eps(2e-4, -1e-4, -1e-3);
-	const Vec3 slip = rdem::offsetSlip<double>(eps, Mat3::Identity(), eps, delta, n);
+	const Vec3 slip = rdem::offsetSlip<Scalar>(eps, Mat3::Identity(), eps, delta, n);
 	EXPECT_NEAR((slip - Vec3(2e-4 * 0.13, 0, 0)).norm(), 0.0, 1e-20);
 	// No offset (a grid): no correction.
-	EXPECT_EQ(rdem::offsetSlip<double>(eps, Mat3::Identity(), eps, Vec3::Zero(), n).norm(), 0.0);
+	EXPECT_EQ(rdem::offsetSlip<Scalar>(eps, Mat3::Identity(), eps, Vec3::Zero(), n).norm(), 0.0);
 }
 
 TEST(BlockCells, OffsetSlipHonoursTheBlocksFrames)
@@ -215,8 +218,8 @@ TEST(BlockCells, OffsetSlipHonoursTheBlocksFrames)
 	Mat3 R12;
 	R12 << 0, -1, 0, 1, 0, 0, 0, 0, 1;
 	const Vec3 eps1(2e-4, -5e-5, -1e-3), eps2(-5e-5, 2e-4, -1e-3), delta(0.05, 0.03, 0), n(0, 0, 1);
-	const Vec3 a = rdem::offsetSlip<double>(eps1, R12, eps2, delta, n);
-	const Vec3 b = rdem::offsetSlip<double>(eps1, Mat3::Identity(), eps1, delta, n);
+	const Vec3 a = rdem::offsetSlip<Scalar>(eps1, R12, eps2, delta, n);
+	const Vec3 b = rdem::offsetSlip<Scalar>(eps1, Mat3::Identity(), eps1, delta, n);
 	EXPECT_NEAR((a - b).norm(), 0.0, 1e-20);
 }
 
@@ -227,13 +230,13 @@ TEST(BlockCells, OffsetSlipGradientIsTheEnergyDerivative)
 	Mat3 R12;
 	R12 << 0, -1, 0, 1, 0, 0, 0, 0, 1;
 	const Vec3   delta(0.05, 0.03, 0), n(0, 0, 1), dt(3e-6, -1e-6, 0);
-	const double k = 7e9;
+	const Scalar k = 7e9;
 	const Vec3   eps1(2e-4, -5e-5, -1e-3), eps2(-6e-5, 1e-4, -8e-4);
-	auto         W = [&](const Vec3& e1, const Vec3& e2) { return 0.5 * k * (dt - rdem::offsetSlip<double>(e1, R12, e2, delta, n)).squaredNorm(); };
-	const Vec3   T = k * (dt - rdem::offsetSlip<double>(eps1, R12, eps2, delta, n));
+	auto         W = [&](const Vec3& e1, const Vec3& e2) { return 0.5 * k * (dt - rdem::offsetSlip<Scalar>(e1, R12, e2, delta, n)).squaredNorm(); };
+	const Vec3   T = k * (dt - rdem::offsetSlip<Scalar>(eps1, R12, eps2, delta, n));
 	Vec3         g1, g2;
-	rdem::offsetSlipGradient<double>(T, R12, delta, g1, g2);
-	const double step = 1e-9;
+	rdem::offsetSlipGradient<Scalar>(T, R12, delta, g1, g2);
+	const Scalar step = 1e-9;
 	for (int d = 0; d < 3; ++d) {
 		Vec3 e = Vec3::Zero();
 		e[d]   = step;

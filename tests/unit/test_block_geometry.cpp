@@ -10,6 +10,7 @@
    boxes with half-extents of 0.2-3 m and coordinates O(1-10) m, so round-off is ~1e-16-1e-15 m; the 1e-12 m (1e-13 m
    after a rigid motion) tolerances leave a margin of ≥ 10² while being far below any geometric offset tested. */
 #include <pkg/rdem/math/BlockGeometry.hpp>
+#include <tests/unit/Scalar.hpp>
 #include <pkg/rdem/math/SegmentGrid.hpp>
 
 #include <gtest/gtest.h>
@@ -22,18 +23,20 @@
 
 namespace {
 
-namespace rdem = yade::rdem;
-using V3    = Eigen::Vector3d;
-using M3    = Eigen::Matrix3d;
-using Block = rdem::OrientedBlock<double>;
+using rdem_test::Scalar;
 
-constexpr double gapTol   = 1e-6; // [m], the tolerance passed to findSharedFace
-constexpr double angleTol = 1e-6; // |cos| ≥ 1 - 1e-6, i.e. edges aligned within ~1.4e-3 rad
-constexpr double geomTol  = 1e-12; // [m] round-off on O(1) coordinates (see the file header)
+namespace rdem = yade::rdem;
+using V3    = rdem_test::Vector3;
+using M3    = rdem_test::Matrix3;
+using Block = rdem::OrientedBlock<Scalar>;
+
+constexpr Scalar gapTol   = 1e-6; // [m], the tolerance passed to findSharedFace
+constexpr Scalar angleTol = 1e-6; // |cos| ≥ 1 - 1e-6, i.e. edges aligned within ~1.4e-3 rad
+constexpr Scalar geomTol  = 1e-12; // [m] round-off on O(1) coordinates (see the file header)
 
 Block cube(const V3& pos, const M3& rot = M3::Identity()) { return { pos, rot, V3(0.5, 0.5, 0.5) }; }
 
-M3 rotX(double angle) { return Eigen::AngleAxisd(angle, V3::UnitX()).toRotationMatrix(); }
+M3 rotX(Scalar angle) { return Eigen::AngleAxis<Scalar>(angle, V3::UnitX()).toRotationMatrix(); }
 
 TEST(BlockGeometry, SideBySideCubesShareTheWholeFace)
 {
@@ -81,8 +84,8 @@ TEST(BlockGeometry, GapWithinAndBeyondTolerance)
 	EXPECT_NEAR(over.gap, -1e-9, 1e-15);
 	// 1e-3 m apart, beyond the tolerance: no shared face; also not found with the looser 1e-4 tolerance.
 	EXPECT_FALSE(rdem::findSharedFace(cube(V3::Zero()), cube(V3(1 + 1e-3, 0, 0)), gapTol, angleTol).found);
-	EXPECT_FALSE(rdem::findSharedFace(cube(V3::Zero()), cube(V3(1 + 1e-3, 0, 0)), 1e-4, angleTol).found);
-	EXPECT_TRUE(rdem::findSharedFace(cube(V3::Zero()), cube(V3(1 + 1e-3, 0, 0)), 2e-3, angleTol).found);
+	EXPECT_FALSE(rdem::findSharedFace<Scalar>(cube(V3::Zero()), cube(V3(1 + 1e-3, 0, 0)), 1e-4, angleTol).found);
+	EXPECT_TRUE(rdem::findSharedFace<Scalar>(cube(V3::Zero()), cube(V3(1 + 1e-3, 0, 0)), 2e-3, angleTol).found);
 	// Touching only along an edge (offset by a whole face in y): zero overlap area, not a shared face.
 	EXPECT_FALSE(rdem::findSharedFace(cube(V3::Zero()), cube(V3(1, 1, 0)), gapTol, angleTol).found);
 }
@@ -94,7 +97,7 @@ TEST(BlockGeometry, PartialOverlapShrinksTheRectangle)
 	const auto f = rdem::findSharedFace(cube(V3::Zero()), cube(V3(1, 0.3, 0)), gapTol, angleTol);
 	ASSERT_TRUE(f.found);
 	// t1 and t2 are A's y and z axes in some order and sign; read the half-sizes along each.
-	const double hy = std::abs(f.t1.y()) > 0.5 ? f.h1 : f.h2, hz = std::abs(f.t1.y()) > 0.5 ? f.h2 : f.h1;
+	const Scalar hy = std::abs(f.t1.y()) > 0.5 ? f.h1 : f.h2, hz = std::abs(f.t1.y()) > 0.5 ? f.h2 : f.h1;
 	EXPECT_NEAR(hy, 0.35, geomTol);
 	EXPECT_NEAR(hz, 0.5, geomTol);
 	EXPECT_NEAR((f.centre - V3(0.5, 0.15, 0)).norm(), 0, geomTol);
@@ -130,7 +133,7 @@ TEST(BlockGeometry, RotatedNeighbourWithAlignedEdges)
 	EXPECT_NEAR(std::abs(g.t1.y()) > 0.5 ? g.h2 : g.h1, 0.3, geomTol);
 	EXPECT_NEAR((g.centre - V3(0.5, 0, 0)).norm(), 0, geomTol);
 	// B rotated 180° about z (its +x axis points to -x): its +x face now looks at A.
-	const auto h = rdem::findSharedFace(cube(V3::Zero()), cube(V3(1, 0, 0), Eigen::AngleAxisd(M_PI, V3::UnitZ()).toRotationMatrix()),
+	const auto h = rdem::findSharedFace(cube(V3::Zero()), cube(V3(1, 0, 0), Eigen::AngleAxis<Scalar>(M_PI, V3::UnitZ()).toRotationMatrix()),
 	                                   gapTol, angleTol);
 	ASSERT_TRUE(h.found);
 	EXPECT_EQ(h.signB, 1.0);
@@ -145,7 +148,7 @@ TEST(BlockGeometry, MisalignedEdgesAreNotShared)
 	EXPECT_TRUE(rdem::findSharedFace(cube(V3::Zero()), cube(V3(1, 0, 0), rotX(1e-4)), gapTol, angleTol).found);
 	// Faces not parallel (B tilted 30° about z): not found.
 	EXPECT_FALSE(
-	        rdem::findSharedFace(cube(V3::Zero()), cube(V3(1, 0, 0), Eigen::AngleAxisd(M_PI / 6, V3::UnitZ()).toRotationMatrix()), gapTol, angleTol)
+	        rdem::findSharedFace(cube(V3::Zero()), cube(V3(1, 0, 0), Eigen::AngleAxis<Scalar>(M_PI / 6, V3::UnitZ()).toRotationMatrix()), gapTol, angleTol)
 	                .found);
 }
 
@@ -155,7 +158,7 @@ TEST(BlockGeometry, ResultIsCovariantUnderARigidMotion)
 	// everything by x -> Q x + t with an arbitrary rotation Q.
 	const Block           A0 { V3::Zero(), M3::Identity(), V3(0.5, 0.5, 0.5) };
 	const Block           B0 { V3(1, 0.3, -0.1), rotX(M_PI / 2), V3(0.5, 0.3, 0.4) };
-	const M3              Q = Eigen::AngleAxisd(1.234, V3(0.3, -0.8, 0.52).normalized()).toRotationMatrix();
+	const M3              Q = Eigen::AngleAxis<Scalar>(1.234, V3(0.3, -0.8, 0.52).normalized()).toRotationMatrix();
 	const V3              t(10.0, -3.0, 7.5);
 	const Block           A { Q * A0.pos + t, Q * A0.rot, A0.half };
 	const Block           B { Q * B0.pos + t, Q * B0.rot, B0.half };
@@ -216,7 +219,7 @@ TEST(BlockGeometry, SampleDepthRectangleIncludesEdges)
 	EXPECT_FALSE(rdem::sampleDepth(Y, V3(0.95, 2.0 + 1e-6, 0.0), u).hit);
 	EXPECT_FALSE(rdem::sampleDepth(Y, V3(0.95, 0.0, -3.0 - 1e-6), u).hit);
 	// A looser tolerance (1e-3 relative: 2e-3 m on y) accepts the 1e-6 m overshoot.
-	EXPECT_TRUE(rdem::sampleDepth(Y, V3(0.95, 2.0 + 1e-6, 0.0), u, 1e-3).hit);
+	EXPECT_TRUE(rdem::sampleDepth<Scalar>(Y, V3(0.95, 2.0 + 1e-6, 0.0), u, 1e-3).hit);
 }
 
 TEST(BlockGeometry, SampleDepthObliqueIsContinuous)
@@ -224,11 +227,11 @@ TEST(BlockGeometry, SampleDepthObliqueIsContinuous)
 	// u = (1, 1, 0)/√2 leaves Y through +x (after d_x·√2) or +y (after d_y·√2), whichever comes first.
 	const Block  Y { V3::Zero(), M3::Identity(), V3(1, 2, 3) };
 	const V3     u  = V3(1, 1, 0).normalized();
-	const double r2 = std::sqrt(2.0);
+	const Scalar r2 = std::sqrt(2.0);
 	EXPECT_NEAR(rdem::sampleDepth(Y, V3(0.9, 1.7, 0.0), u).depth, 0.1 * r2, 1e-15); // +x first: 0.1√2 < 0.3√2
 	EXPECT_NEAR(rdem::sampleDepth(Y, V3(0.5, 1.9, 0.0), u).depth, 0.1 * r2, 1e-15); // +y first: 0.1√2 < 0.5√2
 	// Across the switch (d_x = d_y at p = (0.7, 1.7, 0)) the depth is continuous: 0.3√2 within √2 times the shift of p.
-	for (const double e : { -1e-7, 0.0, 1e-7 })
+	for (const Scalar e : { -1e-7, 0.0, 1e-7 })
 		EXPECT_NEAR(rdem::sampleDepth(Y, V3(0.7 + e, 1.7, 0.0), u).depth, 0.3 * r2, 2e-7) << e;
 }
 
@@ -238,7 +241,7 @@ TEST(BlockGeometry, SampleDepthOfFlushStackedBlocks)
 	// samples of X's bottom face, edges and corners included (they lie on the planes of Y's side faces), leave Y
 	// through its top face: depth 1e-6 for all.
 	const Block  Y = cube(V3::Zero());
-	const double z = 0.5 - 1e-6; // bottom face of X
+	const Scalar z = 0.5 - 1e-6; // bottom face of X
 	for (const V3& p : { V3(0, 0, z), V3(0.5, 0, z), V3(0.5, 0.5, z), V3(-0.5, 0.5, z), V3(0.2, -0.5, z) }) {
 		const auto hit = rdem::sampleDepth(Y, p, V3::UnitZ().eval());
 		ASSERT_TRUE(hit.hit) << p.transpose();
@@ -255,18 +258,18 @@ TEST(BlockGeometry, SampleDepthOnTheSurfaceIsZeroWhateverTheOtherFaces)
 	// pair's normal +z is that distance, never the 0.28 m to Y's +x face (the old nearest-face rule skipped the top
 	// face there and jumped to it).
 	const Block Y = cube(V3::Zero());
-	for (const double dz : { -1e-12, 0.0, 1e-12, 1e-10 })
-		EXPECT_LE(rdem::sampleDepth(Y, V3(0.22, 0.1, 0.5 - dz), V3::UnitZ().eval()).depth, std::max(dz, 0.0) + 1e-16) << dz;
+	for (const Scalar dz : { -1e-12, 0.0, 1e-12, 1e-10 })
+		EXPECT_LE(rdem::sampleDepth(Y, V3(0.22, 0.1, 0.5 - dz), V3::UnitZ().eval()).depth, std::max<Scalar>(dz, 0.0) + 1e-16) << dz;
 }
 
 TEST(BlockGeometry, SampleDepthIsCovariantUnderARigidMotion)
 {
 	// The oblique case above, moved by x -> Q x + t (Y, p and u): same depths. Coordinates O(10) m: 1e-13 m budget.
-	const M3     Q = Eigen::AngleAxisd(0.9, V3(1, 2, -1).normalized()).toRotationMatrix();
+	const M3     Q = Eigen::AngleAxis<Scalar>(0.9, V3(1, 2, -1).normalized()).toRotationMatrix();
 	const V3     t(2.0, -1.0, 4.0);
 	const Block  Y { t, Q, V3(1, 2, 3) };
 	const V3     u  = Q * V3(1, 1, 0).normalized();
-	const double r2 = std::sqrt(2.0);
+	const Scalar r2 = std::sqrt(2.0);
 	EXPECT_NEAR(rdem::sampleDepth(Y, (Q * V3(0.9, 1.7, 0.0) + t).eval(), u).depth, 0.1 * r2, 1e-13);
 	EXPECT_NEAR(rdem::sampleDepth(Y, (Q * V3(0.5, 1.9, 0.0) + t).eval(), u).depth, 0.1 * r2, 1e-13);
 }
@@ -277,28 +280,28 @@ TEST(BlockGeometry, FaceMayEnterCullsOnlyFacesOutsideTheSlabs)
 {
 	const Block Y { V3(0, 0, 0), M3::Identity(), V3(1, 2, 3) };
 	// A unit square face in the plane x = 1.5, fully beyond Y's x slab: culled; in x = 0.9: kept.
-	EXPECT_FALSE(rdem::faceMayEnter(Y, V3(1.5, 0, 0), V3(0, 1, 0), V3(0, 0, 1), 0.5, 0.5));
-	EXPECT_TRUE(rdem::faceMayEnter(Y, V3(0.9, 0, 0), V3(0, 1, 0), V3(0, 0, 1), 0.5, 0.5));
+	EXPECT_FALSE(rdem::faceMayEnter<Scalar>(Y, V3(1.5, 0, 0), V3(0, 1, 0), V3(0, 0, 1), 0.5, 0.5));
+	EXPECT_TRUE(rdem::faceMayEnter<Scalar>(Y, V3(0.9, 0, 0), V3(0, 1, 0), V3(0, 0, 1), 0.5, 0.5));
 	// Touching Y's face plane x = 1 exactly (round-off margin): kept, as sampleDepth counts points on the face as inside.
-	EXPECT_TRUE(rdem::faceMayEnter(Y, V3(1.0, 0, 0), V3(0, 1, 0), V3(0, 0, 1), 0.5, 0.5));
+	EXPECT_TRUE(rdem::faceMayEnter<Scalar>(Y, V3(1.0, 0, 0), V3(0, 1, 0), V3(0, 0, 1), 0.5, 0.5));
 	// A face tilted by 45° about z whose centre is beyond the slab but whose corner reaches into it: kept.
 	const V3 t1 = V3(1, 1, 0).normalized();
-	EXPECT_TRUE(rdem::faceMayEnter(Y, V3(1.5, 0, 0), t1, V3(0, 0, 1), 1.0, 0.5)); // reach along x: 0.707 > 0.5
-	EXPECT_FALSE(rdem::faceMayEnter(Y, V3(1.8, 0, 0), t1, V3(0, 0, 1), 1.0, 0.5)); // 1.8 - 0.707 > 1
+	EXPECT_TRUE(rdem::faceMayEnter<Scalar>(Y, V3(1.5, 0, 0), t1, V3(0, 0, 1), 1.0, 0.5)); // reach along x: 0.707 > 0.5
+	EXPECT_FALSE(rdem::faceMayEnter<Scalar>(Y, V3(1.8, 0, 0), t1, V3(0, 0, 1), 1.0, 0.5)); // 1.8 - 0.707 > 1
 }
 
 TEST(BlockGeometry, FaceMayEnterNeverCullsAFaceWithAHit)
 {
 	// Random blocks and faces: whenever a sample point of the face hits Y (sampleDepth, any direction), the face is not culled.
 	std::mt19937                           rng(7);
-	std::uniform_real_distribution<double> u(-1, 1);
+	std::uniform_real_distribution<Scalar> u(-1, 1);
 	int                                    hits = 0;
 	for (int trial = 0; trial < 20000; ++trial) {
-		const M3    Q = Eigen::AngleAxisd(3 * u(rng), V3(u(rng), u(rng), u(rng)).normalized()).toRotationMatrix();
+		const M3    Q = Eigen::AngleAxis<Scalar>(3 * u(rng), V3(u(rng), u(rng), u(rng)).normalized()).toRotationMatrix();
 		const Block Y { V3(0, 0, 0), Q, V3(1 + 0.5 * u(rng), 1 + 0.5 * u(rng), 1 + 0.5 * u(rng)) };
-		const M3    R = Eigen::AngleAxisd(3 * u(rng), V3(u(rng), u(rng), u(rng)).normalized()).toRotationMatrix();
+		const M3    R = Eigen::AngleAxis<Scalar>(3 * u(rng), V3(u(rng), u(rng), u(rng)).normalized()).toRotationMatrix();
 		const V3    c = 2.5 * V3(u(rng), u(rng), u(rng));
-		const double h1 = 0.6 + 0.4 * u(rng), h2 = 0.6 + 0.4 * u(rng);
+		const Scalar h1 = 0.6 + 0.4 * u(rng), h2 = 0.6 + 0.4 * u(rng);
 		const bool  kept = rdem::faceMayEnter(Y, c, V3(R.col(0)), V3(R.col(1)), h1, h2);
 		for (int i = -2; i <= 2; ++i)
 			for (int j = -2; j <= 2; ++j) {
@@ -317,13 +320,13 @@ TEST(BlockGeometry, FaceMayEnterNeverCullsAFaceWithAHit)
 
 // Independent separating-axis check from the 8 vertices of each block: the overlap of the vertex projections onto
 // the axis [m] (negative: a gap).
-double overlapAlong(const Block& A, const Block& B, const V3& axis)
+Scalar overlapAlong(const Block& A, const Block& B, const V3& axis)
 {
 	const V3 a = axis.normalized();
-	double   loA = 1e300, hiA = -1e300, loB = 1e300, hiB = -1e300;
+	Scalar   loA = 1e300, hiA = -1e300, loB = 1e300, hiB = -1e300;
 	for (int v = 0; v < 8; ++v) {
 		const V3 s((v & 1) ? 1 : -1, (v & 2) ? 1 : -1, (v & 4) ? 1 : -1);
-		const double pA = (A.pos + A.rot * s.cwiseProduct(A.half)).dot(a), pB = (B.pos + B.rot * s.cwiseProduct(B.half)).dot(a);
+		const Scalar pA = (A.pos + A.rot * s.cwiseProduct(A.half)).dot(a), pB = (B.pos + B.rot * s.cwiseProduct(B.half)).dot(a);
 		loA = std::min(loA, pA);
 		hiA = std::max(hiA, pA);
 		loB = std::min(loB, pB);
@@ -331,14 +334,14 @@ double overlapAlong(const Block& A, const Block& B, const V3& axis)
 	}
 	return std::min(hiA, hiB) - std::max(loA, loB);
 }
-bool separatedAlong(const Block& A, const Block& B, const V3& axis, double tol) { return overlapAlong(A, B, axis) <= tol; }
+bool separatedAlong(const Block& A, const Block& B, const V3& axis, Scalar tol) { return overlapAlong(A, B, axis) <= tol; }
 
 // A block with a random rotation, half-extents in [0.2, 1] m and its centre in [-spread, spread]³ m, drawn from gen
 // (std::mt19937 is fully specified; the mapping to [0, 1) is done here, so a seed gives the same blocks everywhere).
-Block randomBlock(std::mt19937& gen, double spread)
+Block randomBlock(std::mt19937& gen, Scalar spread)
 {
-	auto               uniform = [&gen](double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); };
-	Eigen::Quaterniond q(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+	auto               uniform = [&gen](Scalar lo, Scalar hi) { return lo + (hi - lo) * (gen() / 4294967296.0); };
+	Eigen::Quaternion<Scalar> q(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
 	q.normalize();
 	return Block { V3(uniform(-spread, spread), uniform(-spread, spread), uniform(-spread, spread)),
 		       q.toRotationMatrix(),
@@ -346,9 +349,9 @@ Block randomBlock(std::mt19937& gen, double spread)
 }
 
 // Smallest vertex-projection overlap over the 15 separating-axis candidates; > 0 iff the boxes intersect (SAT).
-double minOverlap15(const Block& A, const Block& B)
+Scalar minOverlap15(const Block& A, const Block& B)
 {
-	double m = 1e300;
+	Scalar m = 1e300;
 	for (int i = 0; i < 3; ++i) {
 		m = std::min({ m, overlapAlong(A, B, A.rot.col(i)), overlapAlong(A, B, B.rot.col(i)) });
 		for (int j = 0; j < 3; ++j) {
@@ -367,7 +370,7 @@ TEST(BlockGeometry, BlockPairProjectionsEqualTheWorldFrameOnes)
 	std::mt19937 gen(20261122);
 	for (int k = 0; k < 50; ++k) {
 		const Block                   A = randomBlock(gen, 0.5), B = randomBlock(gen, 2.0);
-		const rdem::BlockPair<double> pair(A, B);
+		const rdem::BlockPair<Scalar> pair(A, B);
 		for (int i = 0; i < 3; ++i) {
 			EXPECT_NEAR(pair.overlapA(i), rdem::projectionOverlap(A, B, V3(A.rot.col(i))), 1e-13);
 			EXPECT_NEAR(pair.overlapB(i), rdem::projectionOverlap(A, B, V3(B.rot.col(i))), 1e-13);
@@ -381,7 +384,7 @@ TEST(BlockGeometry, BlockPairProjectionsEqualTheWorldFrameOnes)
 		}
 	}
 	// Aligned blocks: the cross products of parallel edges have length exactly 0, which blocksOverlap skips.
-	const rdem::BlockPair<double> aligned(cube(V3::Zero()), cube(V3(0.9, 0.3, 0)));
+	const rdem::BlockPair<Scalar> aligned(cube(V3::Zero()), cube(V3(0.9, 0.3, 0)));
 	for (int i = 0; i < 3; ++i)
 		EXPECT_EQ(aligned.crossLength(i, i), 0);
 	EXPECT_DOUBLE_EQ(aligned.overlapA(0), 0.1);
@@ -390,24 +393,24 @@ TEST(BlockGeometry, BlockPairProjectionsEqualTheWorldFrameOnes)
 
 TEST(BlockGeometry, BlocksOverlapFaceToFace)
 {
-	const double tol = 1e-9; // [m]
+	const Scalar tol = 1e-9; // [m]
 	// Unit cubes along x: centres 0.9 apart overlap by 0.1; 1.0 apart touch (overlap 0, not > tol); 1.1 apart.
 	EXPECT_TRUE(rdem::blocksOverlap(cube(V3::Zero()), cube(V3(0.9, 0, 0)), tol));
 	EXPECT_FALSE(rdem::blocksOverlap(cube(V3::Zero()), cube(V3(1.0, 0, 0)), tol));
 	EXPECT_FALSE(rdem::blocksOverlap(cube(V3::Zero()), cube(V3(1.1, 0, 0)), tol));
 	// Overlap 1e-6 > tol = 1e-9: true; with tol = 1e-5 the same pair counts as touching.
 	EXPECT_TRUE(rdem::blocksOverlap(cube(V3::Zero()), cube(V3(1 - 1e-6, 0, 0)), tol));
-	EXPECT_FALSE(rdem::blocksOverlap(cube(V3::Zero()), cube(V3(1 - 1e-6, 0, 0)), 1e-5));
+	EXPECT_FALSE(rdem::blocksOverlap<Scalar>(cube(V3::Zero()), cube(V3(1 - 1e-6, 0, 0)), 1e-5));
 	// The overlap must exceed tol strictly: centres 0.75 apart overlap by exactly 0.25 (exact in binary).
-	EXPECT_FALSE(rdem::blocksOverlap(cube(V3::Zero()), cube(V3(0.75, 0, 0)), 0.25));
-	EXPECT_TRUE(rdem::blocksOverlap(cube(V3::Zero()), cube(V3(0.75, 0, 0)), 0.2499));
+	EXPECT_FALSE(rdem::blocksOverlap<Scalar>(cube(V3::Zero()), cube(V3(0.75, 0, 0)), 0.25));
+	EXPECT_TRUE(rdem::blocksOverlap<Scalar>(cube(V3::Zero()), cube(V3(0.75, 0, 0)), 0.2499));
 	// Grid neighbours along an edge (offset (1, 1, 0)) and a corner (1, 1, 1): touching only.
 	EXPECT_FALSE(rdem::blocksOverlap(cube(V3::Zero()), cube(V3(1, 1, 0)), tol));
 	EXPECT_FALSE(rdem::blocksOverlap(cube(V3::Zero()), cube(V3(1, 1, 1)), tol));
 	// Rotated B (45° about z) whose corner pokes 0.05 m into A's +x face: centre at 0.5 + √2/2 - 0.05.
-	const double x = 0.5 + std::sqrt(0.5) - 0.05;
-	EXPECT_TRUE(rdem::blocksOverlap(cube(V3::Zero()), cube(V3(x, 0, 0), Eigen::AngleAxisd(M_PI / 4, V3::UnitZ()).toRotationMatrix()), tol));
-	EXPECT_FALSE(rdem::blocksOverlap(cube(V3::Zero()), cube(V3(x + 0.1, 0, 0), Eigen::AngleAxisd(M_PI / 4, V3::UnitZ()).toRotationMatrix()), tol));
+	const Scalar x = 0.5 + std::sqrt(0.5) - 0.05;
+	EXPECT_TRUE(rdem::blocksOverlap(cube(V3::Zero()), cube(V3(x, 0, 0), Eigen::AngleAxis<Scalar>(M_PI / 4, V3::UnitZ()).toRotationMatrix()), tol));
+	EXPECT_FALSE(rdem::blocksOverlap(cube(V3::Zero()), cube(V3(x + 0.1, 0, 0), Eigen::AngleAxis<Scalar>(M_PI / 4, V3::UnitZ()).toRotationMatrix()), tol));
 }
 
 TEST(BlockGeometry, BlocksOverlapNeedsTheEdgeAxes)
@@ -415,10 +418,10 @@ TEST(BlockGeometry, BlocksOverlapNeedsTheEdgeAxes)
 	// B = unit cube rotated by Rx(45°)·Rz(45°), centred at t·(1, 1, 0)/√2. The 6 face normals stop separating the
 	// pair only beyond t = 1.5858, but an edge-edge axis separates it from t = 1.4142 on (found numerically, proved
 	// below from the vertices). At t = 1.5 a face-normals-only test would wrongly report an overlap.
-	const double tol = 1e-9;
-	const M3     RB  = (Eigen::AngleAxisd(M_PI / 4, V3::UnitX()) * Eigen::AngleAxisd(M_PI / 4, V3::UnitZ())).toRotationMatrix();
+	const Scalar tol = 1e-9;
+	const M3     RB  = (Eigen::AngleAxis<Scalar>(M_PI / 4, V3::UnitX()) * Eigen::AngleAxis<Scalar>(M_PI / 4, V3::UnitZ())).toRotationMatrix();
 	const Block  A   = cube(V3::Zero());
-	for (const double t : { 1.3, 1.5 }) {
+	for (const Scalar t : { 1.3, 1.5 }) {
 		SCOPED_TRACE("t = " + std::to_string(t));
 		const Block B = cube(t * V3(1, 1, 0).normalized(), RB);
 		bool        faceSeparated = false, edgeSeparated = false;
@@ -443,11 +446,11 @@ TEST(BlockGeometry, BlocksOverlapAgreesWithAVertexBasedSeparatingAxisTest)
 	// within 1e-9 m of the threshold are skipped: the two computations round differently (~1e-15 m), so only those
 	// could legitimately disagree.
 	std::mt19937 gen(20260122);
-	const double tol = 1e-3;
+	const Scalar tol = 1e-3;
 	int          overlapping = 0, apart = 0;
 	for (int k = 0; k < 400; ++k) {
 		const Block  A = randomBlock(gen, 0.0), B = randomBlock(gen, 2.0);
-		const double m = minOverlap15(A, B);
+		const Scalar m = minOverlap15(A, B);
 		if (std::abs(m - tol) < 1e-9) continue;
 		const bool expected = m > tol;
 		EXPECT_EQ(rdem::blocksOverlap(A, B, tol), expected) << "pair " << k << ": min overlap " << m;
@@ -485,23 +488,23 @@ TEST(BlockGeometry, ContactFaceAxisIsContinuousAcrossATie)
 	// ≤ 1.4e-2 per step Δox = 1e-6 over ox = 0.85-1.15 oy, and the normal turns by no more than that (a jump would be
 	// π/4 rad).
 	const Block  Y        = cube(V3::Zero());
-	const double oy       = 1e-3;
-	auto         normalAt = [&](double ox) { return rdem::contactFaceAxis(Y, cube(V3(1 - ox, 1 - oy, 0)), 0.1).normal; };
+	const Scalar oy       = 1e-3;
+	auto         normalAt = [&](Scalar ox) { return rdem::contactFaceAxis<Scalar>(Y, cube(V3(1 - ox, 1 - oy, 0)), 0.1).normal; };
 	EXPECT_NEAR((normalAt(0.9 * oy) - V3::UnitX()).norm(), 0, 1e-12);
 	EXPECT_NEAR((normalAt(1.2 * oy) - V3::UnitY()).norm(), 0, 1e-12);
 	EXPECT_NEAR((normalAt(oy) - V3(1, 1, 0).normalized()).norm(), 0, 1e-9); // overlaps equal up to round-off of 1 - 1e-3
-	double worst = 0;
-	for (double ox = 0.85 * oy; ox < 1.15 * oy; ox += 1e-6)
+	Scalar worst = 0;
+	for (Scalar ox = 0.85 * oy; ox < 1.15 * oy; ox += 1e-6)
 		worst = std::max(worst, (normalAt(ox + 1e-6) - normalAt(ox)).norm());
 	EXPECT_LT(worst, 1.5e-2);
 }
 
 // How far B must move along the unit axis a (turned to point from A to B) to clear A, from the 8 vertices of each: the
 // highest vertex projection of A minus the lowest of B [m].
-double penetrationAlong(const Block& A, const Block& B, const V3& axis)
+Scalar penetrationAlong(const Block& A, const Block& B, const V3& axis)
 {
 	const V3 a  = (B.pos - A.pos).dot(axis) >= 0 ? axis.normalized() : V3(-axis.normalized());
-	double   hi = -1e300, lo = 1e300;
+	Scalar   hi = -1e300, lo = 1e300;
 	for (int v = 0; v < 8; ++v) {
 		const V3 s((v & 1) ? 1 : -1, (v & 2) ? 1 : -1, (v & 4) ? 1 : -1);
 		hi = std::max(hi, (A.pos + A.rot * s.cwiseProduct(A.half)).dot(a));
@@ -517,19 +520,19 @@ TEST(BlockGeometry, ContactFaceAxisAgreesWithVertexProjections)
 	// penetration computed from the vertices; the reported overlap is the vertex penetration along the normal; every
 	// face sample point of one block inside the other is at most that deep along it (sampleDepth).
 	std::mt19937                           rng(7);
-	std::uniform_real_distribution<double> U(-1, 1);
+	std::uniform_real_distribution<Scalar> U(-1, 1);
 	int                                    tested = 0, single = 0;
-	double                                 worstRatio = 0;
+	Scalar                                 worstRatio = 0;
 	for (int trial = 0; trial < 2000; ++trial) {
-		const M3    RA = Eigen::Quaterniond(U(rng), U(rng), U(rng), U(rng)).normalized().toRotationMatrix();
-		const M3    RB = Eigen::Quaterniond(U(rng), U(rng), U(rng), U(rng)).normalized().toRotationMatrix();
+		const M3    RA = Eigen::Quaternion<Scalar>(U(rng), U(rng), U(rng), U(rng)).normalized().toRotationMatrix();
+		const M3    RB = Eigen::Quaternion<Scalar>(U(rng), U(rng), U(rng), U(rng)).normalized().toRotationMatrix();
 		const Block A { V3::Zero(), RA, V3(0.5, 0.3 + 0.2 * U(rng), 0.6) };
 		const Block B { V3(U(rng), U(rng), U(rng)), RB, V3(0.4, 0.5, 0.3 + 0.1 * U(rng)) };
-		double      least = 1e300, second = 1e300;
+		Scalar      least = 1e300, second = 1e300;
 		V3          leastAxis;
 		for (int i = 0; i < 6; ++i) {
 			const V3     a = (i < 3 ? A : B).rot.col(i % 3);
-			const double o = penetrationAlong(A, B, a);
+			const Scalar o = penetrationAlong(A, B, a);
 			if (o < least) {
 				second    = least;
 				least     = o;
@@ -554,9 +557,9 @@ TEST(BlockGeometry, ContactFaceAxisAgreesWithVertexProjections)
 			const V3     u = which ? axis.normal : V3(-axis.normal);
 			for (int k = 0; k < 3; ++k) {
 				const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-				for (const double s : { -1.0, 1.0 }) {
+				for (const Scalar s : { -1.0, 1.0 }) {
 					const V3 c = X.pos + s * X.half[k] * X.rot.col(k);
-					for (const auto& p : rdem::faceSamplePoints<double>(c, X.rot.col(k1), X.rot.col(k2), X.half[k1], X.half[k2], 4)) {
+					for (const auto& p : rdem::faceSamplePoints<Scalar>(c, X.rot.col(k1), X.rot.col(k2), X.half[k1], X.half[k2], 4)) {
 						const auto hit = rdem::sampleDepth(Y, p.pos, u);
 						if (hit.hit) worstRatio = std::max(worstRatio, hit.depth / axis.overlap);
 					}

@@ -15,6 +15,7 @@
      * for the box, K = ∫ Bᵀ D B dV assembled entry by entry with the explicit diagonal Jacobian.
    Material: E = 30 GPa, ν = 0.2, so λ = 25e9/3 Pa; K entries are O(E·L) ≈ 1e8-1e10 N/m. */
 #include <pkg/rdem/math/Hex8.hpp>
+#include <tests/unit/Scalar.hpp>
 
 #include <gtest/gtest.h>
 
@@ -26,23 +27,25 @@
 
 namespace {
 
-namespace rdem = yade::rdem;
-using V3     = Eigen::Vector3d;
-using M3     = Eigen::Matrix3d;
-using V24    = rdem::Vec24<double>;
-using M24    = rdem::Mat24<double>;
-using M6     = rdem::Matrix6<double>;
-using V6     = Eigen::Matrix<double, 6, 1>;
-using Nodes  = rdem::Nodes8<double>;
-using Grad8  = Eigen::Matrix<double, 3, 8>; // column a: a vector attached to node a
+using rdem_test::Scalar;
 
-constexpr double E  = 30e9;
-constexpr double nu = 0.2;
+namespace rdem = yade::rdem;
+using V3     = rdem_test::Vector3;
+using M3     = rdem_test::Matrix3;
+using V24    = rdem::Vec24<Scalar>;
+using M24    = rdem::Mat24<Scalar>;
+using M6     = rdem::Matrix6<Scalar>;
+using V6     = Eigen::Matrix<Scalar, 6, 1>;
+using Nodes  = rdem::Nodes8<Scalar>;
+using Grad8  = Eigen::Matrix<Scalar, 3, 8>; // column a: a vector attached to node a
+
+constexpr Scalar E  = 30e9;
+constexpr Scalar nu = 0.2;
 
 // ------------------------------------------------------------------------------------------------ elements
 
 // Node a = i + 2j + 4k at origin + (i lx, j ly, k lz).
-Nodes boxNodes(const V3& origin, double lx, double ly, double lz)
+Nodes boxNodes(const V3& origin, Scalar lx, Scalar ly, Scalar lz)
 {
 	Nodes X;
 	for (int a = 0; a < 8; ++a)
@@ -74,7 +77,7 @@ V3 centroid(const Nodes& X)
 	return c;
 }
 
-double size(const Nodes& X) { return (X[7] - X[0]).norm(); } // a length scale of the element [m]
+Scalar size(const Nodes& X) { return (X[7] - X[0]).norm(); } // a length scale of the element [m]
 
 // The six rigid-body modes of an element: translation along e_i (first) and infinitesimal rotation ω = e_i about the
 // centroid, u_a = ω × (X_a - X̄) (second), for i = 0, 1, 2.
@@ -93,11 +96,11 @@ std::array<std::pair<V24, V24>, 3> rigidModes(const Nodes& X)
 // ------------------------------------------------------------------------------------------------ references
 
 // 1D linear Lagrange functions on [-1, 1]: L_0 = (1-t)/2, L_1 = (1+t)/2, and their derivatives ∓1/2.
-double L(int bit, double t) { return bit ? (1 + t) / 2 : (1 - t) / 2; }
-double dL(int bit) { return bit ? 0.5 : -0.5; }
+Scalar L(int bit, Scalar t) { return bit ? (1 + t) / 2 : (1 - t) / 2; }
+Scalar dL(int bit) { return bit ? 0.5 : -0.5; }
 
 // N_a(ξ) = L_i(ξ) L_j(η) L_k(ζ) with a = i + 2j + 4k.
-double refN(int a, const V3& xi) { return L(a & 1, xi[0]) * L((a >> 1) & 1, xi[1]) * L((a >> 2) & 1, xi[2]); }
+Scalar refN(int a, const V3& xi) { return L(a & 1, xi[0]) * L((a >> 1) & 1, xi[1]) * L((a >> 2) & 1, xi[2]); }
 V3     refdN(int a, const V3& xi)
 {
 	const int i = a & 1, j = (a >> 1) & 1, k = (a >> 2) & 1;
@@ -105,14 +108,14 @@ V3     refdN(int a, const V3& xi)
 }
 
 // 3-point Gauss-Legendre rule on [-1, 1] (exact to degree 5).
-constexpr double gp3[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
-constexpr double gw3[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
+constexpr Scalar gp3[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
+constexpr Scalar gw3[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
 
 /* Surface integrals over the six faces ξ_d = ±1 of the element: grad.col(a) = ∮ N_a n dS (= ∫ ∇N_a dV by the
    divergence theorem) and volume = (1/3)∮ x·n dS. On a face, n dS = ±(∂x/∂ξ_{d+1} × ∂x/∂ξ_{d+2}) dξ_{d+1} dξ_{d+2}. */
 struct SurfaceIntegrals {
 	Grad8  grad;
-	double volume;
+	Scalar volume;
 };
 SurfaceIntegrals surfaceIntegrals(const Nodes& X)
 {
@@ -168,7 +171,7 @@ V24 constantStressForces(const Nodes& X, const M3& sigma)
 	return f;
 }
 
-M3 rotation(double angle, const V3& axis) { return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix(); }
+M3 rotation(Scalar angle, const V3& axis) { return Eigen::AngleAxis<Scalar>(angle, axis.normalized()).toRotationMatrix(); }
 
 // ------------------------------------------------------------------------------------------------ tests
 
@@ -177,7 +180,7 @@ TEST(Hex8, ShapeFunctionsPartitionOfUnityAndKroneckerDelta)
 	// Tolerance: N_a are products of three O(1) factors, the sum of 8 of them carries ~1e-16 round-off: 1e-15.
 	const V3 points[] = { V3::Zero(), V3(0.3, -0.7, 0.1), V3(-1, 0.5, 0.9), V3(0.577, 0.577, -0.577), V3(2.0, -3.0, 0.5) };
 	for (const V3& xi : points) {
-		const auto N = rdem::hex8ShapeFunctions<double>(xi);
+		const auto N = rdem::hex8ShapeFunctions<Scalar>(xi);
 		EXPECT_NEAR(N.sum(), 1.0, 1e-15) << xi.transpose();
 		for (int a = 0; a < 8; ++a)
 			EXPECT_NEAR(N[a], refN(a, xi), 1e-15) << "a = " << a << " at " << xi.transpose();
@@ -185,26 +188,26 @@ TEST(Hex8, ShapeFunctionsPartitionOfUnityAndKroneckerDelta)
 	for (int b = 0; b < 8; ++b) {
 		// The documented numbering: node b at (2i-1, 2j-1, 2k-1), b = i + 2j + 4k; ±1 are exact.
 		const V3 corner(2 * (b & 1) - 1, 2 * ((b >> 1) & 1) - 1, 2 * ((b >> 2) & 1) - 1);
-		EXPECT_EQ(rdem::hex8Corner<double>(b), corner) << "b = " << b;
-		const auto N = rdem::hex8ShapeFunctions<double>(corner);
+		EXPECT_EQ(rdem::hex8Corner<Scalar>(b), corner) << "b = " << b;
+		const auto N = rdem::hex8ShapeFunctions<Scalar>(corner);
 		for (int a = 0; a < 8; ++a)
 			EXPECT_EQ(N[a], a == b ? 1.0 : 0.0) << "N_" << a << "(corner " << b << ")"; // products of 0, 1, 2 and /8: exact
 	}
 	// At the centre all N_a = 1/8 exactly.
-	EXPECT_EQ(rdem::hex8ShapeFunctions<double>(V3::Zero()), (Eigen::Matrix<double, 8, 1>::Constant(0.125)));
+	EXPECT_EQ(rdem::hex8ShapeFunctions<Scalar>(V3::Zero()), (Eigen::Matrix<Scalar, 8, 1>::Constant(0.125)));
 }
 
 TEST(Hex8, ShapeDerivativesAgainstFiniteDifferences)
 {
 	// N_a is linear in each coordinate separately, so the central difference has no truncation error; only
 	// cancellation, ~1e-16/h = 1e-11 for h = 1e-5: tolerance 1e-10.
-	const double h        = 1e-5;
+	const Scalar h        = 1e-5;
 	const V3     points[] = { V3::Zero(), V3(0.3, -0.7, 0.1), V3(-0.9, 0.5, 0.95), V3(0.577, 0.577, -0.577) };
 	for (const V3& xi : points) {
-		const auto dN = rdem::hex8ShapeDerivatives<double>(xi);
+		const auto dN = rdem::hex8ShapeDerivatives<Scalar>(xi);
 		for (int j = 0; j < 3; ++j) {
 			const V3   e  = h * V3::Unit(j);
-			const auto fd = ((rdem::hex8ShapeFunctions<double>(xi + e) - rdem::hex8ShapeFunctions<double>(xi - e)) / (2 * h)).eval();
+			const auto fd = ((rdem::hex8ShapeFunctions<Scalar>(xi + e) - rdem::hex8ShapeFunctions<Scalar>(xi - e)) / (2 * h)).eval();
 			for (int a = 0; a < 8; ++a) {
 				EXPECT_NEAR(dN(j, a), fd[a], 1e-10) << "dN_" << a << "/dxi_" << j << " at " << xi.transpose();
 				EXPECT_NEAR(dN(j, a), refdN(a, xi)[j], 1e-15); // against the analytic products: round-off only
@@ -220,7 +223,7 @@ TEST(Hex8, JacobianOfABoxIsDiagonal)
 {
 	// For the box, x = X_0 + ((1+ξ) lx/2, (1+η) ly/2, (1+ζ) lz/2): J = diag(0.01, 0.015, 0.02) everywhere.
 	// Sums of 8 terms of O(1) coordinates times 1/8: 1e-15 absolute.
-	const M3 J = rdem::hex8Jacobian<double>(box(), rdem::hex8ShapeDerivatives<double>(V3(0.3, -0.2, 0.6)));
+	const M3 J = rdem::hex8Jacobian<Scalar>(box(), rdem::hex8ShapeDerivatives<Scalar>(V3(0.3, -0.2, 0.6)));
 	EXPECT_NEAR((J - V3(0.01, 0.015, 0.02).asDiagonal().toDenseMatrix()).norm(), 0, 1e-15);
 }
 
@@ -233,7 +236,7 @@ TEST(Hex8, VolumeExactForBoxAndDistorted)
 	EXPECT_NEAR(rdem::hex8Volume(unitCube()), 1.0, 1e-14); // no offset: a few ulps, 1e-14
 	// Distorted: det J is of degree ≤ 2 in each reference coordinate, so 2-point Gauss is exact; compare with the
 	// divergence theorem. Round-off ~1e-16 relative in each, sums of ~50 terms: 1e-13 relative.
-	const double V = surfaceIntegrals(distorted()).volume;
+	const Scalar V = surfaceIntegrals(distorted()).volume;
 	EXPECT_NEAR(rdem::hex8Volume(distorted()), V, 1e-13 * V);
 	// The surface-integral reference itself is right on the box (checks the reference, same tolerance).
 	EXPECT_NEAR(surfaceIntegrals(box()).volume, 2.4e-5, 1e-13 * 2.4e-5);
@@ -249,7 +252,7 @@ TEST(Hex8, StiffnessSymmetricAndRigidBodyModesFree)
 		ASSERT_TRUE(rdem::hex8IsValid(X));
 		for (const M6& D : { rdem::elasticityTensor(E, nu), rdem::poissonTensor(E, nu) }) {
 			const M24    K     = rdem::hex8Stiffness(X, D);
-			const double normK = K.norm();
+			const Scalar normK = K.norm();
 			// Round-off: each entry is a sum of 8 Gauss-point products of 6×6×6 terms, ~1e-15 relative each;
 			// Bᵀ D B is computed as (Bᵀ D) B, so K - Kᵀ is pure round-off: 1e-14 relative to |K|.
 			EXPECT_LE((K - K.transpose()).norm(), 1e-14 * normK);
@@ -273,7 +276,7 @@ TEST(Hex8, FullStiffnessHasRank18)
 		SCOPED_TRACE(name);
 		const M24                      K = rdem::hex8Stiffness(X, rdem::elasticityTensor(E, nu));
 		Eigen::JacobiSVD<M24>          svd(K);
-		const Eigen::Matrix<double, 24, 1> s = svd.singularValues(); // descending
+		const Eigen::Matrix<Scalar, 24, 1> s = svd.singularValues(); // descending
 		// Six zero singular values (rigid modes) at round-off level: 1e-13 of the largest (measured ≤ 5e-17). The 18
 		// others are bounded away from zero: 2×2×2 full integration has no hourglass modes, and the smallest non-zero
 		// one is 0.083 (cube), 0.023 (box), 0.064 (distorted) of the largest; 1e-2 catches any spurious zero mode.
@@ -296,7 +299,7 @@ TEST(Hex8, ConstantStrainPatchTest)
 	const V6  voigt = strainVoigt(eps);
 	const M6  D     = rdem::elasticityTensor(E, nu);
 	const M3  sigma = stressTensor(D * voigt);
-	const double g  = 1 / std::sqrt(3.0);
+	const Scalar g  = 1 / std::sqrt(3.0);
 	for (const auto& [name, X] : elements()) {
 		SCOPED_TRACE(name);
 		const V24 u  = affine(X, eps);
@@ -304,8 +307,8 @@ TEST(Hex8, ConstantStrainPatchTest)
 		// B·u at the 8 Gauss points, the centre and an off-centre point equals the Voigt strain. Round-off: B entries
 		// O(1/L), u O(ε·|X|), |X|/L up to 1e2 (offset box): 1e-12 relative to |ε|.
 		for (int q = 0; q < 10; ++q) {
-			const V3 xi = q < 8 ? V3(g * rdem::hex8Corner<double>(q)) : (q == 8 ? V3::Zero() : V3(0.31, -0.77, 0.12));
-			double   detJ = 0;
+			const V3 xi = q < 8 ? V3(g * rdem::hex8Corner<Scalar>(q)) : (q == 8 ? V3::Zero() : V3(0.31, -0.77, 0.12));
+			Scalar   detJ = 0;
 			const auto B  = rdem::hex8B(X, xi, detJ);
 			EXPECT_GT(detJ, 0);
 			EXPECT_LE((B * u - voigt).norm(), 1e-12 * voigt.norm()) << "point " << q;
@@ -329,7 +332,7 @@ TEST(Hex8, PoissonStiffnessPushesOutwardUnderVerticalShortening)
 {
 	// D_p only (eq. 19), u_z = -e z (uniaxial shortening along z, e = 1e-3): σ = D_p ε has σ_xx = σ_yy = -λe,
 	// σ_zz = 0; the force on the blocks F = -K_p u points outward in x and y and vanishes in z for a box.
-	const double e  = 1e-3;
+	const Scalar e  = 1e-3;
 	const M6     Dp = rdem::poissonTensor(E, nu);
 	M3           G  = M3::Zero();
 	G(2, 2)         = -e;
@@ -351,7 +354,7 @@ TEST(Hex8, PoissonStiffnessPushesOutwardUnderVerticalShortening)
 	const Nodes X = box();
 	const V24   F = -(rdem::hex8Stiffness(X, Dp) * affine(X, G));
 	for (int a = 0; a < 8; ++a) {
-		const double sx = (a & 1) ? 1 : -1, sy = (a & 2) ? 1 : -1;
+		const Scalar sx = (a & 1) ? 1 : -1, sy = (a & 2) ? 1 : -1;
 		// Round-off of K u relative to the O(2500 N) forces: 1e-12 relative, see the patch test.
 		EXPECT_NEAR(F[3 * a], sx * 2500, 1e-12 * 2500) << "node " << a;
 		EXPECT_NEAR(F[3 * a + 1], sy * 5000.0 / 3, 1e-12 * 2500) << "node " << a;
@@ -361,14 +364,14 @@ TEST(Hex8, PoissonStiffnessPushesOutwardUnderVerticalShortening)
 
 // Reference B of a box lx × ly × lz written out entry by entry: J = diag(lx, ly, lz)/2 everywhere, so
 // ∂N_a/∂x = (2/lx) ∂N_a/∂ξ etc.
-Eigen::Matrix<double, 6, 24> boxB(double lx, double ly, double lz, const V3& xi)
+Eigen::Matrix<Scalar, 6, 24> boxB(Scalar lx, Scalar ly, Scalar lz, const V3& xi)
 {
-	Eigen::Matrix<double, 6, 24> B = Eigen::Matrix<double, 6, 24>::Zero();
+	Eigen::Matrix<Scalar, 6, 24> B = Eigen::Matrix<Scalar, 6, 24>::Zero();
 	for (int a = 0; a < 8; ++a) {
-		const double si = (a & 1) ? 1 : -1, sj = (a & 2) ? 1 : -1, sk = (a & 4) ? 1 : -1;
-		const double dx = (2 / lx) * si * (1 + sj * xi[1]) * (1 + sk * xi[2]) / 8;
-		const double dy = (2 / ly) * (1 + si * xi[0]) * sj * (1 + sk * xi[2]) / 8;
-		const double dz = (2 / lz) * (1 + si * xi[0]) * (1 + sj * xi[1]) * sk / 8;
+		const Scalar si = (a & 1) ? 1 : -1, sj = (a & 2) ? 1 : -1, sk = (a & 4) ? 1 : -1;
+		const Scalar dx = (2 / lx) * si * (1 + sj * xi[1]) * (1 + sk * xi[2]) / 8;
+		const Scalar dy = (2 / ly) * (1 + si * xi[0]) * sj * (1 + sk * xi[2]) / 8;
+		const Scalar dz = (2 / lz) * (1 + si * xi[0]) * (1 + sj * xi[1]) * sk / 8;
 		// rows: εxx = ∂ux/∂x, εyy, εzz, γyz = ∂uy/∂z + ∂uz/∂y, γzx = ∂uz/∂x + ∂ux/∂z, γxy = ∂ux/∂y + ∂uy/∂x
 		B(0, 3 * a)     = dx;
 		B(1, 3 * a + 1) = dy;
@@ -387,15 +390,15 @@ TEST(Hex8, BoxPoissonStiffnessAgainstDenseReference)
 {
 	// Slow reference for a box lx × ly × lz: J = diag(lx, ly, lz)/2 at every point, so ∂N_a/∂x = (2/lx) ∂N_a/∂ξ etc.,
 	// det J = lx ly lz / 8; B built entry by entry and K = Σ_q Bᵀ D B det J assembled with explicit loops.
-	const double lx = 0.02, ly = 0.03, lz = 0.04, detJ = lx * ly * lz / 8, g = 1 / std::sqrt(3.0);
+	const Scalar lx = 0.02, ly = 0.03, lz = 0.04, detJ = lx * ly * lz / 8, g = 1 / std::sqrt(3.0);
 	for (const M6& D : { rdem::poissonTensor(E, nu), rdem::elasticityTensor(E, nu) }) {
 		M24 Kref = M24::Zero();
 		for (int q = 0; q < 8; ++q) {
 			const V3                           xi((q & 1) ? g : -g, (q & 2) ? g : -g, (q & 4) ? g : -g);
-			const Eigen::Matrix<double, 6, 24> B = boxB(lx, ly, lz, xi);
+			const Eigen::Matrix<Scalar, 6, 24> B = boxB(lx, ly, lz, xi);
 			for (int r = 0; r < 24; ++r)
 				for (int c = 0; c < 24; ++c) {
-					double s = 0;
+					Scalar s = 0;
 					for (int m = 0; m < 6; ++m)
 						for (int n = 0; n < 6; ++n)
 							s += B(m, r) * D(m, n) * B(n, c);
@@ -413,7 +416,7 @@ TEST(Hex8, BoxPoissonStiffnessAgainstDenseReference)
 	// entry couples ε_xx = ∂N_0/∂x u_0x with ε_yy = ∂N_0/∂y u_0y through D(0,1) = λ (and, for the full D, γ_xy through
 	// μ), so K(0,1) = (λ [+ μ]) ∫ ∂N_0/∂x ∂N_0/∂y dV = (λ [+ μ]) (lx/2)(ly/2)(lz/3)/(lx ly) = (λ [+ μ]) lz/12
 	// = 2.78e7 N/m for D_p. The integrand has degree 2 in z, integrated exactly by 2-point Gauss; round-off 1e-13.
-	const double lambda = 25e9 / 3, mu = 12.5e9;
+	const Scalar lambda = 25e9 / 3, mu = 12.5e9;
 	EXPECT_NEAR(rdem::hex8Stiffness(box(), rdem::poissonTensor(E, nu))(0, 1), lambda * lz / 12, 1e-13 * lambda * lz / 12);
 	EXPECT_NEAR(rdem::hex8Stiffness(box(), rdem::elasticityTensor(E, nu))(0, 1), (lambda + mu) * lz / 12, 1e-13 * (lambda + mu) * lz / 12);
 }
@@ -426,7 +429,7 @@ TEST(Hex8, StiffnessWithSkinZeroWeightsIsTheElementStiffness)
 		SCOPED_TRACE(name);
 		for (const M6& D : { rdem::elasticityTensor(E, nu), rdem::poissonTensor(E, nu) }) {
 			const M24 K = rdem::hex8Stiffness(X, D);
-			EXPECT_LE((rdem::hex8StiffnessWithSkin<double>(X, D, V3::Zero(), V3::Zero()) - K).norm(), 1e-14 * K.norm());
+			EXPECT_LE((rdem::hex8StiffnessWithSkin<Scalar>(X, D, V3::Zero(), V3::Zero()) - K).norm(), 1e-14 * K.norm());
 		}
 	}
 }
@@ -434,12 +437,12 @@ TEST(Hex8, StiffnessWithSkinZeroWeightsIsTheElementStiffness)
 TEST(Hex8, StiffnessWithSkinOfABox)
 {
 	// Box lx × ly × lz with skins of thickness ℓ beyond four of its faces: weight t = ℓ/(half length) per face.
-	const double lx = 0.02, ly = 0.03, lz = 0.04;
-	const double lxLo = 0.004, lxHi = 0.007, lyHi = 0.005, lzLo = 0.002; // [m]
+	const Scalar lx = 0.02, ly = 0.03, lz = 0.04;
+	const Scalar lxLo = 0.004, lxHi = 0.007, lyHi = 0.005, lzLo = 0.002; // [m]
 	const V3     lo(lxLo / (lx / 2), 0, lzLo / (lz / 2)), hi(lxHi / (lx / 2), lyHi / (ly / 2), 0);
 	const Nodes  X = box();
 	for (const M6& D : { rdem::elasticityTensor(E, nu), rdem::poissonTensor(E, nu) }) {
-		const M24 Ks = rdem::hex8StiffnessWithSkin<double>(X, D, lo, hi);
+		const M24 Ks = rdem::hex8StiffnessWithSkin<Scalar>(X, D, lo, hi);
 		// Symmetric, and rigid-body modes stay free (B·u = 0 at the skin points too); same budgets as for K.
 		EXPECT_LE((Ks - Ks.transpose()).norm(), 1e-14 * Ks.norm());
 		const V3   c     = centroid(X);
@@ -455,7 +458,7 @@ TEST(Hex8, StiffnessWithSkinOfABox)
 		// (products of weights) all count once. The field is taken about the centroid, u = ε(X - X̄), so that the
 		// quadratic form is not dominated by a translation of the 1 m offset box (a rigid mode, checked above):
 		// round-off of a 24×24 quadratic form, 1e-12 relative (measured below 5e-14).
-		const double Vext = (lx + lxLo + lxHi) * (ly + lyHi) * (lz + lzLo);
+		const Scalar Vext = (lx + lxLo + lxHi) * (ly + lyHi) * (lz + lzLo);
 		M3           eps;
 		eps << 1.0e-3, 0.4e-3, -0.7e-3, //
 		        0.4e-3, -2.0e-3, 0.3e-3, //
@@ -463,16 +466,16 @@ TEST(Hex8, StiffnessWithSkinOfABox)
 		for (const M3& e : { eps, M3(V3(0, 0, -1e-3).asDiagonal()), M3(V3(1e-3, 0, 0).asDiagonal()) }) {
 			const V24    u      = affine(X, e, -e * c);
 			const V6     v      = strainVoigt(e);
-			const double energy = v.dot(D * v) * Vext;
+			const Scalar energy = v.dot(D * v) * Vext;
 			EXPECT_NEAR(u.dot(Ks * u), energy, 1e-12 * std::abs(energy)) << "ε =\n" << e;
 		}
 		// Entry by entry against the reference B of the box: K_skin = K + Σ over the skin points (ξ on a skinned face,
 		// the other coordinates on the ±1/√3 or skinned-face points) of w Bᵀ D B det J, w the product of the 1-D
 		// weights; det J = lx ly lz/8. 1e-12 relative, as for the dense reference.
-		const double g = 1 / std::sqrt(3.0), detJ = lx * ly * lz / 8;
-		const std::array<std::pair<double, double>, 4> rx { { { -g, 1 }, { g, 1 }, { -1, lo[0] }, { 1, hi[0] } } };
-		const std::array<std::pair<double, double>, 4> ry { { { -g, 1 }, { g, 1 }, { -1, lo[1] }, { 1, hi[1] } } };
-		const std::array<std::pair<double, double>, 4> rz { { { -g, 1 }, { g, 1 }, { -1, lo[2] }, { 1, hi[2] } } };
+		const Scalar g = 1 / std::sqrt(3.0), detJ = lx * ly * lz / 8;
+		const std::array<std::pair<Scalar, Scalar>, 4> rx { { { -g, 1 }, { g, 1 }, { -1, lo[0] }, { 1, hi[0] } } };
+		const std::array<std::pair<Scalar, Scalar>, 4> ry { { { -g, 1 }, { g, 1 }, { -1, lo[1] }, { 1, hi[1] } } };
+		const std::array<std::pair<Scalar, Scalar>, 4> rz { { { -g, 1 }, { g, 1 }, { -1, lo[2] }, { 1, hi[2] } } };
 		M24 Kref = M24::Zero();
 		for (const auto& [x, wx] : rx)
 			for (const auto& [y, wy] : ry)
@@ -548,7 +551,7 @@ TEST(Hex8, CorotationalFrameOfARigidRotation)
 		const V24 u = rdem::hex8Displacement(X, x, &Rc);
 		EXPECT_LE(u.cwiseAbs().maxCoeff(), 1e-12 * size(X));
 		// Small strain (no R): u = (R - I)X + t is of the order of the element and the offset, far from zero.
-		const V24 uSmall = rdem::hex8Displacement<double>(X, x, nullptr);
+		const V24 uSmall = rdem::hex8Displacement<Scalar>(X, x, nullptr);
 		for (int a = 0; a < 8; ++a)
 			EXPECT_LE((uSmall.segment<3>(3 * a) - (x[a] - X[a])).norm(), 1e-15 * (1 + X[a].norm())); // one subtraction
 		EXPECT_GT(uSmall.norm(), 0.1 * size(X));
@@ -572,14 +575,14 @@ TEST(Hex8, SmallStrainPoissonForceOfARigidRotationIsSpurious)
 	EXPECT_LE((fRot - fRef).norm(), 1e-12 * fRef.norm()); // as in the patch test (measured 2e-16)
 	M3 G    = M3::Zero();
 	G(2, 2) = -1e-3;
-	const double ratio = fRot.norm() / (Kp * affine(X, G)).norm();
+	const Scalar ratio = fRot.norm() / (Kp * affine(X, G)).norm();
 	RecordProperty("KpRotation45_over_Kp0p1percentStrain", std::to_string(ratio));
 	// By hand, for n = (1,2,3)/√14: ε_ii = (cos45° - 1)(1 - n_i²) = (-0.272, -0.209, -0.105), and D_p gives
 	// σ_ii = λ(tr ε - ε_ii) = -λ(0.314, 0.377, 0.481), against σ = -λ(1e-3, 1e-3, 0) for the 0.1 % shortening. With
 	// ∫∇N_a dV = (±3e-4, ±2e-4, ±1.5e-4) m² on the box, |f_rot|/|f_0.1%| = √((0.314²·9 + 0.377²·4 + 0.481²·2.25)/
 	// (1e-6·13)) ≈ 390 (389.72 printed as the test property). Checked against the independent surface-integral
 	// forces to round-off (1e-12 relative, as above) and against the hand estimate to its 3 digits.
-	const double predicted = fRef.norm() / constantStressForces(X, stressTensor(Dp * strainVoigt(G))).norm();
+	const Scalar predicted = fRef.norm() / constantStressForces(X, stressTensor(Dp * strainVoigt(G))).norm();
 	EXPECT_NEAR(ratio, predicted, 1e-12 * predicted);
 	EXPECT_NEAR(ratio, 390, 1.0);
 	// Corotational: with R the same motion gives zero displacement, hence zero force.
@@ -643,11 +646,11 @@ TEST(Hex8, PolarRotationOfStretchedRotationsAndItsFallback)
 		const M3 Q = rotation(0.7 * k + 0.2, V3(1.0, 0.3 * k, -0.5));
 		const V3 stretch(1 + 0.4 * std::sin(3.0 * k), 1 + 0.3 * std::cos(5.0 * k), 1 - 0.35 * std::sin(7.0 * k));
 		const M3 U = Q * stretch.asDiagonal() * Q.transpose();
-		EXPECT_LE((rdem::polarRotation<double>(R * U) - R).cwiseAbs().maxCoeff(), 1e-12) << "case " << k;
+		EXPECT_LE((rdem::polarRotation<Scalar>(R * U) - R).cwiseAbs().maxCoeff(), 1e-12) << "case " << k;
 	}
 	M3 reflect = M3::Identity();
 	reflect(2, 2) = -1;
-	const M3 Rr = rdem::polarRotation<double>(reflect * rotation(0.4, V3(0, 1, 1)));
+	const M3 Rr = rdem::polarRotation<Scalar>(reflect * rotation(0.4, V3(0, 1, 1)));
 	EXPECT_NEAR(Rr.determinant(), 1.0, 1e-12);
 	EXPECT_LE((Rr.transpose() * Rr - M3::Identity()).cwiseAbs().maxCoeff(), 1e-12);
 }

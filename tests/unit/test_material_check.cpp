@@ -7,6 +7,7 @@
 /* Unit tests of pkg/rdem/math/MaterialCheck.hpp: admissible parameters give no message; each inadmissible value
    gives exactly one line naming the owner, the parameter and "must be". Pure logic, no tolerances. */
 #include <pkg/rdem/math/MaterialCheck.hpp>
+#include <tests/unit/Scalar.hpp>
 
 #include <gtest/gtest.h>
 
@@ -17,11 +18,13 @@
 
 namespace {
 
-namespace rdem = yade::rdem;
-using Params = rdem::MaterialParameters<double>;
+using rdem_test::Scalar;
 
-constexpr double inf = std::numeric_limits<double>::infinity();
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+namespace rdem = yade::rdem;
+using Params = rdem::MaterialParameters<Scalar>;
+
+constexpr Scalar inf = std::numeric_limits<Scalar>::infinity();
+constexpr Scalar nan = std::numeric_limits<Scalar>::quiet_NaN();
 
 // Concrete: E = 30 GPa, ν = 0.2, ρ = 2400 kg/m³, f_t = 3 MPa, c = 6 MPa, φ = 0.6 rad, h_n = h_s = 1 (critical).
 Params concrete() { return { 30e9, 0.2, 2400, 3e6, 6e6, 0.6, 1.0, 1.0 }; }
@@ -65,13 +68,13 @@ TEST(MaterialCheck, InfiniteStrengthsAreValid)
 
 struct BadCase {
 	const char*                  name;  // parameter name expected in the message
-	double                       value; // offending value
+	Scalar                       value; // offending value
 	std::function<void(Params&)> set;
 };
 
 TEST(MaterialCheck, EachInvalidValueIsNamed)
 {
-	const auto setter = [](double Params::*field, double v) { return [field, v](Params& p) { p.*field = v; }; };
+	const auto setter = [](Scalar Params::*field, Scalar v) { return [field, v](Params& p) { p.*field = v; }; };
 	const BadCase cases[] = {
 		{ "young", 0, setter(&Params::young, 0) },
 		{ "young", -1, setter(&Params::young, -1) },
