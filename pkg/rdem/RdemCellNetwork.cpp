@@ -113,13 +113,13 @@ void RdemCellNetwork::updateIntact(Scene* scene)
 	}
 }
 
-void RdemCellNetwork::updateStrains(Scene* scene)
+void RdemCellNetwork::updateStrains(Scene* scene, int threads)
 {
 	if (!refresh(scene)) return;
 	updateIntact(scene);
 	const long nBlocks = long(body.size()), nBonds = long(bond.size());
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(threads > 0 ? std::min(threads, omp_get_max_threads()) : omp_get_max_threads())
 #endif
 	for (long i = 0; i < nBlocks; ++i) {
 		rot[size_t(i)] = state[size_t(i)]->ori.toRotationMatrix();
@@ -130,7 +130,7 @@ void RdemCellNetwork::updateStrains(Scene* scene)
 	   their relative rotation, which the opening multiplies); and the moments about both centroids of a unit normal
 	   force at the face centre, for applyForces. */
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(threads > 0 ? std::min(threads, omp_get_max_threads()) : omp_get_max_threads())
 #endif
 	for (long k = 0; k < nBonds; ++k) {
 		const Bond&    b   = bond[size_t(k)];
@@ -144,7 +144,7 @@ void RdemCellNetwork::updateStrains(Scene* scene)
 	}
 	// Per cell: ε_d = Σ c_q u_n,q over its bonds along d, completed by the condensation; the crack scale never increases.
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(threads > 0 ? std::min(threads, omp_get_max_threads()) : omp_get_max_threads())
 #endif
 	for (long i = 0; i < nBlocks; ++i) {
 		if (!hasCell[size_t(i)]) continue;
@@ -164,7 +164,7 @@ void RdemCellNetwork::updateStrains(Scene* scene)
 	}
 }
 
-void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released)
+void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released, int threads)
 {
 	if (!refresh(scene)) return;
 	const long nBlocks     = long(body.size());
@@ -174,7 +174,7 @@ void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energ
 	      of its bonds' shear springs (RdemPhys::offsetGrad, written by the law), mapped to the axes with bonds by the
 	      condensation (RdemState::cellCondensation). */
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static) reduction(+ : e, rel)
+#pragma omp parallel for schedule(static) reduction(+ : e, rel) num_threads(threads > 0 ? std::min(threads, omp_get_max_threads()) : omp_get_max_threads())
 #endif
 	for (long i = 0; i < nBlocks; ++i) {
 		if (!hasCell[size_t(i)]) {
@@ -204,7 +204,7 @@ void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energ
 	      normal and on body 1 against it, at the face centre; summed block by block in the fixed order of the lists. */
 	RdemForceAssembler::prepareDirectSums(scene, long(scene->bodies->size()));
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(threads > 0 ? std::min(threads, omp_get_max_threads()) : omp_get_max_threads())
 #endif
 	for (long i = 0; i < nBlocks; ++i) {
 		if (first[size_t(i)] == first[size_t(i) + 1]) continue;

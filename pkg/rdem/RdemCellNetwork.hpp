@@ -24,12 +24,12 @@ public:
 	/// Rebuilds the arrays if the scene changed since the last call; false if there is no cell.
 	bool refresh(Scene* scene);
 	/// Before the law: poses, openings u_n = n·(P₂ - P₁) at the face centres, crack scales, RdemState::strain,
-	/// ::cellScale and ::cellStress of every cell.
-	void updateStrains(Scene* scene);
+	/// ::cellScale and ::cellStress of every cell. On `threads` OpenMP threads (the calling engine's ompThreads, ≤ 0: all).
+	void updateStrains(Scene* scene, int threads);
 	/// After the law: ∂W/∂ε of every cell (its elastic stress plus the reaction of its bonds' offset correction), then the
 	/// normal force -Σ c ∂W/∂ε of every bond at its face centre, added to the blocks in a fixed order. Adds the cells'
-	/// energy ½ s εᵀKε and the energy released by a drop of s [J].
-	void applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released);
+	/// energy ½ s εᵀKε and the energy released by a drop of s [J]. Threads as for updateStrains.
+	void applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released, int threads);
 	/// Per body id, the Gershgorin bound of the squared eigenfrequency the cells add [1/s²] (see the definition).
 	vector<Real> omega2Bound(Scene* scene);
 	/// Adds the cells' linear stiffness ½ s εᵀ CᵀKC ε on the bond openings at the current poses to K (RdemTimeStepper);

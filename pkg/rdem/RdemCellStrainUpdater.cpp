@@ -15,7 +15,7 @@ CREATE_LOGGER(RdemCellStrainUpdater);
 void RdemCellStrainUpdater::action()
 {
 	// The cells belong to the scene's RdemPoissonEngine, which applies their forces after the loop.
-	if (RdemPoissonEngine* poisson = RdemPoissonEngine::of(scene)) poisson->cellNetwork().updateStrains(scene);
+	if (RdemPoissonEngine* poisson = RdemPoissonEngine::of(scene)) poisson->cellNetwork().updateStrains(scene, ompThreads);
 }
 
 } // namespace yade

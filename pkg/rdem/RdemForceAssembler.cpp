@@ -71,7 +71,7 @@ void RdemForceAssembler::action()
 	   (in cubes beyond the last-level cache, the ones it wrote first are gone by then); and the next step's interaction
 	   loop starts where this pass ends. The order of each body's own sum is unchanged. */
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
 #endif
 	for (long r = 0; r < nBodies; ++r) {
 		const long id = nBodies - 1 - r;

@@ -162,7 +162,7 @@ void RdemPoissonEngine::hex8Action()
 	const bool trackEnergy = scene->trackEnergy;
 	const long nBodies     = long(nodeFirst.size()) - 1;
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
 #endif
 	for (long b = 0; b < nBodies; ++b) {
 		const auto& body = Body::byId(Body::id_t(b), scene);
@@ -170,7 +170,7 @@ void RdemPoissonEngine::hex8Action()
 	}
 	Real energy = 0, released = 0; // Σ ½ s uᵀK_p u of the elements; ½ (s_prev - s) uᵀK_p u lost to cracks in this step [J]
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static) reduction(+ : energy, released)
+#pragma omp parallel for schedule(static) reduction(+ : energy, released) num_threads(ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
 #endif
 	for (long e = 0; e < nEl; ++e) {
 		const Real s = scale[size_t(e)], sPrev = scalePrev[size_t(e)];
@@ -197,7 +197,7 @@ void RdemPoissonEngine::hex8Action()
 	}
 	RdemForceAssembler::prepareDirectSums(scene, nBodies);
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
 #endif
 	for (long b = 0; b < nBodies; ++b) {
 		if (nodeFirst[size_t(b)] == nodeFirst[size_t(b) + 1]) continue;
@@ -279,7 +279,7 @@ int RdemPoissonEngine::nCells() const
 void RdemPoissonEngine::cellAction()
 {
 	Real energy = 0, released = 0;
-	cells.applyForces(scene, releaseOnCrack, energy, released);
+	cells.applyForces(scene, releaseOnCrack, energy, released, ompThreads);
 	if (scene->trackEnergy && cells.nCells() > 0) {
 		scene->energy->add(energy, "rdemPoisson", energyIx, /*reset every step*/ true);
 		scene->energy->add(released, "rdemPoissonRelease", releaseIx, /*reset every step*/ false);
