@@ -44,23 +44,25 @@ bool rdem::BodyTravel::currentFor(const Scene& scene) const { return iter == sce
 
 void RdemContactGate::updateTravel()
 {
-	rdem::BodyTravel& t       = *travel;
-	const long        nBodies = long(scene->bodies->size());
-	bool              restart = t.iter != scene->iter - 1 || long(t.travel.size()) != nBodies;
+	rdem::BodyTravel& t          = *travel;
+	const long        nBodiesNow = long(scene->bodies->size());
+	bool              restart    = t.iter != scene->iter - 1 || long(t.travel.size()) != nBodiesNow;
 	if (restart) {
-		t.travel.assign(size_t(nBodies), 0);
-		t.body.assign(size_t(nBodies), nullptr);
-		t.shape.assign(size_t(nBodies), nullptr);
-		t.pos.resize(size_t(nBodies));
-		t.ori.resize(size_t(nBodies));
-		t.radius.assign(size_t(nBodies), 0);
+		t.travel.assign(size_t(nBodiesNow), 0);
+		t.body.assign(size_t(nBodiesNow), nullptr);
+		t.shape.assign(size_t(nBodiesNow), nullptr);
+		t.pos.resize(size_t(nBodiesNow));
+		t.ori.resize(size_t(nBodiesNow));
+		t.radius.assign(size_t(nBodiesNow), 0);
 	}
 	// A body or shape that is not the one seen in the last step (erased, replaced, first step) restarts the record.
 	bool replaced = false;
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static) reduction(|| : replaced)
+#pragma omp parallel for schedule(static) reduction(||                                                                                                         \
+                                                    : replaced)                                                                                                \
+        num_threads(ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
 #endif
-	for (long id = 0; id < nBodies; ++id) {
+	for (long id = 0; id < nBodiesNow; ++id) {
 		const Body* b = Body::byId(Body::id_t(id), scene).get();
 		if (!b) {
 			replaced           = replaced || t.body[size_t(id)];
