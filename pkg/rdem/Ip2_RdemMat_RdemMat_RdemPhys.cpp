@@ -4,8 +4,8 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
-#include <core/InteractionLoop.hpp>
 #include <core/Scene.hpp>
+#include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemJoint.hpp>
@@ -32,11 +32,8 @@ void Ip2_RdemMat_RdemMat_RdemPhys::postLoad(Ip2_RdemMat_RdemMat_RdemPhys&)
 
 rdem::SpringModulus Ip2_RdemMat_RdemMat_RdemPhys::formulationOf(const Scene* scene)
 {
-	for (const auto& e : scene->engines)
-		if (const auto* loop = dynamic_cast<const InteractionLoop*>(e.get()))
-			for (const auto& f : loop->physDispatcher->functors)
-				if (const auto* ip2 = dynamic_cast<const Ip2_RdemMat_RdemMat_RdemPhys*>(f.get())) return ip2->springModulus();
-	return rdem::SpringModulus::Paper;
+	const auto* ip2 = rdem::findLoopFunctor<Ip2_RdemMat_RdemMat_RdemPhys>(scene);
+	return ip2 ? ip2->springModulus() : rdem::SpringModulus::Paper;
 }
 
 Vector2r Ip2_RdemMat_RdemMat_RdemPhys::normalCompliances(const RdemMat& a, const RdemMat& b, const RdemGeom& g, rdem::SpringModulus modulus)

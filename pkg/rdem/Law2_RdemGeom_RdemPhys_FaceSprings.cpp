@@ -4,15 +4,17 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
-#include <core/InteractionLoop.hpp>
 #include <core/Scene.hpp>
+#include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
+#include <pkg/rdem/RdemForceAssembler.hpp>
 #include <pkg/rdem/RdemState.hpp>
 #include <pkg/rdem/math/BlockCells.hpp>
 #include <pkg/rdem/math/FaceSprings.hpp>
 #include <pkg/rdem/math/Softening.hpp>
 #include <pkg/rdem/math/SortedKeys.hpp>
+#include <algorithm>
 #include <limits>
 #include <type_traits>
 #include <utility>
@@ -20,6 +22,7 @@
 namespace yade {
 
 YADE_PLUGIN((Law2_RdemGeom_RdemPhys_FaceSprings));
+CREATE_LOGGER(Law2_RdemGeom_RdemPhys_FaceSprings);
 
 /* How to read this file: Law2_RdemGeom_RdemPhys_FaceSprings::go (at the end) sends a bond to bondForces and a contact of
    blocks that are not bonded to sampledContactForces. A bond's segments run one of three laws each step: restoringSpring
@@ -407,15 +410,7 @@ namespace {
 	}
 
 	/// Calls f(law) for every Law2_RdemGeom_RdemPhys_FaceSprings in the InteractionLoops of the scene.
-	template <class F> void forEachLaw(const Scene* scene, F f)
-	{
-		for (const auto& e : scene->engines) {
-			const auto* loop = dynamic_cast<const InteractionLoop*>(e.get());
-			if (!loop) continue;
-			for (const auto& functor : loop->lawDispatcher->functors)
-				if (auto* law = dynamic_cast<Law2_RdemGeom_RdemPhys_FaceSprings*>(functor.get())) f(*law);
-		}
-	}
+	template <class F> void forEachLaw(const Scene* scene, F f) { rdem::forEachLoopFunctor<Law2_RdemGeom_RdemPhys_FaceSprings>(scene, f); }
 } // namespace
 
 Vector2r Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(
@@ -444,6 +439,39 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::totalStressOf(const Scene* scene)
 	bool total = false;
 	forEachLaw(scene, [&](const Law2_RdemGeom_RdemPhys_FaceSprings& law) { total = total || law.totalStress; });
 	return total;
+}
+
+bool Law2_RdemGeom_RdemPhys_FaceSprings::assemblerFollows(const Scene* scene)
+{
+	const long loop = rdem::engineIndex<InteractionLoop>(scene);
+	for (size_t i = size_t(std::max(loop, 0L)); i < scene->engines.size(); ++i)
+		if (dynamic_cast<const RdemForceAssembler*>(scene->engines[i].get())) return true;
+	return false;
+}
+
+void Law2_RdemGeom_RdemPhys_FaceSprings::checkForceAssembly(const Scene* scene)
+{
+	bool defers = false;
+	forEachLaw(scene, [&](const Law2_RdemGeom_RdemPhys_FaceSprings& law) { defers = defers || law.deferForces; });
+	if (defers && !assemblerFollows(scene))
+		throw std::runtime_error(
+		        "Law2_RdemGeom_RdemPhys_FaceSprings.deferForces is True but no RdemForceAssembler follows the InteractionLoop in O.engines, "
+		        "so nothing would apply the deferred forces: put RdemForceAssembler() right after the InteractionLoop (rdem.engines() does), "
+		        "or set deferForces=False");
+}
+
+bool Law2_RdemGeom_RdemPhys_FaceSprings::deferredApplied()
+{
+	if (!deferForces) return false;
+	const long iter    = scene->iter;
+	const long checked = assemblyChecked.load(std::memory_order_relaxed);
+	if (checked >= 0 && checked / 2 == iter) return checked % 2 == 1;
+	// First interaction of the step (possibly on several threads at once: the scan only reads the engine list).
+	const bool follows = assemblerFollows(scene);
+	if (!follows && !assemblyWarned.exchange(true))
+		LOG_ERROR("deferForces is True but no RdemForceAssembler follows the InteractionLoop: forces are added directly instead");
+	assemblyChecked.store(2 * iter + (follows ? 1 : 0), std::memory_order_relaxed);
+	return follows;
 }
 
 bool Law2_RdemGeom_RdemPhys_FaceSprings::takeActiveSetChanged(const Scene* scene)
@@ -486,7 +514,7 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::applyForces(const Interaction& I, RdemP
 	p.force = f2;
 	// Body 1 receives -F at every point C: Σ (C - x₁) × (-F) = -(t₂ + (x₂ - x₁) × f₂).
 	const Vector3r t1 = -(t2 + dx.cross(f2));
-	if (deferForces) {
+	if (deferredApplied()) {
 		if (p.forceIter != scene->iter - 1) activeSetChanges += 1; // new, or back after a pause: not in the assembler's lists
 		p.torque1   = t1;
 		p.torque2   = t2;

@@ -11,6 +11,7 @@
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
 #include <pkg/rdem/math/FaceSprings.hpp>
+#include <atomic>
 
 namespace yade {
 
@@ -34,6 +35,13 @@ public:
 	dashpotCap(const State& s1, const Vector3r& x1, const State& s2, const Vector3r& x2, const Vector3r& C, const Vector3r& n, Real share, Real dt);
 	/// Whether a Law2_RdemGeom_RdemPhys_FaceSprings of the scene has totalStress (RdemPoissonEngine::build then needs cells).
 	static bool totalStressOf(const Scene* scene);
+	/// Whether an RdemForceAssembler follows the first InteractionLoop in scene->engines (it applies deferred forces).
+	static bool assemblerFollows(const Scene* scene);
+	/// std::runtime_error naming deferForces and RdemForceAssembler if a law of the scene defers its forces and no
+	/// assembler follows the loop. Called by the plugin's engines, outside the interaction loop: the law itself cannot
+	/// throw from inside YADE's parallel loop (an exception leaving an OpenMP region ends the program), and in such a
+	/// step adds its forces directly instead (deferredApplied), so that no force is lost in any case.
+	static void checkForceAssembly(const Scene* scene);
 	/// Number of interactions that started or stopped leaving deferred forces since the last takeActiveSetChanged.
 	OpenMPAccumulator<int> activeSetChanges;
 	// clang-format off
@@ -46,7 +54,7 @@ public:
 *Softening springs* (bonds made with :yref:`Ip2_RdemMat_RdemMat_RdemPhys::softening`): in place of the breakage of eqs. 15-16, a tension cut-off with linear softening of $f_t$ (fracture energy $G_f^I$), a Coulomb surface whose cohesion softens with $G_f^{II}$ towards residual friction, and a compression cap; the segment breaks when its strengths are gone ($\xi=1$), so that the energy dissipated per unit crack area is $G_f$ whatever the block size (doc/theory.md §2.1, after Lourenço & Rots [LourencoRots1997]_).
 
 With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemElastic`` (springs, current value), ``rdemDashpot``, ``rdemFriction`` and ``rdemBondBreak`` (cumulated); with softening bonds also ``rdemFractureTension``, ``rdemFractureShear`` and ``rdemCrushing`` (cumulated).)""",
-		((bool,deferForces,false,,"Leave the forces and torques in :yref:`RdemPhys` (``force``, ``torque1``, ``torque2``) for :yref:`RdemForceAssembler`, which sums them per body in a fixed order, instead of adding them to the bodies in the order of the interaction container (which ``O.load`` and the collider change; ``rdem.engines()`` sets it)."))
+		((bool,deferForces,false,,"Leave the forces and torques in :yref:`RdemPhys` (``force``, ``torque1``, ``torque2``) for :yref:`RdemForceAssembler`, which sums them per body in a fixed order, instead of adding them to the bodies in the order of the interaction container (which ``O.load`` and the collider change; ``rdem.engines()`` sets it). Needs an :yref:`RdemForceAssembler` after the :yref:`InteractionLoop`: without it the plugin's engines refuse to run (RuntimeError), and the law, which cannot throw from inside YADE's parallel loop, adds its forces directly."))
 		((bool,totalStress,false,,"Failure criteria (eqs. 15-16) on the total normal stress of the face: the springs' $\\sigma$ plus the normal stress the Poisson cells exert on it, $(c_1S_1+c_2S_2)/(w_nA)$ (:yref:`RdemState::cellStress`, :yref:`RdemPhys::cellCoef1`; doc/theory.md §5.6); it is the continuum's $\\sigma_{nn}$ of the face, zero on the head joints of a wall in uniform vertical compression. Needs Poisson cells (consistent formulation, :yref:`RdemPoissonEngine::elements` ``'cells'`` or ``'auto'`` on a layout that is not a grid). False (default): the springs' $\\sigma$ alone, the paper's criterion, whose lateral springs carry $M\\nu\\sigma/E$ in tension under uniaxial compression (the paper's splitting mechanism)."))
 		((OpenMPAccumulator<int>,tensionBreaks,,Attr::readonly,"Number of restoring springs broken in tension (eq. 15) so far."))
 		((OpenMPAccumulator<int>,shearBreaks,,Attr::readonly,"Number of restoring springs broken in shear (eq. 16) so far."))
@@ -60,6 +68,7 @@ With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemElastic`` (springs, current
 	);
 	// clang-format on
 	FUNCTOR2D(RdemGeom, RdemPhys);
+	DECLARE_LOGGER;
 
 private:
 	/// The interaction's force f₂ on body 2 and moment t₂ about its centroid, and their reaction on body 1 (dx = x₂ - x₁):
@@ -67,6 +76,10 @@ private:
 	void applyForces(const Interaction& I, RdemPhys& p, const Vector3r& f2, const Vector3r& t2, const Vector3r& dx);
 	/// Adds one interaction's energies of this step to O.energy.
 	void bookEnergies(const rdem::SpringEnergies<Real>& e);
+	/// deferForces, and an RdemForceAssembler will apply the forces in this step (checked once per step).
+	bool              deferredApplied();
+	std::atomic<long> assemblyChecked { -1 }; // 2·iter + (assembler follows) of the last check; -1: none yet
+	std::atomic<bool> assemblyWarned { false };
 };
 REGISTER_SERIALIZABLE(Law2_RdemGeom_RdemPhys_FaceSprings);
 

@@ -7,6 +7,7 @@
 #include <core/InteractionLoop.hpp>
 #include <core/Scene.hpp>
 #include <pkg/common/Collider.hpp>
+#include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
@@ -88,10 +89,7 @@ void RdemContactGate::updateTravel()
 		t.epoch = ++lastEpoch;
 	}
 	t.iter = scene->iter;
-	for (const auto& e : scene->engines)
-		if (const auto* loop = dynamic_cast<const InteractionLoop*>(e.get()))
-			for (const auto& f : loop->geomDispatcher->functors)
-				if (auto* ig2 = dynamic_cast<Ig2_RdemBlock_RdemBlock_RdemGeom*>(f.get())) ig2->travel = travel;
+	rdem::forEachLoopFunctor<Ig2_RdemBlock_RdemBlock_RdemGeom>(scene, [&](Ig2_RdemBlock_RdemBlock_RdemGeom& ig2) { ig2.travel = travel; });
 }
 
 string RdemContactGate::topologyReason() const
@@ -127,12 +125,12 @@ string RdemContactGate::topologyReason() const
 
 void RdemContactGate::setColliders(bool deadFlag) const
 {
-	for (const auto& e : scene->engines)
-		if (dynamic_cast<Collider*>(e.get())) e->dead = deadFlag;
+	rdem::forEachEngine<Collider>(scene, [&](Collider& collider) { collider.dead = deadFlag; });
 }
 
 void RdemContactGate::action()
 {
+	Law2_RdemGeom_RdemPhys_FaceSprings::checkForceAssembly(scene); // before the loop: refused before forces are made
 	if (open) {
 		// Latched (possibly set by the user or restored by O.load): make sure the collider runs.
 		if (reason.empty()) {

@@ -6,6 +6,7 @@
 *************************************************************************/
 #include <core/Scene.hpp>
 #include <pkg/dem/NewtonIntegrator.hpp>
+#include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/RdemGroundShaker.hpp>
 #include <algorithm>
 #include <stdexcept>
@@ -21,12 +22,14 @@ void RdemGroundShaker::postLoad(RdemGroundShaker&)
 		throw std::invalid_argument("RdemGroundShaker.mode = '" + mode + "': must be 'prescribed' or 'inertial'");
 	for (size_t k = 1; k < times.size(); ++k)
 		if (!(times[k] > times[k - 1]))
-			throw std::invalid_argument("RdemGroundShaker.times: must increase (times[" + std::to_string(k) + "] = " + std::to_string(times[k])
-			                            + " after " + std::to_string(times[k - 1]) + ")");
+			throw std::invalid_argument(
+			        "RdemGroundShaker.times: must increase (times[" + std::to_string(k) + "] = " + std::to_string(times[k]) + " after "
+			        + std::to_string(times[k - 1]) + ")");
 	for (const auto* v : { &accelerations, &velocities, &displacements })
 		if (!v->empty() && v->size() != times.size() && !times.empty())
-			throw std::invalid_argument("RdemGroundShaker: accelerations, velocities and displacements must have as many entries as times ("
-			                            + std::to_string(times.size()) + ")");
+			throw std::invalid_argument(
+			        "RdemGroundShaker: accelerations, velocities and displacements must have as many entries as times ("
+			        + std::to_string(times.size()) + ")");
 }
 
 Vector3r RdemGroundShaker::interpolate(const vector<Vector3r>& v, Real t, bool holdLast) const
@@ -52,13 +55,12 @@ void RdemGroundShaker::action()
 {
 	const Real t = scene->time, dt = scene->dt;
 	if (mode == "inertial") {
-		for (const auto& e : scene->engines)
-			if (auto* newton = dynamic_cast<NewtonIntegrator*>(e.get())) newton->gravity = gravity - accelerationAt(t);
+		rdem::forEachEngine<NewtonIntegrator>(scene, [&](NewtonIntegrator& newton) { newton.gravity = gravity - accelerationAt(t); });
 		return;
 	}
 	// Velocity over this step that puts the base on the ground displacement at its end (exact at every step).
 	const Vector3r v    = (displacementAt(t + dt) - displacementAt(t)) / dt;
-	Real           work = 0; // done on the base by the rest of the scene over this step [J]
+	Real           work = 0;                      // done on the base by the rest of the scene over this step [J]
 	if (scene->trackEnergy) scene->forces.sync(); // NewtonIntegrator, next, syncs too: nothing more is added in between
 	for (int id : ids) {
 		const auto& b = Body::byId(Body::id_t(id), scene);

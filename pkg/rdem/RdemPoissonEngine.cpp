@@ -7,6 +7,7 @@
 #include <core/InteractionLoop.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
+#include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
@@ -68,7 +69,7 @@ void RdemPoissonEngine::prepare()
 	stiffness.clear();
 	stiffnessOf.assign(nEl, 0);
 	std::map<vector<long long>, size_t> distinct;
-	const Real lambdaMax = lambda.empty() ? Real(0) : *std::max_element(lambda.begin(), lambda.end());
+	const Real                          lambdaMax = lambda.empty() ? Real(0) : *std::max_element(lambda.begin(), lambda.end());
 	for (size_t e = 0; e < nEl; ++e) {
 		const Real        q = 1e-10 * (refPos[8 * e + 7] - refPos[8 * e]).norm();
 		vector<long long> key;
@@ -102,7 +103,8 @@ void RdemPoissonEngine::prepare()
 	scalesBroken = -1;
 	for (size_t e = 0; e < nEl; ++e)
 		for (size_t k = 0; k < 12; ++k)
-			bonds[12 * e + k] = scene->interactions->find(nodes[8 * e + size_t(rdem::hex8Edges[k][0])], nodes[8 * e + size_t(rdem::hex8Edges[k][1])]);
+			bonds[12 * e + k]
+			        = scene->interactions->find(nodes[8 * e + size_t(rdem::hex8Edges[k][0])], nodes[8 * e + size_t(rdem::hex8Edges[k][1])]);
 	LOG_DEBUG(nEl << " Poisson elements share " << stiffness.size() << " distinct stiffness matrices");
 }
 
@@ -142,6 +144,7 @@ vector<Real> RdemPoissonEngine::elementScales()
 
 void RdemPoissonEngine::action()
 {
+	Law2_RdemGeom_RdemPhys_FaceSprings::checkForceAssembly(scene);
 	if (nElements() > 0) hex8Action();
 	cellAction();
 }
@@ -157,7 +160,7 @@ void RdemPoissonEngine::hex8Action()
 		scalesIntrs  = nIntrs;
 	}
 	const vector<Real>& scale = scales;
-	const long         nEl   = long(nElements());
+	const long          nEl   = long(nElements());
 	if (scalePrev.size() != scale.size()) scalePrev = scale;
 	const bool trackEnergy = scene->trackEnergy;
 	const long nBodies     = long(nodeFirst.size()) - 1;
@@ -286,11 +289,6 @@ void RdemPoissonEngine::cellAction()
 	}
 }
 
-RdemPoissonEngine* RdemPoissonEngine::of(const Scene* scene)
-{
-	for (const auto& e : scene->engines)
-		if (auto* p = dynamic_cast<RdemPoissonEngine*>(e.get())) return p;
-	return nullptr;
-}
+RdemPoissonEngine* RdemPoissonEngine::of(const Scene* scene) { return rdem::findEngine<RdemPoissonEngine>(scene); }
 
 } // namespace yade

@@ -10,6 +10,7 @@
 #include <core/InteractionLoop.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
+#include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
@@ -30,7 +31,7 @@
 namespace yade {
 
 namespace {
-	constexpr Real sameSideCos    = 0.99; // two bond normals within ~8° point to the same side of a block
+	constexpr Real sameSideCos = 0.99; // two bond normals within ~8° point to the same side of a block
 
 	Body::id_t next(const std::map<Body::id_t, vector<std::pair<Body::id_t, Vector3r>>>& nbr, Body::id_t b, const Vector3r& dir)
 	{
@@ -128,8 +129,8 @@ string RdemPoissonEngine::gridDefect(const Neighbours& nbr) const
 			for (size_t j = i + 1; j < bn.second.size(); ++j)
 				if (bn.second[i].second.dot(bn.second[j].second) > sameSideCos) {
 					std::ostringstream msg;
-					msg << "block " << bn.first << " has two bonded neighbours on one side (blocks " << bn.second[i].first << " and " << bn.second[j].first
-					    << ", e.g. running-bond masonry)";
+					msg << "block " << bn.first << " has two bonded neighbours on one side (blocks " << bn.second[i].first << " and "
+					    << bn.second[j].first << ", e.g. running-bond masonry)";
 					return msg.str();
 				}
 	return "";
@@ -137,7 +138,7 @@ string RdemPoissonEngine::gridDefect(const Neighbours& nbr) const
 
 void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 {
-	scene = Omega::instance().getScene().get();
+	scene                                 = Omega::instance().getScene().get();
 	const std::set<Body::id_t> ids        = collectBlocks(idsIn);
 	const bool                 consistent = Ip2_RdemMat_RdemMat_RdemPhys::formulationOf(scene) == rdem::SpringModulus::Consistent;
 	// The paper's springs E/(1-ν²) plus D_p are an indefinite tensor for ν > (3-√5)/2 ≈ 0.382 (doc/theory.md §5.3): an
@@ -152,18 +153,23 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 				        + ", above 0.382 where the paper formulation (springs E/(1-nu^2) plus D_p) is not positive definite and a run"
 				          " blows up; use the consistent formulation, rdem.engines(poisson='consistent')");
 		}
-	const Neighbours nbr    = bondedNeighbours(ids);
-	const string     defect = gridDefect(nbr);
+	const Neighbours nbr         = bondedNeighbours(ids);
+	const string     defect      = gridDefect(nbr);
 	const bool       cellsWanted = elements == "cells" || (elements == "auto" && !defect.empty());
 	if (!cellsWanted && !defect.empty())
-		throw std::invalid_argument("RdemPoissonEngine.build: " + defect + "; the paper's hexahedra need a grid of 2x2x2 groups (one bonded neighbour per face). Poisson cells work on any layout: elements='cells' (or 'auto') with the consistent formulation");
+		throw std::invalid_argument(
+		        "RdemPoissonEngine.build: " + defect
+		        + "; the paper's hexahedra need a grid of 2x2x2 groups (one bonded neighbour per face). Poisson cells work on any layout: "
+		          "elements='cells' (or 'auto') with the consistent formulation");
 	if (!cellsWanted && Law2_RdemGeom_RdemPhys_FaceSprings::totalStressOf(scene))
-		throw std::invalid_argument("RdemPoissonEngine.build: Law2_RdemGeom_RdemPhys_FaceSprings.totalStress needs the Poisson normal stress of every bond, "
-		                            "which the cells give and the paper's hexahedra do not: elements = 'cells'");
+		throw std::invalid_argument(
+		        "RdemPoissonEngine.build: Law2_RdemGeom_RdemPhys_FaceSprings.totalStress needs the Poisson normal stress of every bond, "
+		        "which the cells give and the paper's hexahedra do not: elements = 'cells'");
 	if (cellsWanted && !consistent)
 		throw std::invalid_argument(
 		        "RdemPoissonEngine.build: " + (defect.empty() ? string("elements = 'cells'") : defect)
-		        + "; Poisson cells, which work on any layout, belong to the consistent formulation (the paper's hexahedra need a grid of 2x2x2 groups): "
+		        + "; Poisson cells, which work on any layout, belong to the consistent formulation (the paper's hexahedra need a grid of 2x2x2 "
+		          "groups): "
 		          "Ip2_RdemMat_RdemMat_RdemPhys.formulation = 'consistent', e.g. rdem.engines(poisson='consistent')");
 	nodes.clear();
 	refPos.clear();
@@ -191,9 +197,9 @@ void RdemPoissonEngine::buildHex8(const std::set<Body::id_t>& ids, const Neighbo
 	std::set<std::array<Body::id_t, 8>> seen;
 	int                                 incomplete = 0;
 	for (Body::id_t b : ids) {
-		const Matrix3r                  R = Body::byId(b, scene)->state->ori.toRotationMatrix();
-		const std::array<Vector3r, 3>   e { R.col(0), R.col(1), R.col(2) };
-		std::array<Body::id_t, 8> n;
+		const Matrix3r                R = Body::byId(b, scene)->state->ori.toRotationMatrix();
+		const std::array<Vector3r, 3> e { R.col(0), R.col(1), R.col(2) };
+		std::array<Body::id_t, 8>     n;
 		n[0] = b;
 		n[1] = next(nbr, b, e[0]);
 		n[2] = next(nbr, b, e[1]);
@@ -216,8 +222,8 @@ void RdemPoissonEngine::buildHex8(const std::set<Body::id_t>& ids, const Neighbo
 			if (found < 0) complete = false;
 			else if (found != c) {
 				std::ostringstream msg;
-				msg << "RdemPoissonEngine.build: blocks around block " << b << " do not close into a 2x2x2 group (block " << a << " is bonded to " << found
-				    << " where the grid expects " << c << ")";
+				msg << "RdemPoissonEngine.build: blocks around block " << b << " do not close into a 2x2x2 group (block " << a
+				    << " is bonded to " << found << " where the grid expects " << c << ")";
 				throw std::invalid_argument(msg.str());
 			}
 		}
@@ -232,7 +238,8 @@ void RdemPoissonEngine::buildHex8(const std::set<Body::id_t>& ids, const Neighbo
 	if (nodes.empty())
 		throw std::invalid_argument(
 		        "RdemPoissonEngine.build: no 2x2x2 group of bonded blocks among the " + std::to_string(ids.size())
-		        + " blocks given (bond them first, e.g. with rdem.bond; for other layouts use Poisson cells, elements='cells', with the consistent formulation)");
+		        + " blocks given (bond them first, e.g. with rdem.bond; for other layouts use Poisson cells, elements='cells', with the consistent "
+		          "formulation)");
 	setHex8SpringWeights(ids, nbr, consistent);
 	LOG_INFO(nElements() << " Poisson elements on " << ids.size() << " blocks (" << incomplete << " groups skipped: a bond missing)");
 }
@@ -284,16 +291,17 @@ void RdemPoissonEngine::setHex8SpringWeights(const std::set<Body::id_t>& ids, co
 		p.weightNormal = p.weightShear = 1;
 		if (!consistent) return;
 		const Body::id_t a = I.getId1(), b = I.getId2();
-		const Matrix3r   Ra   = Body::byId(a, scene)->state->ori.toRotationMatrix();
-		const Vector3r   nrm  = Ra * g.segNormal1;
-		const Real       L    = (Body::byId(b, scene)->state->pos - Body::byId(a, scene)->state->pos).dot(nrm);
-		const Real       extA = (next(nbr, a, -nrm) < 0 && !prescribed(scene, a, nrm)) ? halfAlong(scene, a, nrm) : Real(0);
-		const Real       extB = (next(nbr, b, nrm) < 0 && !prescribed(scene, b, nrm)) ? halfAlong(scene, b, nrm) : Real(0);
+		const Matrix3r   Ra    = Body::byId(a, scene)->state->ori.toRotationMatrix();
+		const Vector3r   nrm   = Ra * g.segNormal1;
+		const Real       L     = (Body::byId(b, scene)->state->pos - Body::byId(a, scene)->state->pos).dot(nrm);
+		const Real       extA  = (next(nbr, a, -nrm) < 0 && !prescribed(scene, a, nrm)) ? halfAlong(scene, a, nrm) : Real(0);
+		const Real       extB  = (next(nbr, b, nrm) < 0 && !prescribed(scene, b, nrm)) ? halfAlong(scene, b, nrm) : Real(0);
 		Real             cross = 1;
 		for (int k = 0; k < 3; ++k) {
 			const Vector3r t = Ra.col(k);
 			if (math::abs(t.dot(nrm)) > sameSideCos) continue;
-			cross *= (dualExtent(scene, nbr, a, t) / (2 * halfAlong(scene, a, t)) + dualExtent(scene, nbr, b, t) / (2 * halfAlong(scene, b, t))) / 2;
+			cross *= (dualExtent(scene, nbr, a, t) / (2 * halfAlong(scene, a, t)) + dualExtent(scene, nbr, b, t) / (2 * halfAlong(scene, b, t)))
+			        / 2;
 		}
 		p.weightNormal = (L + extA + extB) / L * cross;
 		p.weightShear  = cross;
@@ -319,18 +327,15 @@ void RdemPoissonEngine::clearCells(const std::set<Body::id_t>& ids)
 
 void RdemPoissonEngine::buildCells(const std::set<Body::id_t>& ids)
 {
-	bool updaterFirst = false; // an RdemCellStrainUpdater before the InteractionLoop
-	for (const auto& e : scene->engines) {
-		if (dynamic_cast<RdemCellStrainUpdater*>(e.get())) updaterFirst = true;
-		if (dynamic_cast<InteractionLoop*>(e.get())) break;
-	}
-	if (!updaterFirst)
+	const long updater = rdem::engineIndex<RdemCellStrainUpdater>(scene), loop = rdem::engineIndex<InteractionLoop>(scene);
+	if (updater < 0 || (loop >= 0 && updater > loop))
 		throw std::invalid_argument("RdemPoissonEngine.build: Poisson cells need an RdemCellStrainUpdater before the InteractionLoop in O.engines "
 		                            "(rdem.engines(poisson='consistent') places it)");
 	for (Body::id_t id : ids)
 		if (!dynamic_cast<RdemState*>(Body::byId(id, scene)->state.get()))
-			throw std::invalid_argument("RdemPoissonEngine.build: block " + std::to_string(id)
-			                            + " has no RdemState; make blocks with rdem.block, or give them RdemMat.newAssocState() as state");
+			throw std::invalid_argument(
+			        "RdemPoissonEngine.build: block " + std::to_string(id)
+			        + " has no RdemState; make blocks with rdem.block, or give them RdemMat.newAssocState() as state");
 	// Every bond seen from each of its blocks (rdem::CellBond): axis, side, area, the block's share of the opening
 	// (series compliances with the joint, eq. 12), centroid distance.
 	struct Side {
@@ -341,15 +346,15 @@ void RdemPoissonEngine::buildCells(const std::set<Body::id_t>& ids)
 	std::map<Body::id_t, rdem::CellInput<Real>> input;
 	vector<Side>                                sides;
 	forEachBond(scene, ids, [&](const Interaction& I, const RdemGeom& g, RdemPhys& p) {
-		const auto& ma = *static_cast<RdemMat*>(Body::byId(I.getId1(), scene)->material.get());
-		const auto& mb = *static_cast<RdemMat*>(Body::byId(I.getId2(), scene)->material.get());
-		const Vector2r C = Ip2_RdemMat_RdemMat_RdemPhys::normalCompliances(ma, mb, g, rdem::SpringModulus::Consistent); // the share of each side
-		const Real  area = g.segmentArea() * Real(g.nSegments());
+		const auto&    ma   = *static_cast<RdemMat*>(Body::byId(I.getId1(), scene)->material.get());
+		const auto&    mb   = *static_cast<RdemMat*>(Body::byId(I.getId2(), scene)->material.get());
+		const Vector2r C    = Ip2_RdemMat_RdemMat_RdemPhys::normalCompliances(ma, mb, g, rdem::SpringModulus::Consistent); // the share of each side
+		const Real     area = g.segmentArea() * Real(g.nSegments());
 		for (int k = 0; k < 2; ++k) {
 			const Body::id_t id     = k ? I.getId2() : I.getId1();
 			const Vector3r&  normal = k ? g.segNormal2 : g.segNormal1;
 			const int        axis   = rdem::dominantAxis<Real>(normal);
-			auto& in = input[id];
+			auto&            in     = input[id];
 			in.bonds.push_back({ axis, normal[axis] > 0 ? 1 : -1, area, C[k] / C.sum(), g.ell1 + g.ell2 });
 			sides.push_back({ &p, id, in.bonds.size() - 1 });
 		}
@@ -369,7 +374,7 @@ void RdemPoissonEngine::buildCells(const std::set<Body::id_t>& ids)
 		in.second.poisson  = mat.poisson;
 		for (int d = 0; d < 3; ++d)
 			in.second.prescribed[size_t(d)] = prescribed(scene, in.first, R.col(d));
-		const rdem::Cell<Real> c = rdem::blockCell<Real>(in.second);
+		const rdem::Cell<Real> c  = rdem::blockCell<Real>(in.second);
 		auto&                  st = *static_cast<RdemState*>(b.state.get());
 		st.cellVolume             = c.volume;
 		st.cellStiffness          = c.stiffness;

@@ -4,9 +4,9 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
-#include <core/InteractionLoop.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
+#include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
@@ -68,12 +68,8 @@ namespace {
 	{
 		ContactSetup c;
 		c.modulus = Ip2_RdemMat_RdemMat_RdemPhys::formulationOf(sc);
-		for (const auto& e : sc->engines) {
-			const auto* loop = dynamic_cast<InteractionLoop*>(e.get());
-			if (!loop) continue;
-			for (const auto& f : loop->geomDispatcher->functors)
-				if (const auto* ig2 = dynamic_cast<Ig2_RdemBlock_RdemBlock_RdemGeom*>(f.get())) c.samplesPerEdge = ig2->contactSamples();
-		}
+		rdem::forEachLoopFunctor<Ig2_RdemBlock_RdemBlock_RdemGeom>(
+		        sc, [&](const Ig2_RdemBlock_RdemBlock_RdemGeom& ig2) { c.samplesPerEdge = ig2.contactSamples(); });
 		return c;
 	}
 
