@@ -93,13 +93,15 @@ if ((full)); then
 	grep -A3 'running:  checkRdem' "$root/check.log" | tee -a "$root/summary.txt" >&2 || true
 fi
 
-# 4. The plugin against a long-double YADE (configure only, then the plugin's library alone).
+# 4. The plugin against a long-double YADE (configure only, then the plugin's library alone). RealHP<N> on, YADE's
+# default: with it off, YADE 2025.2.0's own lib/high-precision/RealIO.hpp does not compile for long double
+# (toStringHP<Complex>, measured 2026-11-24).
 build_ld=$root/build-long-double
 rm -rf "$build_ld"
-cmake -S "$src" -B "$build_ld" "${options[@]}" -DENABLE_USEFUL_ERRORS=ON -DREAL_PRECISION_BITS=80 >"$root/configure-long-double.log" 2>&1 ||
+cmake -S "$src" -B "$build_ld" "${options[@]}" -DENABLE_USEFUL_ERRORS=ON -DREAL_PRECISION_BITS=80 -DENABLE_MULTI_REAL_HP=ON >"$root/configure-long-double.log" 2>&1 ||
 	{ log "long-double configure failed: $root/configure-long-double.log"; exit 1; }
 start=$(date +%s)
-if make -C "$build_ld" -j"$jobs" pkg_rdem >"$root/build-long-double.log" 2>&1; then
+if make -k -C "$build_ld" -j"$jobs" pkg_rdem >"$root/build-long-double.log" 2>&1; then
 	log "plugin compiled against long-double YADE (Real = long double, useful errors on): passed in $(($(date +%s) - start)) s"
 else
 	log "plugin against long-double YADE: FAILED; errors:"

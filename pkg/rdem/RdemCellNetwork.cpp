@@ -5,6 +5,7 @@
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
+#include <pkg/rdem/OpenMPLoops.hpp>
 #include <pkg/rdem/RdemCellNetwork.hpp>
 #include <pkg/rdem/RdemForceAssembler.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
@@ -37,15 +38,15 @@ void RdemCellNetwork::rebuild(Scene* scene)
 	state.clear();
 	hasCell.clear();
 	std::unordered_map<Body::id_t, size_t> compact;
-	auto indexOf = [&](Body::id_t id) {
-		const auto it = compact.find(id);
-		if (it != compact.end()) return it->second;
-		auto* st = static_cast<RdemState*>(Body::byId(id, scene)->state.get());
-		compact.emplace(id, body.size());
-		body.push_back(id);
-		state.push_back(st);
-		hasCell.push_back(st->cellVolume > 0);
-		return body.size() - 1;
+	auto                                   indexOf = [&](Body::id_t id) {
+                const auto it = compact.find(id);
+                if (it != compact.end()) return it->second;
+                auto* st = static_cast<RdemState*>(Body::byId(id, scene)->state.get());
+                compact.emplace(id, body.size());
+                body.push_back(id);
+                state.push_back(st);
+                hasCell.push_back(st->cellVolume > 0);
+                return body.size() - 1;
 	};
 	vector<size_t> blockOfSide;
 	for (const auto& I : *scene->interactions) {
@@ -53,9 +54,16 @@ void RdemCellNetwork::rebuild(Scene* scene)
 		const auto* p = dynamic_cast<const RdemPhys*>(I->phys.get());
 		const auto* g = dynamic_cast<const RdemGeom*>(I->geom.get());
 		if (!p || !g || !g->bonded || (p->cellCoef1 == 0 && p->cellCoef2 == 0)) continue;
-		Bond b { indexOf(I->getId1()), indexOf(I->getId2()), rdem::dominantAxis<Real>(g->segNormal1), rdem::dominantAxis<Real>(g->segNormal2),
-			     p->cellCoef1,         p->cellCoef2,         g->segNormal1,
-			     g->segNormal2,        g->faceCentre1,       g->faceCentre2 };
+		Bond b { indexOf(I->getId1()),
+			 indexOf(I->getId2()),
+			 rdem::dominantAxis<Real>(g->segNormal1),
+			 rdem::dominantAxis<Real>(g->segNormal2),
+			 p->cellCoef1,
+			 p->cellCoef2,
+			 g->segNormal1,
+			 g->segNormal2,
+			 g->faceCentre1,
+			 g->faceCentre2 };
 		bond.push_back(b);
 		intr.push_back(I);
 		phys.push_back(I->phys);
@@ -119,7 +127,7 @@ void RdemCellNetwork::updateStrains(Scene* scene, int threads)
 	updateIntact(scene);
 	const long nBlocks = long(body.size()), nBonds = long(bond.size());
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads > 0 ? std::min(threads, omp_get_max_threads()) : omp_get_max_threads())
+#pragma omp parallel for schedule(static) num_threads(rdem::threadsFor(threads))
 #endif
 	for (long i = 0; i < nBlocks; ++i) {
 		rot[size_t(i)] = state[size_t(i)]->ori.toRotationMatrix();
@@ -130,13 +138,13 @@ void RdemCellNetwork::updateStrains(Scene* scene, int threads)
 	   their relative rotation, which the opening multiplies); and the moments about both centroids of a unit normal
 	   force at the face centre, for applyForces. */
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads > 0 ? std::min(threads, omp_get_max_threads()) : omp_get_max_threads())
+#pragma omp parallel for schedule(static) num_threads(rdem::threadsFor(threads))
 #endif
 	for (long k = 0; k < nBonds; ++k) {
-		const Bond&    b   = bond[size_t(k)];
+		const Bond&     b  = bond[size_t(k)];
 		const Matrix3r &R1 = rot[b.i1], &R2 = rot[b.i2];
-		const Vector3r n   = R1 * b.n1;
-		const Vector3r r1  = R1 * b.fc1, r2 = R2 * b.fc2;
+		const Vector3r  n  = R1 * b.n1;
+		const Vector3r  r1 = R1 * b.fc1, r2 = R2 * b.fc2;
 		normal[size_t(k)]  = n;
 		opening[size_t(k)] = n.dot(pos[b.i2] + r2 - pos[b.i1] - r1);
 		arm1[size_t(k)]    = r1.cross(n);
@@ -144,7 +152,7 @@ void RdemCellNetwork::updateStrains(Scene* scene, int threads)
 	}
 	// Per cell: ε_d = Σ c_q u_n,q over its bonds along d, completed by the condensation; the crack scale never increases.
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads > 0 ? std::min(threads, omp_get_max_threads()) : omp_get_max_threads())
+#pragma omp parallel for schedule(static) num_threads(rdem::threadsFor(threads))
 #endif
 	for (long i = 0; i < nBlocks; ++i) {
 		if (!hasCell[size_t(i)]) continue;
@@ -174,7 +182,7 @@ void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energ
 	      of its bonds' shear springs (RdemPhys::offsetGrad, written by the law), mapped to the axes with bonds by the
 	      condensation (RdemState::cellCondensation). */
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static) reduction(+ : e, rel) num_threads(threads > 0 ? std::min(threads, omp_get_max_threads()) : omp_get_max_threads())
+#pragma omp parallel for schedule(static) reduction(realSum : e, rel) num_threads(rdem::threadsFor(threads))
 #endif
 	for (long i = 0; i < nBlocks; ++i) {
 		if (!hasCell[size_t(i)]) {
@@ -204,7 +212,7 @@ void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energ
 	      normal and on body 1 against it, at the face centre; summed block by block in the fixed order of the lists. */
 	RdemForceAssembler::prepareDirectSums(scene, long(scene->bodies->size()));
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads > 0 ? std::min(threads, omp_get_max_threads()) : omp_get_max_threads())
+#pragma omp parallel for schedule(static) num_threads(rdem::threadsFor(threads))
 #endif
 	for (long i = 0; i < nBlocks; ++i) {
 		if (first[size_t(i)] == first[size_t(i) + 1]) continue;

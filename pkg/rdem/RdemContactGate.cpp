@@ -10,6 +10,7 @@
 #include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
+#include <pkg/rdem/OpenMPLoops.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemContactGate.hpp>
 #include <pkg/rdem/math/SeparationBound.hpp>
@@ -59,9 +60,7 @@ void RdemContactGate::updateTravel()
 	// A body or shape that is not the one seen in the last step (erased, replaced, first step) restarts the record.
 	bool replaced = false;
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static) reduction(||                                                                                                         \
-                                                    : replaced)                                                                                                \
-        num_threads(ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
+#pragma omp parallel for schedule(static) reduction(|| : replaced) num_threads(rdem::threadsFor(ompThreads))
 #endif
 	for (long id = 0; id < nBodiesNow; ++id) {
 		const Body* b = Body::byId(Body::id_t(id), scene).get();

@@ -28,8 +28,8 @@ void RdemFiniteGuard::action()
 		   non-finite force or torque into the velocities and the position of this step. */
 		Real sum = s.pos.sum() + s.ori.coeffs().sum() + s.vel.sum() + s.angVel.sum();
 		if (s.blockedDOFs != State::DOF_NONE) sum += scene->forces.getForce(b->id).sum() + scene->forces.getTorque(b->id).sum();
-		if (std::isfinite(sum)) continue;
-		const Vector3r& f = scene->forces.getForce(b->id);
+		if (math::isfinite(sum)) continue;
+		const Vector3r&    f = scene->forces.getForce(b->id);
 		const Vector3r&    t = scene->forces.getTorque(b->id);
 		std::ostringstream what; // only for the offending body: a stream per body would cost more than the checks
 		if (!s.pos.allFinite()) what << "position " << s.pos.transpose();

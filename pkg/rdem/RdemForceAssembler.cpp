@@ -6,6 +6,7 @@
 *************************************************************************/
 #include <core/Scene.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
+#include <pkg/rdem/OpenMPLoops.hpp>
 #include <pkg/rdem/RdemForceAssembler.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
 #include <pkg/rdem/math/GroupByKey.hpp>
@@ -60,8 +61,7 @@ void RdemForceAssembler::prepareDirectSums(Scene* scene, long nBodies)
 void RdemForceAssembler::action()
 {
 	const bool changed = Law2_RdemGeom_RdemPhys_FaceSprings::takeActiveSetChanged(scene);
-	if (changed || builtIter != scene->iter - 1 || builtBodies != long(scene->bodies->size())
-	    || builtInteractions != long(scene->interactions->size()))
+	if (changed || builtIter != scene->iter - 1 || builtBodies != long(scene->bodies->size()) || builtInteractions != long(scene->interactions->size()))
 		rebuild();
 	builtIter          = scene->iter;
 	const long nBodies = long(scene->bodies->size());
@@ -71,7 +71,7 @@ void RdemForceAssembler::action()
 	   (in cubes beyond the last-level cache, the ones it wrote first are gone by then); and the next step's interaction
 	   loop starts where this pass ends. The order of each body's own sum is unchanged. */
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static) num_threads(ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
+#pragma omp parallel for schedule(static) num_threads(rdem::threadsFor(ompThreads))
 #endif
 	for (long r = 0; r < nBodies; ++r) {
 		const long id = nBodies - 1 - r;

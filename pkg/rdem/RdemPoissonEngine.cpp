@@ -10,6 +10,7 @@
 #include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
+#include <pkg/rdem/OpenMPLoops.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemForceAssembler.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
@@ -73,12 +74,13 @@ void RdemPoissonEngine::prepare()
 	for (size_t e = 0; e < nEl; ++e) {
 		const Real        q = 1e-10 * (refPos[8 * e + 7] - refPos[8 * e]).norm();
 		vector<long long> key;
+		const auto        nearest = [](Real x) { return static_cast<long long>(math::round(x)); };
 		for (size_t a = 1; a < 8; ++a)
 			for (int d = 0; d < 3; ++d)
-				key.push_back(std::llround((refPos[8 * e + a][d] - refPos[8 * e][d]) / q));
-		key.push_back(lambdaMax > 0 ? std::llround(lambda[e] / lambdaMax * 1e12) : 0);
+				key.push_back(nearest((refPos[8 * e + a][d] - refPos[8 * e][d]) / q));
+		key.push_back(lambdaMax > 0 ? nearest(lambda[e] / lambdaMax * 1e12) : 0);
 		for (size_t f = 0; f < 6; ++f)
-			key.push_back(std::llround(skin[6 * e + f] * 1e10));
+			key.push_back(nearest(skin[6 * e + f] * 1e10));
 		const auto it = distinct.find(key);
 		if (it != distinct.end()) {
 			stiffnessOf[e] = it->second;
@@ -165,7 +167,7 @@ void RdemPoissonEngine::hex8Action()
 	const bool trackEnergy = scene->trackEnergy;
 	const long nBodies     = long(nodeFirst.size()) - 1;
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static) num_threads(ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
+#pragma omp parallel for schedule(static) num_threads(rdem::threadsFor(ompThreads))
 #endif
 	for (long b = 0; b < nBodies; ++b) {
 		const auto& body = Body::byId(Body::id_t(b), scene);
@@ -173,7 +175,7 @@ void RdemPoissonEngine::hex8Action()
 	}
 	Real energy = 0, released = 0; // Σ ½ s uᵀK_p u of the elements; ½ (s_prev - s) uᵀK_p u lost to cracks in this step [J]
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static) reduction(+ : energy, released) num_threads(ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
+#pragma omp parallel for schedule(static) reduction(realSum : energy, released) num_threads(rdem::threadsFor(ompThreads))
 #endif
 	for (long e = 0; e < nEl; ++e) {
 		const Real s = scale[size_t(e)], sPrev = scalePrev[size_t(e)];
@@ -200,7 +202,7 @@ void RdemPoissonEngine::hex8Action()
 	}
 	RdemForceAssembler::prepareDirectSums(scene, nBodies);
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(static) num_threads(ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
+#pragma omp parallel for schedule(static) num_threads(rdem::threadsFor(ompThreads))
 #endif
 	for (long b = 0; b < nBodies; ++b) {
 		if (nodeFirst[size_t(b)] == nodeFirst[size_t(b) + 1]) continue;

@@ -31,7 +31,7 @@
 namespace yade {
 
 namespace {
-	constexpr Real sameSideCos = 0.99; // two bond normals within ~8° point to the same side of a block
+	const Real sameSideCos = 0.99; // two bond normals within ~8° point to the same side of a block
 
 	Body::id_t next(const std::map<Body::id_t, vector<std::pair<Body::id_t, Vector3r>>>& nbr, Body::id_t b, const Vector3r& dir)
 	{
@@ -149,7 +149,7 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 			const Real nu = static_cast<RdemMat*>(Body::byId(id, scene)->material.get())->poisson;
 			if (nu > nuPaperMax)
 				throw std::invalid_argument(
-				        "RdemPoissonEngine.build: block " + std::to_string(id) + " has poisson = " + std::to_string(nu)
+				        "RdemPoissonEngine.build: block " + std::to_string(id) + " has poisson = " + math::toString(nu)
 				        + ", above 0.382 where the paper formulation (springs E/(1-nu^2) plus D_p) is not positive definite and a run"
 				          " blows up; use the consistent formulation, rdem.engines(poisson='consistent')");
 		}

@@ -276,8 +276,8 @@ vector<Real> RdemTimeStepper::springSignature(Scene* sc) const
 
 Real RdemTimeStepper::estimate(Scene* sc)
 {
-	springCriticalDt = std::numeric_limits<Real>::infinity();                  // set by the Lanczos estimate; the Gershgorin bound is one value
-	capDt            = sc->dt > 0 && std::isfinite(sc->dt) ? sc->dt : Real(0); // the dashpots as the law caps them in this step
+	springCriticalDt = std::numeric_limits<Real>::infinity();                   // set by the Lanczos estimate; the Gershgorin bound is one value
+	capDt            = sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0); // the dashpots as the law caps them in this step
 	if (method != "gershgorin") return lanczos(sc);
 	springCriticalDt = gershgorin(sc);
 	return springCriticalDt;
@@ -296,11 +296,11 @@ Real RdemTimeStepper::estimatePy(const string& how)
 
 void RdemTimeStepper::postLoad(RdemTimeStepper&)
 {
-	if (!(safety > 0 && safety <= 1)) throw std::invalid_argument("RdemTimeStepper.safety = " + std::to_string(safety) + ": must be in (0, 1]");
+	if (!(safety > 0 && safety <= 1)) throw std::invalid_argument("RdemTimeStepper.safety = " + math::toString(safety) + ": must be in (0, 1]");
 	if (method != "lanczos" && method != "gershgorin")
 		throw std::invalid_argument("RdemTimeStepper.method = '" + method + "': must be 'lanczos' or 'gershgorin'");
 	if (!(lanczosTolerance > 0 && lanczosTolerance <= 0.1))
-		throw std::invalid_argument("RdemTimeStepper.lanczosTolerance = " + std::to_string(lanczosTolerance) + ": must be in (0, 0.1]");
+		throw std::invalid_argument("RdemTimeStepper.lanczosTolerance = " + math::toString(lanczosTolerance) + ": must be in (0, 0.1]");
 	if (lanczosMaxSteps < 2) throw std::invalid_argument("RdemTimeStepper.lanczosMaxSteps = " + std::to_string(lanczosMaxSteps) + ": must be >= 2");
 }
 
@@ -308,7 +308,7 @@ bool RdemTimeStepper::isActivated()
 {
 	if (timeStepUpdateInterval < 1) throw std::invalid_argument("RdemTimeStepper.timeStepUpdateInterval = 0: must be an integer >= 1 [steps]");
 	// also at once when a spring breaks: its contact dashpot acts from the next step, and may need a shorter step now
-	return scene->iter % timeStepUpdateInterval == 0 || !(scene->dt > 0 && std::isfinite(scene->dt)) || (!active && scene->dt != checkedDt)
+	return scene->iter % timeStepUpdateInterval == 0 || !(scene->dt > 0 && math::isfinite(scene->dt)) || (!active && scene->dt != checkedDt)
 	        || Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(scene) != brokenAtEstimate;
 }
 
@@ -338,9 +338,9 @@ void RdemTimeStepper::checkFixedDt(Scene* sc)
 
 void RdemTimeStepper::computeTimeStep(Scene* sc)
 {
-	if (!active && !(sc->dt > 0 && std::isfinite(sc->dt)))
+	if (!active && !(sc->dt > 0 && math::isfinite(sc->dt)))
 		throw std::invalid_argument(
-		        "O.dt = " + std::to_string(sc->dt) + ": the time step must be finite and > 0 [s] (or O.dt = -1 to let RdemTimeStepper choose it)");
+		        "O.dt = " + math::toString(sc->dt) + ": the time step must be finite and > 0 [s] (or O.dt = -1 to let RdemTimeStepper choose it)");
 	const vector<Real> signature = method == "lanczos" && reuseUnchanged ? springSignature(sc) : vector<Real>();
 	if (!signature.empty() && signature == lastSignature && reused < 99 && criticalDt > 0) ++reused;
 	else {
@@ -349,7 +349,7 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 		reused        = 0;
 	}
 	brokenAtEstimate = Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(sc);
-	if (!std::isfinite(criticalDt)) { // nothing elastic yet: nothing to check a fixed O.dt against
+	if (!math::isfinite(criticalDt)) { // nothing elastic yet: nothing to check a fixed O.dt against
 		checkedDt = sc->dt;
 		return;
 	}

@@ -29,7 +29,7 @@ namespace rdem {
 		bool                   found = false;
 		int                    axisA = -1, axisB = -1; ///< body axis of A (B) normal to the face
 		S                      signA = 0, signB = 0;   ///< side of that axis: the face normal of A is signA·R_A e_axisA
-		S                      gap   = 0;              ///< distance between the two face planes along the normal, >0 apart [m]
+		S                      gap = 0;                ///< distance between the two face planes along the normal, >0 apart [m]
 		Eigen::Matrix<S, 3, 1> centre, normal, t1, t2; ///< normal points from A to B; t1, t2 unit, in-plane
 		S                      h1 = 0, h2 = 0;         ///< half-sizes of the shared rectangle along t1, t2 [m]
 	};
@@ -119,25 +119,35 @@ namespace rdem {
 		{
 		}
 		/// Overlap of the projections along a_i [m], negative if apart; B lies on the +a_i side if t_i > 0.
-		S overlapA(int i) const { return A.half[i] + absC.row(i).dot(B.half) - std::abs(t[i]); }
+		S overlapA(int i) const
+		{
+			using std::abs;
+			return A.half[i] + absC.row(i).dot(B.half) - abs(t[i]);
+		}
 		/// (x_B - x_A)·b_j [m].
 		S offsetB(int j) const { return C.col(j).dot(t); }
 		/// Overlap of the projections along b_j [m].
-		S overlapB(int j) const { return absC.col(j).dot(A.half) + B.half[j] - std::abs(offsetB(j)); }
+		S overlapB(int j) const
+		{
+			using std::abs;
+			return absC.col(j).dot(A.half) + B.half[j] - abs(offsetB(j));
+		}
 		/// |a_i × b_j|, from its components 0, -C_(i+2)j, C_(i+1)j along a_i, a_(i+1), a_(i+2) (no cancellation when the
 		/// edges are parallel).
 		S crossLength(int i, int j) const
 		{
+			using std::sqrt;
 			const S u = C((i + 1) % 3, j), v = C((i + 2) % 3, j);
-			return std::sqrt(u * u + v * v);
+			return sqrt(u * u + v * v);
 		}
 		/// Overlap of the projections along the unit axis (a_i × b_j)/|a_i × b_j|, times |a_i × b_j| [m].
 		S crossOverlapScaled(int i, int j) const
 		{
+			using std::abs;
 			const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
 			const S   rA = A.half[i1] * absC(i2, j) + A.half[i2] * absC(i1, j);
 			const S   rB = B.half[j1] * absC(i, j2) + B.half[j2] * absC(i, j1);
-			return rA + rB - std::abs(t[i2] * C(i1, j) - t[i1] * C(i2, j));
+			return rA + rB - abs(t[i2] * C(i1, j) - t[i1] * C(i2, j));
 		}
 	};
 
@@ -221,7 +231,8 @@ namespace rdem {
 				depth           = std::min(depth, a >= 2 * grazing ? toPlane : toPlane * grazing / (a - grazing));
 			}
 		}
-		if (!(depth > tol * half.minCoeff()) || !std::isfinite(depth)) return best;
+		using std::isfinite;
+		if (!(depth > tol * half.minCoeff()) || !isfinite(depth)) return best;
 		best.hit   = true;
 		best.depth = depth;
 		return best;
@@ -291,7 +302,7 @@ namespace rdem {
 	/// An edge of one block crossing an edge of the other (see edgeEdgeContact).
 	template <class S> struct EdgeHit {
 		bool                   hit    = false;
-		S                      depth  = 0;                                ///< overlap along the normal [m]
+		S                      depth  = 0;                              ///< overlap along the normal [m]
 		Eigen::Matrix<S, 3, 1> point  = Eigen::Matrix<S, 3, 1>::Zero(); ///< mid-point of the two edges' closest points
 		Eigen::Matrix<S, 3, 1> normal = Eigen::Matrix<S, 3, 1>::Zero(); ///< unit, from A to B
 	};

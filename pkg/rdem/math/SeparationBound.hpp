@@ -35,8 +35,9 @@ namespace rdem {
 	template <class S>
 	S rigidTravel(const Eigen::Matrix<S, 3, 1>& x0, const Eigen::Quaternion<S>& q0, const Eigen::Matrix<S, 3, 1>& x1, const Eigen::Quaternion<S>& q1, S rho)
 	{
+		using std::sqrt;
 		const S minus = (q1.coeffs() - q0.coeffs()).squaredNorm(), plus = (q1.coeffs() + q0.coeffs()).squaredNorm();
-		return (x1 - x0).norm() + 2 * rho * std::sqrt(std::min(minus, plus));
+		return (x1 - x0).norm() + 2 * rho * sqrt(std::min(minus, plus));
 	}
 
 	/// Margin kept from a certificate's slack [m]: 1e-6 of the blocks' summed circumradii (see separationSlack).
@@ -68,7 +69,8 @@ namespace rdem {
 				best = std::max(best, tol - pair.crossOverlapScaled(i, j) / len);
 			}
 		const S slack = best - separationMargin(pair);
-		return std::isfinite(slack) ? slack : -std::numeric_limits<S>::infinity();
+		using std::isfinite;
+		return isfinite(slack) ? slack : -std::numeric_limits<S>::infinity();
 	}
 
 } // namespace rdem

@@ -50,7 +50,8 @@ namespace rdem {
 	{
 		BodyScale<S> b;
 		if (!(m > 0) || !(I.minCoeff() > 0)) return b;
-		b.invSqrtMass    = 1 / std::sqrt(m);
+		using std::sqrt;
+		b.invSqrtMass    = 1 / sqrt(m);
 		b.invSqrtInertia = R * I.cwiseSqrt().cwiseInverse().asDiagonal() * R.transpose();
 		for (unsigned k = 0; k < 6; ++k)
 			b.free[k] = !(blocked & (1u << k));
@@ -271,6 +272,7 @@ namespace rdem {
 	LargestEigenvalue<S>
 	lanczosLargest(Apply&& apply, size_t n, const std::vector<char>& mask, std::vector<S>& start, int minSteps, int maxSteps, S tol, S mix)
 	{
+		using std::abs;
 		using Vec = Eigen::Matrix<S, Eigen::Dynamic, 1>;
 		LargestEigenvalue<S> res;
 		Vec                  v = Vec::Zero(long(n)), g = Vec::Zero(long(n));
@@ -308,7 +310,7 @@ namespace rdem {
 			eig.computeFromTridiagonal(d, e.head(k), Eigen::ComputeEigenvectors);
 			const long top       = k; // eigenvalues ascending
 			res.ritz             = eig.eigenvalues()[top];
-			res.residual         = b * std::abs(eig.eigenvectors()(k, top));
+			res.residual         = b * abs(eig.eigenvectors()(k, top));
 			res.steps            = k + 1;
 			ritzVec              = Q.leftCols(k + 1) * eig.eigenvectors().col(top);
 			const bool converged = res.residual <= tol * res.ritz && k + 1 >= minSteps;
