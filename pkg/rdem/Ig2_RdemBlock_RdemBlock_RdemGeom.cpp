@@ -5,6 +5,7 @@
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
+#include <pkg/rdem/NumberText.hpp>
 #include <pkg/rdem/RdemContactGate.hpp>
 #include <pkg/rdem/RdemPrefetch.hpp>
 #include <pkg/rdem/math/BlockGeometry.hpp>
@@ -131,7 +132,7 @@ void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom
 		        "Ig2_RdemBlock_RdemBlock_RdemGeom.contactSamplesPerEdge = " + std::to_string(contactSamplesPerEdge)
 		        + ": must be an integer >= 1 (or 0: segmentsPerEdge)");
 	if (!(bondGapTolerance >= 0))
-		throw std::invalid_argument("Ig2_RdemBlock_RdemBlock_RdemGeom.bondGapTolerance = " + math::toString(bondGapTolerance) + ": must be >= 0");
+		throw std::invalid_argument("Ig2_RdemBlock_RdemBlock_RdemGeom.bondGapTolerance = " + rdem::numberText(bondGapTolerance) + ": must be >= 0");
 	if (prefetchDistance < -1)
 		throw std::invalid_argument(
 		        "Ig2_RdemBlock_RdemBlock_RdemGeom.prefetchDistance = " + std::to_string(prefetchDistance) + ": must be -1 (automatic), 0 (off) or > 0");

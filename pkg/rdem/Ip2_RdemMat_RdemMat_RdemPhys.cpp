@@ -7,6 +7,7 @@
 #include <core/Scene.hpp>
 #include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
+#include <pkg/rdem/NumberText.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemJoint.hpp>
 #include <pkg/rdem/math/Failure.hpp>
@@ -27,7 +28,7 @@ void Ip2_RdemMat_RdemMat_RdemPhys::postLoad(Ip2_RdemMat_RdemMat_RdemPhys&)
 	for (const auto& cv : { std::make_pair("strengthCoV", strengthCoV), std::make_pair("stiffnessCoV", stiffnessCoV) })
 		if (!(math::isfinite(cv.second) && cv.second >= 0))
 			throw std::invalid_argument(
-			        std::string("Ip2_RdemMat_RdemMat_RdemPhys.") + cv.first + " = " + math::toString(cv.second) + ": must be finite and >= 0");
+			        std::string("Ip2_RdemMat_RdemMat_RdemPhys.") + cv.first + " = " + rdem::numberText(cv.second) + ": must be finite and >= 0");
 }
 
 rdem::SpringModulus Ip2_RdemMat_RdemMat_RdemPhys::formulationOf(const Scene* scene)
@@ -120,8 +121,8 @@ void Ip2_RdemMat_RdemMat_RdemPhys::go(const shared_ptr<Material>& m1, const shar
 	const Real       t     = joint ? joint->thickness : Real(0);
 	if (joint && !(t / 2 < math::min(g.ell1, g.ell2)))
 		throw std::invalid_argument(
-		        "RdemJoint.thickness = " + math::toString(t) + ": must be less than twice the centroid-to-face distance of both blocks it joins ("
-		        + math::toString(g.ell1) + " and " + math::toString(g.ell2) + " m for bodies " + std::to_string(I->getId1()) + " and "
+		        "RdemJoint.thickness = " + rdem::numberText(t) + ": must be less than twice the centroid-to-face distance of both blocks it joins ("
+		        + rdem::numberText(g.ell1) + " and " + rdem::numberText(g.ell2) + " m for bodies " + std::to_string(I->getId1()) + " and "
 		        + std::to_string(I->getId2()) + "): each block reaches the joint's mid-plane");
 	const Real Gm = joint ? rdem::shearModulus(joint->young, joint->poisson) : Real(1);
 

@@ -7,6 +7,7 @@
 #include <core/Scene.hpp>
 #include <pkg/dem/NewtonIntegrator.hpp>
 #include <pkg/rdem/FindEngine.hpp>
+#include <pkg/rdem/NumberText.hpp>
 #include <pkg/rdem/RdemGroundShaker.hpp>
 #include <algorithm>
 #include <stdexcept>
@@ -23,8 +24,8 @@ void RdemGroundShaker::postLoad(RdemGroundShaker&)
 	for (size_t k = 1; k < times.size(); ++k)
 		if (!(times[k] > times[k - 1]))
 			throw std::invalid_argument(
-			        "RdemGroundShaker.times: must increase (times[" + std::to_string(k) + "] = " + math::toString(times[k]) + " after "
-			        + math::toString(times[k - 1]) + ")");
+			        "RdemGroundShaker.times: must increase (times[" + std::to_string(k) + "] = " + rdem::numberText(times[k]) + " after "
+			        + rdem::numberText(times[k - 1]) + ")");
 	for (const auto* v : { &accelerations, &velocities, &displacements })
 		if (!v->empty() && v->size() != times.size() && !times.empty())
 			throw std::invalid_argument(

@@ -13,6 +13,7 @@
 #include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
+#include <pkg/rdem/NumberText.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemCellStrainUpdater.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
@@ -149,7 +150,7 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 			const Real nu = static_cast<RdemMat*>(Body::byId(id, scene)->material.get())->poisson;
 			if (nu > nuPaperMax)
 				throw std::invalid_argument(
-				        "RdemPoissonEngine.build: block " + std::to_string(id) + " has poisson = " + math::toString(nu)
+				        "RdemPoissonEngine.build: block " + std::to_string(id) + " has poisson = " + rdem::numberText(nu)
 				        + ", above 0.382 where the paper formulation (springs E/(1-nu^2) plus D_p) is not positive definite and a run"
 				          " blows up; use the consistent formulation, rdem.engines(poisson='consistent')");
 		}

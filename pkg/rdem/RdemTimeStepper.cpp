@@ -10,6 +10,7 @@
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
+#include <pkg/rdem/NumberText.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemMat.hpp>
@@ -296,11 +297,11 @@ Real RdemTimeStepper::estimatePy(const string& how)
 
 void RdemTimeStepper::postLoad(RdemTimeStepper&)
 {
-	if (!(safety > 0 && safety <= 1)) throw std::invalid_argument("RdemTimeStepper.safety = " + math::toString(safety) + ": must be in (0, 1]");
+	if (!(safety > 0 && safety <= 1)) throw std::invalid_argument("RdemTimeStepper.safety = " + rdem::numberText(safety) + ": must be in (0, 1]");
 	if (method != "lanczos" && method != "gershgorin")
 		throw std::invalid_argument("RdemTimeStepper.method = '" + method + "': must be 'lanczos' or 'gershgorin'");
 	if (!(lanczosTolerance > 0 && lanczosTolerance <= 0.1))
-		throw std::invalid_argument("RdemTimeStepper.lanczosTolerance = " + math::toString(lanczosTolerance) + ": must be in (0, 0.1]");
+		throw std::invalid_argument("RdemTimeStepper.lanczosTolerance = " + rdem::numberText(lanczosTolerance) + ": must be in (0, 0.1]");
 	if (lanczosMaxSteps < 2) throw std::invalid_argument("RdemTimeStepper.lanczosMaxSteps = " + std::to_string(lanczosMaxSteps) + ": must be >= 2");
 }
 
@@ -340,7 +341,7 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 {
 	if (!active && !(sc->dt > 0 && math::isfinite(sc->dt)))
 		throw std::invalid_argument(
-		        "O.dt = " + math::toString(sc->dt) + ": the time step must be finite and > 0 [s] (or O.dt = -1 to let RdemTimeStepper choose it)");
+		        "O.dt = " + rdem::numberText(sc->dt) + ": the time step must be finite and > 0 [s] (or O.dt = -1 to let RdemTimeStepper choose it)");
 	const vector<Real> signature = method == "lanczos" && reuseUnchanged ? springSignature(sc) : vector<Real>();
 	if (!signature.empty() && signature == lastSignature && reused < 99 && criticalDt > 0) ++reused;
 	else {
