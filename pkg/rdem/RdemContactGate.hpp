@@ -40,6 +40,8 @@ public:
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(RdemContactGate,GlobalEngine,R"""(Contact detection on demand: switches the :yref:`Collider` of ``O.engines`` on only once new contacts can occur.
 
+Named after what it is, a gate in front of the collider, rather than after a verb as YADE names engines: the name is in saved scenes (``O.save``), in every script, test and document of the plugin, and in ``rdem.contactGate()``; a rename would break saved scenes.
+
 While every body is an :yref:`RdemBlock`, all blocks form **one** assembly connected by bonds (interactions with restoring springs, :yref:`RdemGeom`), and no restoring spring has broken (:yref:`Law2_RdemGeom_RdemPhys_FaceSprings::tensionBreaks` + ``shearBreaks`` = 0), two blocks that are not bonded can only touch after strains far beyond the failure strains of the springs. The collider is then kept :yref:`dead<Engine::dead>`, and the scene pays nothing for contact detection (the bonds are made by :yref:`utils.createInteraction` and need no collider). The gate opens for good, and the collider runs from then on, at the first of: a broken spring, a body that is not an :yref:`RdemBlock` or has no bond, two assemblies that are not bonded together, an interaction that is not a bond. The topology is checked when the gate first runs and again whenever the number of bodies or interactions changes.
 
 Place it just before the collider (``rdem.engines()`` does); ``open=True`` forces the collider on.

@@ -18,13 +18,24 @@ namespace yade {
 namespace rdem {
 
 	namespace {
-		/// Ask for the cache lines that hold the bytes [begin, end) (GCC/Clang builtin, read access).
+		/// A read prefetch of the cache line holding p: GCC's and Clang's builtin; with other compilers nothing (a prefetch
+		/// is a hint only, results do not depend on it).
+		inline void prefetchLine(const void* p)
+		{
+#if defined(__GNUC__) || defined(__clang__)
+			__builtin_prefetch(p);
+#else
+			(void)p;
+#endif
+		}
+
+		/// Ask for the cache lines that hold the bytes [begin, end) (read access).
 		void prefetchBytes(const void* begin, const void* end)
 		{
 			constexpr std::uintptr_t cacheLine = 64; // bytes: x86-64 and most ARM cores
 			const auto               last      = reinterpret_cast<std::uintptr_t>(end);
 			for (auto line = reinterpret_cast<std::uintptr_t>(begin) & ~(cacheLine - 1); line < last; line += cacheLine)
-				__builtin_prefetch(reinterpret_cast<const void*>(line));
+				prefetchLine(reinterpret_cast<const void*>(line));
 		}
 
 		template <class T> void prefetchObject(const T* p)
@@ -75,9 +86,11 @@ namespace rdem {
 	{
 		/* The cache of the highest level CPU 0 has, as Linux describes it (/sys/devices/system/cpu/cpu0/cache/index*:
 		   level, size such as "32768K"): the cache one core can use. glibc's sysconf(_SC_LEVEL3_CACHE_SIZE) adds up the
-		   L3 of all core complexes of an AMD processor (384 MiB on this project's machine, 12 complexes of 32 MiB). */
+		   L3 of all core complexes of an AMD processor (12 complexes of 32 MiB give 384 MiB), too much for this use.
+		   Elsewhere than on Linux, and if sysfs says nothing: 32 MiB. */
 		size_t bytes = 0;
-		int    level = 0;
+#ifdef __linux__
+		int level = 0;
 		for (int index = 0; index < 16; ++index) {
 			const std::string dir = "/sys/devices/system/cpu/cpu0/cache/index" + std::to_string(index) + "/";
 			std::ifstream     levelFile(dir + "level"), sizeFile(dir + "size");
@@ -89,6 +102,7 @@ namespace rdem {
 			level = l;
 			bytes = size * (unit == 'K' ? 1024 : unit == 'M' ? 1024 * 1024 : 1);
 		}
+#endif
 		return bytes > 0 ? bytes : size_t(32) << 20;
 	}
 

@@ -12,7 +12,7 @@
 namespace yade {
 namespace rdem {
 
-	/* Software prefetch for YADE's InteractionLoop over a block assembly (doc/performance.md, fifth round).
+	/* Software prefetch for YADE's InteractionLoop over a block assembly (doc/performance.md, section on prefetching).
 
 	   The loop visits the interactions in container order and, for each, follows two chains of pointers: interaction →
 	   geometry, physics → the physics' per-segment arrays, and interaction → both bodies → their states. Once a scene

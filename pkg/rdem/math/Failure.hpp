@@ -16,7 +16,7 @@
 namespace yade {
 namespace rdem {
 
-	/// What broke a restoring spring. The integer values are stored per segment in RdemPhys::segmentState.
+	/// What broke a restoring spring. The integer values are stored per segment in RdemPhys::segState.
 	enum class SegmentState { Intact = 0, BrokenTension = 1, BrokenShear = 2 };
 
 	/// Eq. (15) [P]: tensile yield function f_1 = σ - f_t; the spring breaks when f_1 > 0.
