@@ -31,7 +31,7 @@ enough is checked by running it again at half the rate (scripts/shear_wall.py ``
 import math
 from yade import O, Vector3, Quaternion
 from yade.wrapper import ForceEngine, NewtonIntegrator
-import rdem.build as build
+from . import build  # relative: the package is also yade.rdem (doc/upstream.md)
 
 BOUNDARIES = ('fixed', 'cantilever')
 #: The top beam's blocked degrees of freedom per boundary condition (z is free: the vertical load acts along it).
