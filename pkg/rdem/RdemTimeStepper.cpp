@@ -33,8 +33,8 @@ YADE_PLUGIN((RdemTimeStepper));
 CREATE_LOGGER(RdemTimeStepper);
 
 namespace {
-	/// Adds, for one point spring (or dashpot), the Gershgorin terms 2(k_t/m + k_r/I_min) of one body [1/s²] (or
-	/// 2(c_t/m + c_r/I_min) [1/s]), from its normal and shear stiffnesses k_n, k_s [N/m] (or dashpots [N·s/m]).
+	/// Adds, for one point spring, the Gershgorin terms 2(k_t/m + k_r/I_min) of one body [1/s²], from its normal and
+	/// shear stiffnesses k_n, k_s [N/m].
 	void addPoint(vector<Real>& sum, const State& s, Body::id_t id, const Vector3r& point, const Vector3r& n, Real kn, Real ks)
 	{
 		if (s.blockedDOFs == State::DOF_ALL) return;
