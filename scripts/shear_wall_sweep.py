@@ -28,23 +28,27 @@ import time
 HERE = os.path.dirname(os.path.abspath(sys.argv[0]))  # this script's folder (under YADE, __file__ names YADE's launcher)
 LAUNCHER = os.path.join(os.path.dirname(HERE), 'build', 'bin', 'yade')
 SCRIPT = os.path.join(HERE, 'shear_wall.py')
-#: name -> (description, options of shear_wall.py beyond the common ones, threads)
+#: name -> (description, options of shear_wall.py beyond the common ones, threads). The base is the validation setting
+#: of doc/validation.md (softening, bricks of two blocks along their length); each other case changes one knob.
 CASES = {
-        'base': ('base: 1 block per brick, 2x2 springs, Poisson cells, brittle, 10 mm/s', [], 1),
-        'rate': ('half the loading rate (5 mm/s)', ['--rate', '5'], 1),
-        'j2': ('base on two threads', [], 2),
-        'blocks2': ('2 blocks per brick along its length', ['--blocks', '2,1,1'], 1),
+        'base': ('base: 2 blocks per brick, 2x2 springs, Poisson cells, softening', [], 1),
+        'blocks1': ('1 block per brick', ['--blocks', '1,1,1'], 1),
         'blocks4': ('4 blocks per brick along its length', ['--blocks', '4,1,1'], 1),
         'springs1': ('1x1 spring per face', ['--springs', '1'], 1),
         'springs3': ('3x3 springs per face', ['--springs', '3'], 1),
         'poissonOff': ('Poisson effect off', ['--formulation', 'off', '--failure-stress', 'spring'], 1),
-        'softening': ('softening law on', ['--softening', 'on'], 1),
-        'softeningJ2': ('softening law on, two threads', ['--softening', 'on'], 2),
+        'brittle': ('softening off (brittle springs, the paper)', ['--softening', 'off'], 1),
+        'rate': ('half the loading rate', ['--rate', '10'], 1),
+        'j2': ('base on two threads', [], 2),
 }
+#: Options of every run: the validation setting of doc/validation.md, loaded to --drift.
+COMMON = ['--softening', 'on', '--blocks', '2,1,1', '--rate', '20', '--compress-time', '0.02', '--vtk-every', '0']
 
 parser = argparse.ArgumentParser(prog='yade scripts/shear_wall_sweep.py', description=__doc__.split('\n\n')[0])
-parser.add_argument('--cases', default='base,rate,j2', help='comma-separated names among %s, or all (default base,rate,j2)' % ', '.join(CASES))
+parser.add_argument('--cases', default='base,blocks1,blocks4,springs1,springs3,poissonOff,brittle', help='comma-separated names among %s, or all (default: all but rate and j2)' % ', '.join(CASES))
 parser.add_argument('--wall', choices=['MI1', 'MI2'], default='MI1', help='the wall (default MI1)')
+parser.add_argument('--drift', default='0.45', help='end drift of every run [%%] (default 0.45: past the peak of MI1)')
+parser.add_argument('--stop-drop', default='0.15', help='stop a run once its load has dropped by this fraction of its peak (default 0.15)')
 parser.add_argument('--extra', default='', help='further options for every run of shear_wall.py, as one string (default none)')
 parser.add_argument('--out', default='output/shear_wall_sweep', help='folder of the runs (default output/shear_wall_sweep)')
 parser.add_argument('--table', default=None, help='also write the markdown table to this file')
@@ -62,7 +66,8 @@ def folder(name):
 
 def run(name):
 	desc, extra, threads = CASES[name]
-	cmd = [LAUNCHER, '-j%d' % threads, '-n', '-x', SCRIPT, '--wall', opts.wall, '--out', folder(name), '--vtk-every', '0'] + extra + opts.extra.split()
+	cmd = [LAUNCHER, '-j%d' % threads, '-n', '-x', SCRIPT, '--wall', opts.wall, '--out', folder(name), '--drift', opts.drift, '--stop-drop', opts.stop_drop
+	       ] + COMMON + extra + opts.extra.split()
 	print('sweep: %s (%s): %s' % (name, desc, ' '.join(cmd[1:])), flush=True)
 	start = time.time()
 	proc = subprocess.run(cmd, env=dict(os.environ, OMP_NUM_THREADS=str(threads)), stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
@@ -83,11 +88,11 @@ for name in names:
 	with open(path) as f:
 		r = json.load(f)
 	c = r['cost']
-	rows.append(dict(name=name, desc=CASES[name][0], peak=abs(r['peak']['shearKN']), drift=abs(r['peak']['driftPercent']), blocks=r['blocks'],
+	rows.append(dict(name=name, desc=CASES[name][0], peak=abs(r['smoothedPeak']['shearKN']), drift=abs(r['smoothedPeak']['driftPercent']), blocks=r['blocks'],
 	                 steps=c['compressSteps'] + c['pushSteps'], wall=c['compressSeconds'] + c['pushSeconds'], us=c['microsecondsPerBlockStep'],
-	                 threads=c['threads'], error=(r['comparison'] or {}).get('peakError')))
+	                 threads=c['threads'], error=(r['comparison'] or {}).get('smoothedPeakError')))
 finest = max((x for x in rows if x['threads'] == 1), key=lambda x: (x['blocks'], x['steps']), default=None)
-lines = ['| setting | blocks | peak [kN] | vs measured mean | drift at peak [%] | peak vs finest | steps | wall [s] | µs per block-step | threads |',
+lines = ['| setting | blocks | smoothed peak [kN] | vs measured mean | drift at peak [%] | peak vs finest | steps | wall [s] | µs per block-step | threads |',
          '|---|---|---|---|---|---|---|---|---|---|']
 for x in rows:
 	change = x['peak'] / finest['peak'] - 1 if finest else float('nan')

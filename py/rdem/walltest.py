@@ -238,6 +238,24 @@ class ShearWallTest:
 				record(self)
 
 
+def unbondJoints(wall, kind='head'):
+	"""Start the joints of one ``kind`` of ``wall`` (``'head'``, ``'bed'``, ``'collar'`` or ``'beam'``, the keys of
+	``wall.joints``) without bond: every restoring spring of their bonds in the broken state, so that these joints carry
+	compression and friction through their contact springs (doc/theory.md §3; with softening, the residual friction) and no
+	tension or cohesion. For head joints this is the assumption of [MannMuller1982]_ in their theory of the stair-stepped
+	shear failure of masonry: head joints are not compressed while their mortar hardens, shrink away from the bricks and
+	transmit no bond. Returns the set of the pairs (smaller id, larger id) made so, to leave them out of the crack counts.
+	Call it after the wall is built and before the test is loaded. ValueError naming ``kind`` if the wall has no such joints."""
+	if kind not in wall.joints or kind in ('internal', 'mortar'):
+		raise ValueError('kind = %r: must be one of head, bed, collar, beam (the mortar joints of the wall)' % (kind, ))
+	pairs = set()
+	for a, b in wall.joints[kind]:
+		I = O.interactions[a, b]
+		I.phys.segState = [1] * len(I.phys.segState)
+		pairs.add((min(a, b), max(a, b)))
+	return pairs
+
+
 def smoothedPeak(drift, shear, window):
 	"""The largest $|V|$ of the centred moving average of ``shear`` over ``window`` samples (odd, >= 1), and the drift
 	there: the peak without the spikes of single samples after crack bursts (the wall rings at its first period for a
@@ -275,7 +293,7 @@ def crackClasses(wall, segments):
 MAGENES_CALVI = {
         'geometry': dict(length=1.55, height=2.005, thickness=0.38, brick=(0.25, 0.12, 0.055), joint=0.01, bond='english', beam=0.2),
         'brick': dict(young=2991e6, poisson=0.25, density=1800, tensileStrength=1.28e6, cohesion=1.79e6, mu=0.81),
-        'joint': dict(young=2991e6, poisson=0.25, tensileStrength=0.15e6, cohesion=0.21e6, mu=0.81),
+        'joint': dict(young=2991e6, poisson=0.25, tensileStrength=0.15e6, cohesion=0.21e6, mu=0.81, headJoints='unbonded'),
         'beam': dict(young=30e9, poisson=0.2, density=2400),
         'softening': dict(jointGfI=18.0, jointGfII=125.0, jointFc=7.92e6, Gfc=5000.0, brickGfI=80.0, brickGfII=800.0, brickFc=19.72e6, residual=0.2),
         'sources': {
@@ -288,6 +306,8 @@ MAGENES_CALVI = {
                 'masonry modulus and the model wall has exactly the measured E',
                 'nu = 0.25 for brick and mortar': 'EN1996-1-1 (Eurocode 6) 3.7.3: G = 0.4 E, i.e. nu = 0.25',
                 'joint cohesion 0.21 MPa, friction 0.81': 'f_v0 and mu of the database (MagenesCalvi1992)',
+                'head joints without bond (--head-joints unbonded)': 'MannMuller1982: head joints are not compressed while their mortar '
+                'hardens and shrink away from the bricks, so they carry no bond; they keep compression and friction (contact springs)',
                 'joint tensile bond strength 0.15 MPa': 'c = 1.4 f_t (LourencoRots1997, the TU Eindhoven walls: f_t = 0.25, c = 0.35 MPa), '
                 'so f_t = 0.21/1.4',
                 'brick tensile strength 1.28 MPa': '0.065 f_b, f_b = 19.72 MPa (database): the middle of the range 0.03-0.10 of the ratio of a '

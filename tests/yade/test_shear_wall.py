@@ -137,6 +137,56 @@ class ShearWall(unittest.TestCase):
 		with self.assertRaisesRegex(ValueError, 'amplitude'):
 			walltest.cycleTargets([1, -2])
 
+	def jointForce(self, unbond, shift, slide=0.0):
+		"""Two bricks of one course joined by a head joint (f_t = 0.1 MPa, c = 0.2 MPa, tan phi = 0.5), the right one
+		displaced by ``shift`` [m] from the built position with the left one fixed, one step, then slid up by ``slide`` [m]
+		over 2000 steps (contact springs are incremental) and held for one step: the force on the right brick [N]; with ``unbond`` the head joint is made by walltest.unbondJoints."""
+		harness.freshScene()
+		O.engines = rdem.engines(poisson=None, damping=0.0, gravity=(0, 0, 0))
+		brick = O.materials.append(RdemMat(young=E, poisson=0.0, density=1800, tensileStrength=float('inf'), cohesion=float('inf'), label='brick'))
+		joint = RdemJoint(young=E, poisson=0.0, tensileStrength=1e5, cohesion=2e5, frictionAngle=math.atan(0.5))
+		w = rdem.masonry.wall(0.51, 0.055, 0.12, bond='running', brickMaterial=brick, jointMaterial=joint)
+		O.dt = 1e-7
+		O.step()  # the bond's springs are made
+		(a, b), = w.joints['head']
+		self.assertEqual(walltest.unbondJoints(w, 'head') if unbond else set(), {(min(a, b), max(a, b))} if unbond else set())
+		I = O.interactions[a, b]
+		self.assertEqual(list(I.phys.segState), [1 if unbond else 0] * 4)
+		right = b if O.bodies[b].state.pos[0] > O.bodies[a].state.pos[0] else a
+		for i in (a, b):
+			O.bodies[i].state.blockedDOFs = 'xyzXYZ'
+			O.bodies[i].state.vel = Vector3.Zero
+		O.bodies[right].state.pos += shift
+		O.step()
+		if slide:
+			O.bodies[right].state.vel = Vector3(0, 0, slide / (2000 * O.dt))
+			O.run(2000, True)
+			O.bodies[right].state.vel = Vector3.Zero
+			O.step()
+		return O.forces.f(right)
+
+	def testUnbondedHeadJoints(self):
+		"""walltest.unbondJoints (the head joints of MannMuller1982): the joint opened by 1 µm carries nothing (bonded:
+		k_n A u = 77.6 N, 11.8 kPa on the face, below f_t), closed by 1 µm it carries exactly the bonded joint's compression (its
+		contact springs have the bond's stiffness, doc/theory.md §3), and slid by 10 µm under that compression it carries
+		tan phi times the normal force (bonded: the elastic shear k_s A s, 3 times that, below c + sigma tan phi)."""
+		opened = self.jointForce(True, Vector3(1e-6, 0, 0))
+		self.assertEqual(opened, Vector3.Zero)
+		bondedOpen = self.jointForce(False, Vector3(1e-6, 0, 0))
+		# eq. 12 with the joint (doc/theory.md §1.1, one material): k_n = E/(l_A + l_B), l = 0.1275 m (half a 250 mm brick and
+		# half the 10 mm joint; the wall's ends stay at the brick surfaces), face 0.055 x 0.12 m
+		self.assertAlmostEqual(bondedOpen[0] / (-E / 0.255 * 0.055 * 0.12 * 1e-6), 1.0, delta=1e-9)
+		closed = self.jointForce(True, Vector3(-1e-6, 0, 0))
+		bondedClosed = self.jointForce(False, Vector3(-1e-6, 0, 0))
+		self.assertAlmostEqual(closed[0] / bondedClosed[0], 1.0, delta=1e-12)
+		self.assertAlmostEqual(closed[0] / -bondedOpen[0], 1.0, delta=1e-12)  # linear: the same k_n A on both sides
+		slid = self.jointForce(True, Vector3(-1e-6, 0, 0), 1e-5)
+		self.assertAlmostEqual(abs(slid[2]) / slid[0], 0.5, delta=1e-9)
+		bondedSlid = self.jointForce(False, Vector3(-1e-6, 0, 0), 1e-5)
+		self.assertGreater(abs(bondedSlid[2]) / bondedSlid[0], 1.5)
+		with self.assertRaisesRegex(ValueError, '^kind'):
+			walltest.unbondJoints(tinyWall('fixed')[0], 'internal')
+
 
 TOL_FIXED, TOL_CANTILEVER, TOL_ROTATION, TOL_SETTLEMENT, TOL_ENERGY = 0.02, 0.15, 0.12, 0.03, 0.05
 
