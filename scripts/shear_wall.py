@@ -12,7 +12,8 @@ Problem
 
     Defaults: the Magenes & Calvi (1992) walls (rdem.walltest.MAGENES_CALVI: one parameter set, every value with its
     source): 1.55 × 2.005 × 0.38 m English bond of 250×120×55 mm bricks, 10 mm interface joints, E = 2991 MPa and ν = 0.25
-    for brick and mortar, joints f_t = 0.15 MPa, c = 0.21 MPa, μ = 0.81, bricks f_t = 1.28 MPa, c = 1.79 MPa; concrete
+    for brick and mortar, bed and collar joints f_t = 0.15 MPa, c = 0.21 MPa, μ = 0.81, head joints without bond
+    (compression and friction only, Mann & Müller 1982: --head-joints), bricks f_t = 1.28 MPa, c = 1.79 MPa; concrete
     beams; σ0 = 1.2 MPa (MI1; --wall MI2: 0.4 MPa), both ends fixed. Consistent Poisson formulation with cells, springs
     breaking on the total stress of their face (doc/theory.md §5.6); brittle springs (the paper's law).
 

@@ -3,19 +3,20 @@
 
 Problem
     The Magenes & Calvi wall MI1 (or MI2, --wall) of scripts/shear_wall.py is run once per setting, each in its own YADE
-    process (one after the other, never two at once): a base setting, then one knob changed at a time, blocks per brick
-    along its length (1, 2, 4), springs per face edge (1, 2, 3), the Poisson effect off, softening on (when the build
-    has it), half the loading rate (is the run quasi-static?), and the base setting on two threads. Every run writes
-    its own folder under --out.
+    process (one after the other, never two at once): a base setting (that of doc/validation.md: softening, bricks of
+    two blocks along their length, 2x2 springs, Poisson cells, head joints without bond, but loaded at 40 mm/s), then
+    one knob changed at a time: blocks per brick along its length (1, 4), springs per face edge (1, 3), the Poisson
+    effect off, softening off, head joints bonded, the validation rate 20 mm/s (case rate), the base on two threads
+    (case j2). Every run writes its own folder under --out.
 
 Expected result
-    A table (markdown on stdout and in --table) of the peak load, the drift at the peak, their change against the finest
-    run, the number of blocks, steps, wall-clock time, µs per block-step and threads; the cheapest setting within 5 % and
+    A table (markdown on stdout and in --table) of the smoothed peak load (rdem.walltest.smoothedPeak), the drift at the
+    peak, their change against the finest run (the most blocks: 4 per brick), the number of blocks, steps, wall-clock time, µs per block-step and threads; the cheapest setting within 5 % and
     10 % of the finest run's peak.
 
 How to run (each MI1 run takes minutes: the whole sweep about an hour on this 2-core machine)
+    build/bin/yade -n scripts/shear_wall_sweep.py --table output/sweep.md       the default cases
     build/bin/yade -n scripts/shear_wall_sweep.py --cases base,rate,j2
-    build/bin/yade -n scripts/shear_wall_sweep.py --cases all --table doc/shear-wall-sweep.md
     build/bin/yade -n scripts/shear_wall_sweep.py --replot        the table again from the runs' results.json
 """
 import argparse
@@ -38,17 +39,21 @@ CASES = {
         'springs3': ('3x3 springs per face', ['--springs', '3'], 1),
         'poissonOff': ('Poisson effect off', ['--formulation', 'off', '--failure-stress', 'spring'], 1),
         'brittle': ('softening off (brittle springs, the paper)', ['--softening', 'off'], 1),
-        'rate': ('half the loading rate', ['--rate', '10'], 1),
+        'headBonded': ('head joints bonded like the bed joints', ['--head-joints', 'bonded'], 1),
+        'rate': ('half the loading rate (20 mm/s, the rate of doc/validation.md)', ['--rate', '20'], 1),
         'j2': ('base on two threads', [], 2),
 }
-#: Options of every run: the validation setting of doc/validation.md, loaded to --drift.
-COMMON = ['--softening', 'on', '--blocks', '2,1,1', '--rate', '20', '--compress-time', '0.02', '--vtk-every', '0']
+#: Cases whose end state is saved (state.yade.gz in their folder): the per-step cost of softening against brittle springs.
+SAVED = ('base', 'brittle')
+#: Options of every run: the validation setting of doc/validation.md, loaded to --drift at 40 mm/s (twice its rate, to
+#: keep the sweep within an hour on a shared machine; the case 'rate' is the validation rate).
+COMMON = ['--softening', 'on', '--blocks', '2,1,1', '--rate', '40', '--compress-time', '0.02', '--vtk-every', '0']
 
 parser = argparse.ArgumentParser(prog='yade scripts/shear_wall_sweep.py', description=__doc__.split('\n\n')[0])
-parser.add_argument('--cases', default='base,blocks1,blocks4,springs1,springs3,poissonOff,brittle', help='comma-separated names among %s, or all (default: all but rate and j2)' % ', '.join(CASES))
+parser.add_argument('--cases', default='base,blocks1,springs1,poissonOff,brittle,headBonded,blocks4,springs3', help='comma-separated names among %s, or all (default: all but rate and j2)' % ', '.join(CASES))
 parser.add_argument('--wall', choices=['MI1', 'MI2'], default='MI1', help='the wall (default MI1)')
-parser.add_argument('--drift', default='0.45', help='end drift of every run [%%] (default 0.45: past the peak of MI1)')
-parser.add_argument('--stop-drop', default='0.15', help='stop a run once its load has dropped by this fraction of its peak (default 0.15)')
+parser.add_argument('--drift', default='0.4', help='end drift of every run [%%] (default 0.4: past the peak of MI1)')
+parser.add_argument('--stop-drop', default='0.1', help='stop a run once its load has dropped by this fraction of its peak (default 0.15)')
 parser.add_argument('--extra', default='', help='further options for every run of shear_wall.py, as one string (default none)')
 parser.add_argument('--out', default='output/shear_wall_sweep', help='folder of the runs (default output/shear_wall_sweep)')
 parser.add_argument('--table', default=None, help='also write the markdown table to this file')
@@ -68,6 +73,8 @@ def run(name):
 	desc, extra, threads = CASES[name]
 	cmd = [LAUNCHER, '-j%d' % threads, '-n', '-x', SCRIPT, '--wall', opts.wall, '--out', folder(name), '--drift', opts.drift, '--stop-drop', opts.stop_drop
 	       ] + COMMON + extra + opts.extra.split()
+	if name in SAVED:  # the state at the end, for scripts/shear_wall_cost.py
+		cmd += ['--save', os.path.join(folder(name), 'state.yade.gz')]
 	print('sweep: %s (%s): %s' % (name, desc, ' '.join(cmd[1:])), flush=True)
 	start = time.time()
 	proc = subprocess.run(cmd, env=dict(os.environ, OMP_NUM_THREADS=str(threads)), stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
