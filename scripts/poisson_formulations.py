@@ -19,6 +19,7 @@ import argparse
 import sys
 import time
 from yade import O
+import rdem
 from rdem.scenes import CompressionTest
 
 parser = argparse.ArgumentParser(prog='yade scripts/poisson_formulations.py', description=__doc__.split('\n\n')[0])
@@ -43,7 +44,7 @@ for form in ('paper', 'consistent'):
 		nuSum = eSum = 0.0
 		n = 0
 		for k in range(20):
-			O.run(opts.steps // 20, True)
+			rdem.run(opts.steps // 20)
 			if k >= 10:  # second half: past the start-up transient
 				nuSum += test.apparentPoisson()
 				eSum += test.apparentYoung()

@@ -55,12 +55,6 @@ BRICK = dict(young=16.7e9, poisson=0.15, density=1800, tensileStrength=opts.bric
 BOND = RdemJoint(tensileStrength=0.5e6, cohesion=1e6, frictionAngle=math.atan(0.75))
 
 
-def advance(n):
-	"""n steps, synchronously (O.run(n, True) waits by polling, slower for short runs)."""
-	for _ in range(n):
-		O.step()
-
-
 def run(label, mortarYoung, mortarNu):
 	"""Elastic check, then loading to the first brick crack or --max-stress. Returns a dict of results."""
 	O.reset()
@@ -73,7 +67,7 @@ def run(label, mortarYoung, mortarNu):
 	# 1. Elastic phase, static: load to 1 MPa, hold the plate and let the prism come to rest with Cundall's damping, then
 	#    compare the lateral strain of the middle brick's interior with the infinite stack's.
 	while p.stress() < 1e6:
-		advance(50)
+		rdem.run(50)
 		history['disp'].append(p.displacement())
 		history['stress'].append(p.stress())
 	p.settle(1e-5)  # at rest: the measure no longer moves
@@ -88,14 +82,14 @@ def run(label, mortarYoung, mortarNu):
 	# 2. Loading to the first crack inside a brick (or --max-stress).
 	first = None
 	while p.stress() < opts.max_stress * 1e6:
-		advance(50)
+		rdem.run(50)
 		history['disp'].append(p.displacement())
 		history['stress'].append(p.stress())
 		cracks = p.brickCracks(snapshot)
 		if cracks and first is None:
 			first = dict(stressMPa=history['stress'][-2] * 1e-6, displacementMm=history['disp'][-2] * 1e3, springs=len(cracks),
 			             vertical=all(abs(s['normal'][2]) < 0.05 for s in cracks))  # faces within 3° of vertical
-			advance(200)  # let the crack open for the picture
+			rdem.run(200)  # let the crack open for the picture
 			break
 		if O.iter % 5000 == 0:
 			print('%s: step %d, stress %.2f MPa, breaks %s' % (label, O.iter, p.stress() * 1e-6, rdem.breakCounts()), flush=True)

@@ -88,7 +88,7 @@ def compressionRun(fraction):
 	kin0, worst = O.energy['kinetic'], 0
 	while test.displacement() < 0.3e-3:
 		try:
-			O.run(50, True)
+			rdem.run(50)
 		except RuntimeError:
 			return math.inf, O.iter
 		bal = O.energy['kinetic'] - kin0 + sc.elasticEnergy() + sc.dissipatedEnergy() - PLATEN['work']
@@ -178,7 +178,7 @@ if cli.contact:
 if cli.guard_cost:
 	O.reset()
 	CompressionTest(blocksPerEdge=10, rate=1e-3)
-	O.run(5, True)
+	rdem.run(5)
 	share, guardUs, stepUs = rdem.measure.engineShare(RdemFiniteGuard, 100)
 	results['guard cost, 1200 blocks'] = dict(share=share, guardMicroseconds=guardUs, stepMicroseconds=stepUs)
 	print('guard: %.2f %% of the step (%.1f us of %.0f us), 1200-block paper scene' % (100 * share, guardUs, stepUs), flush=True)

@@ -169,7 +169,7 @@ if vtkEvery:
 # 4. Run --------------------------------------------------------------------------------------------------------------
 wallRun = time.time()
 while shortening() < opts.end * 1e-3:
-	O.run(max(1, nSteps // 100), True)
+	rdem.run(max(1, nSteps // 100))
 wallTime = time.time() - wallRun
 record()
 cracks.close()

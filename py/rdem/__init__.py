@@ -29,12 +29,12 @@ except ModuleNotFoundError as e:  # plain Python: only the YADE-free modules (rd
 	_yade = None
 
 if _yade is not None:
-	from .build import block, blockGrid, bond, bondPairs, engines, poissonEngine, newtonIntegrator, timeStepper, law, geomFunctor, contactGate
+	from .build import block, blockGrid, bond, bondPairs, engines, run, poissonEngine, newtonIntegrator, timeStepper, law, geomFunctor, contactGate
 	from . import masonry, earthquake
 	from .measure import segmentTable, bondSnapshot, brokenSegments, breakCounts, apparentPoisson
 	from .export import CrackExport
 
 __all__ = ['wallLayout', 'WallLayout', 'ground_motion'] + ([
-        'block', 'blockGrid', 'bond', 'bondPairs', 'masonry', 'earthquake', 'engines', 'poissonEngine', 'newtonIntegrator', 'timeStepper', 'law', 'geomFunctor', 'contactGate', 'segmentTable', 'bondSnapshot', 'brokenSegments', 'breakCounts',
+        'block', 'blockGrid', 'bond', 'bondPairs', 'masonry', 'earthquake', 'engines', 'run', 'poissonEngine', 'newtonIntegrator', 'timeStepper', 'law', 'geomFunctor', 'contactGate', 'segmentTable', 'bondSnapshot', 'brokenSegments', 'breakCounts',
         'apparentPoisson', 'CrackExport'
 ] if _yade is not None else [])

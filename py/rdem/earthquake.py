@@ -61,8 +61,9 @@ class DryWall:
 	"""A free-standing brick wall laid dry (no mortar), one block per brick, on a fixed base block: every bed and head
 	joint and the wall's footing are contacts, sampled at the vertices (``contactSamples=1``, doc/theory.md §4.2), with
 	critical dashpots (``dampingConstant``) and Coulomb friction; nothing is bonded. The masonry spans
-	$x\\in[0, L]$, $y\\in[0, t]$, $z\\in[0, H]$ (:func:`rdem.wall_layout.wallLayout` with ``joint=0``); the base is
-	wide enough towards $+y$ for the wall to land on when it falls over that way. Lengths in m, SI units.
+	$x\\in[0, L]$, $y\\in[0, t]$, $z\\in[0, H]$ (:func:`rdem.wall_layout.wallLayout` with ``joint=0``); the base
+	reaches ``baseMargin`` beyond the wall's foot on every side and beyond its head once it has fallen towards $+y$
+	(widen it for a collapse: blocks that tumble off its edge fall for ever). Lengths in m, SI units.
 
 	:meth:`tilt` turns gravity by $\\theta$ about $x$ towards $+y$: a base tilted by $\\theta$ seen in its own frame, as on a
 	tilting table (de Felice 2011). :attr:`limit` is the rigid-block limit analysis of that test
@@ -76,8 +77,8 @@ class DryWall:
 	:ivar theta: the current tilt [rad]."""
 
 	def __init__(self, length=0.75, height=0.55, thickness=0.12, brick=(0.25, 0.12, 0.055), bond='running', young=16.7e9, poisson=0.15, density=1800,
-	             friction=0.75, dampingConstant=1.0, contactSamples=1, gravity=9.81):
-		for name, value in (('young', young), ('density', density), ('friction', friction), ('gravity', gravity)):
+	             friction=0.75, dampingConstant=1.0, contactSamples=1, gravity=9.81, baseMargin=0.05):
+		for name, value in (('young', young), ('density', density), ('friction', friction), ('gravity', gravity), ('baseMargin', baseMargin)):
 			if not (math.isfinite(value) and value > 0):
 				raise ValueError('%s = %r: must be finite and > 0' % (name, value))
 		if bond not in ('stack', 'running'):
@@ -93,7 +94,7 @@ class DryWall:
 		                dampingNormal=dampingConstant, dampingShear=dampingConstant, label='brick'))
 		O.engines = build.engines(poisson=None, recontact='always', contactSamples=contactSamples, gravity=(0, 0, -gravity))
 		L, H, t = self.layout.length, self.layout.height, self.layout.thickness
-		margin, depth = 0.05, 0.05  # [m] the base reaches this far beyond the wall's foot and its head once fallen; its thickness
+		margin, depth = baseMargin, 0.05  # [m] the base reaches this far beyond the wall's foot and its head once fallen; its thickness
 		lo, hi = Vector3(-margin, -margin, -depth), Vector3(L + margin, t + H + margin, 0)
 		self.base = O.bodies.append(build.block((lo + hi) / 2, (hi - lo) / 2, self.material, fixed=True))
 		bodies = [build.block(Vector3(*((a + b) / 2 for a, b in zip(*box))), tuple((b - a) / 2 for a, b in zip(*box)), self.material) for box in self.layout.blocks]

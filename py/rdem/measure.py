@@ -80,7 +80,7 @@ def engineShare(engineClass, steps, repeats=3):
 		for e in O.engines:
 			e.execTime = 0
 		O.timingEnabled = True
-		O.run(steps, True)
+		build.run(steps)
 		O.timingEnabled = False
 		engine = next(e for e in O.engines if isinstance(e, engineClass)).execTime
 		total = sum(e.execTime for e in O.engines)

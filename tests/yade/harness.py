@@ -2,6 +2,7 @@
 import sys
 import unittest
 from yade import O, Matrix3, Vector3
+import rdem
 
 
 def run(testCase):
@@ -50,7 +51,7 @@ class EnergyBalance:
 	def run(self, n, every=1):
 		for _ in range(n // every):
 			if every > 1:
-				O.run(every - 1, True)
+				rdem.run(every - 1)
 			prev = [(Vector3(b.state.vel), Vector3(b.state.angVel)) for b in self.free]
 			O.step()
 			E = self._kinetic(prev) + sum(v for k, v in O.energy.items() if k != 'kinetic')

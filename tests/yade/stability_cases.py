@@ -201,7 +201,7 @@ def energyRun(steps, samples=20):
 	chunk = max(1, steps // samples - 1)
 	for _ in range(samples):
 		try:
-			O.run(chunk, True)
+			rdem.run(chunk)
 			h = shadowEnergy()
 		except RuntimeError:  # RdemFiniteGuard: a position, velocity or force became NaN or infinite
 			hist.append(INF)

@@ -48,7 +48,7 @@ class Assembly(unittest.TestCase):
 			O.bodies[i].state.blockedDOFs = 'yzXYZ'
 		area, sigma = (2 * H)**2, 1e6
 		O.forces.setPermF(ids[-1], Vector3(sigma * area, 0, 0))
-		O.run(20000, True)
+		rdem.run(20000)
 		s0, s1 = O.bodies[ids[0]].state, O.bodies[ids[-1]].state
 		eps = ((s1.pos - s0.pos)[0] - (s1.refPos - s0.refPos)[0]) / (s1.refPos - s0.refPos)[0]
 		self.assertAlmostEqual(sigma / eps / (E / (1 - NU**2)), 1, delta=0.005)  # issue's 0.5 %; converged to ~1e-6 here
@@ -91,7 +91,7 @@ class Assembly(unittest.TestCase):
 		e0 = total()
 		worst = 0
 		for k in range(50):
-			O.run(100, True)
+			rdem.run(100)
 			worst = max(worst, abs(total() - e0) / e0)
 		self.assertLess(worst, 0.005)  # 0.2 % measured at safety 0.02; a drift would grow past it over the 5000 steps
 		self.assertEqual(O.energy['rdemDashpot'], 0)
@@ -124,9 +124,9 @@ class Assembly(unittest.TestCase):
 			harness.freshScene()
 			CompressionTest(blocksPerEdge=4, tensileStrength=2e6, rate=0.5, dt=2e-6)
 			rdem.build.geomFunctor().prefetchDistance = distance
-			O.run(40, True)
+			rdem.run(40)
 			O.bodies.erase(40)
-			O.run(40, True)
+			rdem.run(40)
 			law = rdem.build.law()
 			contacts = sum(1 for I in O.interactions if I.isReal and not I.geom.bonded)
 			runs[distance] = ([tuple(b.state.pos) + tuple(b.state.ori) for b in O.bodies if b], law.tensionBreaks + law.shearBreaks, contacts)

@@ -32,7 +32,7 @@ class Contact(unittest.TestCase):
 		v0 = 0.1
 		b = O.bodies.append(rdem.block((0, 0, 2 * H), (H, H, H), mat))
 		O.bodies[b].state.vel = Vector3(0, 0, -v0)
-		O.run(3000, True)  # the contact lasts about 2/omega = 11 us = 550 steps
+		rdem.run(3000)  # the contact lasts about 2/omega = 11 us = 550 steps
 		vz = O.bodies[b].state.vel[2]
 		# discretisation of the contact (omega*dt = 0.004) and the step at which the force vanishes: 2 % of the rebound
 		self.assertAlmostEqual(vz / (v0 * math.exp(-2)), 1, delta=0.02)
@@ -42,7 +42,7 @@ class Contact(unittest.TestCase):
 		mat, base = self.scene(h=0.0)
 		b = O.bodies.append(rdem.block((0, 0, 2 * H), (H, H, H), mat))
 		O.bodies[b].state.vel = Vector3(0, 0, -0.1)
-		O.run(3000, True)
+		rdem.run(3000)
 		self.assertAlmostEqual(O.bodies[b].state.vel[2] / 0.1, 1, delta=1e-3)  # leapfrog: energy error O((omega dt)^2)
 
 	def testFrictionLimit(self):
@@ -53,18 +53,18 @@ class Contact(unittest.TestCase):
 		b = O.bodies.append(rdem.block((0, 0, 2 * H), (H, H, H), mat))
 		m = O.bodies[b].state.mass
 		O.bodies[b].state.blockedDOFs = 'XYZ'  # no tipping: the test is about the friction limit
-		O.run(2000, True)  # settle: critically damped, period 34 us = 340 steps
+		rdem.run(2000)  # settle: critically damped, period 34 us = 340 steps
 		F = 2 * mu * m * g
 		O.forces.setPermF(b, Vector3(F, 0, 0))
-		O.run(500, True)  # transient of the shear spring
+		rdem.run(500)  # transient of the shear spring
 		v1, t1 = O.bodies[b].state.vel[0], O.time
-		O.run(5000, True)
+		rdem.run(5000)
 		a = (O.bodies[b].state.vel[0] - v1) / (O.time - t1)
 		self.assertAlmostEqual(a / (mu * g), 1, delta=0.01)  # 1 %: residual normal oscillation after settling
 		# below the limit it sticks
 		O.forces.setPermF(b, Vector3(0.5 * mu * m * g, 0, 0))
 		O.bodies[b].state.vel = Vector3(0, 0, 0)
-		O.run(2000, True)
+		rdem.run(2000)
 		self.assertLess(abs(O.bodies[b].state.vel[0]), 1e-4)  # only the elastic shear spring moves (um/s)
 
 	def testObliqueDropComesToRest(self):

@@ -27,7 +27,7 @@ class ContactGate(unittest.TestCase):
 		mat = self.scene()
 		rdem.bond(rdem.blockGrid((3, 3, 3), (2 * H, ) * 3, mat))
 		nBonds = len(O.interactions)
-		O.run(20, True)
+		rdem.run(20)
 		self.assertFalse(self.gate().open)
 		self.assertTrue(self.collider().dead)
 		self.assertEqual(len(O.interactions), nBonds)  # no potential interaction was ever made: the collider never ran
@@ -70,7 +70,7 @@ class ContactGate(unittest.TestCase):
 	def testOpensWhenBlockAddedMidRun(self):
 		mat = self.scene()
 		rdem.bond(rdem.blockGrid((2, 1, 1), (2 * H, ) * 3, mat))
-		O.run(5, True)
+		rdem.run(5)
 		self.assertFalse(self.gate().open)
 		O.bodies.append(rdem.block((0, 0, 0.1), (H, H, H), mat))
 		O.step()

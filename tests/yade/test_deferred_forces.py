@@ -36,7 +36,7 @@ class DeferredForces(unittest.TestCase):
 		runs = []
 		for defer in (True, False):
 			test = compressedCube(defer)
-			O.run(STEPS, True)
+			rdem.run(STEPS)
 			runs.append(state(test))
 		(s1, b1, x1), (s2, b2, x2) = runs
 		self.assertGreaterEqual(b1, 100, 'the run must crack (104 broken springs measured) to test the cracked phase')
@@ -61,7 +61,7 @@ class DeferredForces(unittest.TestCase):
 		for defer in (True, False):
 			test = compressedCube(defer)
 			O.engines = [e for e in O.engines if isinstance(e, (ForceResetter, InsertionSortCollider, InteractionLoop, NewtonIntegrator))]
-			O.run(500, True)
+			rdem.run(500)
 			runs.append(state(test))
 		(s1, b1, x1), (s2, b2, x2) = runs
 		self.assertGreater(s1, 1e6, 'the platen must have loaded the cube (3.5 MPa after 500 steps with the cells)')

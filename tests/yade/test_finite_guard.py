@@ -19,7 +19,7 @@ class FiniteGuard(unittest.TestCase):
 		ids = rdem.blockGrid((3, 3, 3), (0.02, 0.02, 0.02), mat)
 		rdem.bond(ids)
 		rdem.poissonEngine().build(ids)
-		O.run(20, True)
+		rdem.run(20)
 		return ids
 
 	def testPlacedAfterIntegrator(self):
@@ -33,7 +33,7 @@ class FiniteGuard(unittest.TestCase):
 		ids = self.grid()
 		O.bodies[ids[13]].state.vel = Vector3(NAN, 0, 0)
 		with self.assertRaisesRegex(RuntimeError, r'at iteration 20, body %d has a non-finite position' % ids[13]):
-			O.run(100, True)
+			rdem.run(100)
 		self.assertEqual(O.iter, 20)  # stopped in the very step the NaN entered the positions, which is not counted
 
 	def testNanInteractionNamesIt(self):
@@ -42,19 +42,19 @@ class FiniteGuard(unittest.TestCase):
 		I.phys.kn = NAN  # one bond goes bad: both its blocks get NaN forces
 		pattern = r'body %d has a non-finite .*interactions on it with a non-finite force: \(%d,%d\)' % (min(I.id1, I.id2), I.id1, I.id2)
 		with self.assertRaisesRegex(RuntimeError, pattern):
-			O.run(100, True)
+			rdem.run(100)
 
 	def testNanPermanentForce(self):
 		ids = self.grid()
 		O.forces.setPermF(ids[26], Vector3(0, NAN, 0))
 		with self.assertRaisesRegex(RuntimeError, r'body %d has a non-finite .*no interaction on it has a non-finite force' % ids[26]):
-			O.run(100, True)
+			rdem.run(100)
 
 	def testWithoutGuardGarbageGoesOn(self):
 		# the control: without the guard the NaN spreads silently and the run completes (the guard is what stops it)
 		ids = self.grid(guard=False)
 		O.bodies[ids[13]].state.vel = Vector3(NAN, 0, 0)
-		O.run(100, True)
+		rdem.run(100)
 		self.assertEqual(O.iter, 120)
 		self.assertTrue(any(b.state.pos != b.state.pos for b in O.bodies))  # NaN != NaN
 
@@ -63,7 +63,7 @@ class FiniteGuard(unittest.TestCase):
 		# block figure of doc/stability.md comes from scripts/stability_sweep.py --guard-cost. Bound 2 % (the issue's).
 		harness.freshScene()
 		CompressionTest(blocksPerEdge=6, rate=0.01)
-		O.run(5, True)
+		rdem.run(5)
 		share = rdem.measure.engineShare(RdemFiniteGuard, 200)[0]  # the least inflated of three runs
 		print('guard: %.3f %% of the step' % (100 * share))
 		self.assertLess(share, 0.02)

@@ -52,7 +52,7 @@ class GroundShaker(unittest.TestCase):
 		motion = gm.GroundMotion(x=gm.constant(2.0, 0.1, 1e-3))
 		sh = rdem.earthquake.shaker(motion, mode='inertial')
 		O.dt = 1e-5
-		O.run(1000, True)
+		rdem.run(1000)
 		newton = rdem.newtonIntegrator()
 		self.assertAlmostEqual(newton.gravity[0], -2.0, delta=1e-12)
 		self.assertAlmostEqual(newton.gravity[2], -9.81, delta=1e-12)

@@ -139,7 +139,7 @@ class Poisson(unittest.TestCase):
 			if O.bodies[i]:
 				O.bodies[i].state.blockedDOFs = ''
 				O.bodies[i].state.vel = Vector3(0, 0, 1e-3 * (O.bodies[i].state.pos[2] - H))
-		O.run(20, True)
+		rdem.run(20)
 		self.assertEqual(O.iter, 20)
 		self.assertTrue(all(O.bodies[i].state.pos.norm() < 1 for i in ids if O.bodies[i]))
 

@@ -28,16 +28,10 @@ def prism(mortarE, mortarNu, brickFt):
 	return MasonryPrism(brick, mortar, RdemJoint(**BOND), blocks=4, rate=0.05)
 
 
-def advance(n):
-	"""n steps, synchronously (O.run(n, True) waits by polling, which costs more than a short run)."""
-	for _ in range(n):
-		O.step()
-
-
 def atRest(p, stress):
 	"""Load to ``stress``, hold the plate and damp until the interior lateral strain no longer changes (1e-5 relative)."""
 	while p.stress() < stress:
-		advance(50)
+		rdem.run(50)
 	p.settle(1e-5)
 
 
@@ -68,7 +62,7 @@ class Prism(unittest.TestCase):
 		crackStress = None
 		while p.stress() < 3 * predicted and crackStress is None:
 			before = p.stress()
-			advance(20)
+			rdem.run(20)
 			if p.brickCracks(snapshot):
 				crackStress = before
 		self.assertIsNotNone(crackStress, 'no brick cracked up to 3 times the predicted stress')
@@ -79,7 +73,7 @@ class Prism(unittest.TestCase):
 			O.bodies[i].state.vel = Vector3(0, 0, -0.01)
 		snapshot = rdem.measure.bondSnapshot()
 		while same.stress() < 1.5 * crackStress:
-			advance(50)
+			rdem.run(50)
 		self.assertEqual(same.brickCracks(snapshot), [])
 
 

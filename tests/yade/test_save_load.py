@@ -36,8 +36,8 @@ class SaveLoad(unittest.TestCase):
 		self.loose = O.bodies.append(rdem.block((0.4, 0.1, 0.03), (0.01, 0.01, 0.01), test.material))
 		O.trackEnergy = True
 		while O.iter < 5000 and not self.partlyBroken():
-			O.run(50, True)
-		O.run(137, True)  # an arbitrary step, not at a multiple of the time stepper's interval
+			rdem.run(50)
+		rdem.run(137)  # an arbitrary step, not at a multiple of the time stepper's interval
 
 	def partlyBroken(self):
 		"""Bonds with some springs broken, some intact."""
@@ -56,10 +56,10 @@ class SaveLoad(unittest.TestCase):
 		self.assertLess(min(rdem.poissonEngine().elementScales()), 1)
 		path = os.path.join(tempfile.mkdtemp(prefix='rdem-saveload-'), 'scene' + ext)
 		O.save(path)
-		O.run(AFTER, True)
+		rdem.run(AFTER)
 		straight = snapshot()
 		O.load(path)
-		O.run(AFTER, True)
+		rdem.run(AFTER)
 		reloaded = snapshot()
 		for key in straight:
 			if key == 'energy':

@@ -21,13 +21,13 @@ class SkipApart(unittest.TestCase):
 		harness.freshScene()
 		CompressionTest(blocksPerEdge=4, tensileStrength=2e6, rate=0.5, dt=2e-6)
 		rdem.build.geomFunctor().skipApart = skip
-		O.run(40, True)
+		rdem.run(40)
 		O.bodies.erase(40)
-		O.run(20, True)
+		rdem.run(20)
 		O.saveTmp('skipApart')
 		O.loadTmp('skipApart')
 		rdem.build.geomFunctor().skipApart = skip
-		O.run(40, True)
+		rdem.run(40)
 		law, ig2 = rdem.build.law(), rdem.build.geomFunctor()
 		contacts = sum(1 for I in O.interactions if I.isReal and not I.geom.bonded)
 		gaps = sum(1 for I in O.interactions.all() if not I.isReal and type(I.geom).__name__ == 'RdemGap')

@@ -23,7 +23,7 @@ class Smoke(unittest.TestCase):
 		ids = rdem.blockGrid((2, 1, 1), (0.02, 0.02, 0.02), mat)
 		self.assertEqual(rdem.bond(ids), 1)
 		O.bodies[ids[1]].state.vel = yade.Vector3(1e-3, 0, 0)
-		O.run(10, True)
+		rdem.run(10)
 		self.assertEqual(O.iter, 10)
 		self.assertLess(O.bodies[ids[1]].state.vel[0], 1e-3)  # the bond pulls it back (decelerates)
 		self.assertEqual(len(O.interactions[ids[0], ids[1]].phys.segState), 4)  # 2x2 springs on the shared face

@@ -83,7 +83,7 @@ class Stability(unittest.TestCase):
 		with open(err, 'w') as f:
 			os.dup2(f.fileno(), 2)  # RdemTimeStepper's LOG_WARN goes to the C++ stderr
 			try:
-				O.run(10, True)
+				rdem.run(10)
 			finally:
 				os.dup2(saved, 2)
 				os.close(saved)
@@ -116,7 +116,7 @@ class Stability(unittest.TestCase):
 		sigma, poisson = 0, 0
 		for k in range(20):
 			try:
-				O.run(steps // 20, True)
+				rdem.run(steps // 20)
 			except RuntimeError:
 				break  # the guard stopped a blow-up (control case)
 			for I in O.interactions:
@@ -179,7 +179,7 @@ class Stability(unittest.TestCase):
 		t0 = time.time()
 		worst = 0
 		while test.displacement() < 0.3e-3:
-			O.run(100, True)
+			rdem.run(100)
 			self.assertTrue(sc.stateIsFinite())
 			balance = O.energy['kinetic'] - kin0 + sc.elasticEnergy() + sc.dissipatedEnergy() - PLATEN['work']
 			worst = max(worst, abs(balance))

@@ -77,8 +77,8 @@ class TimeStep(unittest.TestCase):
 		limit = rdem.timeStepper().estimate()
 		O.dt = 13 * rdem.timeStepper().estimate('gershgorin')
 		pos = O.bodies[test.specimen[0]].state.pos
-		with self.assertRaises(RuntimeError) as refused:  # O.run turns the stepper's ValueError into RuntimeError
-			O.run(1, True)
+		with self.assertRaises(ValueError) as refused:  # the stepper refuses the step (O.run would turn it into RuntimeError)
+			rdem.run(1)
 		print(refused.exception)
 		named = re.search(r'O\.dt = (\S+) s exceeds the critical time step (\S+) s', str(refused.exception))
 		self.assertAlmostEqual(float(named.group(1)) / O.dt, 1, delta=1e-5)  # printed to 6 digits
@@ -87,19 +87,19 @@ class TimeStep(unittest.TestCase):
 		self.assertEqual(O.bodies[test.specimen[0]].state.pos, pos)
 		# just above the limit: refused; just below: runs (and the paper's 2 us is far below)
 		O.dt = 1.01 * limit
-		with self.assertRaisesRegex(RuntimeError, 'exceeds the critical time step'):
-			O.run(1, True)
+		with self.assertRaisesRegex(ValueError, 'exceeds the critical time step'):
+			rdem.run(1)
 		O.dt = 0.99 * limit
-		O.run(10, True)
+		rdem.run(10)
 		self.assertEqual(O.iter, 10)
 		# changed during the run: checked again
 		O.dt = 1.5 * limit
-		with self.assertRaisesRegex(RuntimeError, 'exceeds the critical time step'):
-			O.run(1, True)
+		with self.assertRaisesRegex(ValueError, 'exceeds the critical time step'):
+			rdem.run(1)
 		# the Gershgorin fallback only warns
 		rdem.timeStepper().method = 'gershgorin'
 		O.dt = 2e-6
-		O.run(1, True)
+		rdem.run(1)
 		self.assertTrue(rdem.timeStepper().warned)
 
 	def testGershgorinFallbackAndSettings(self):
@@ -130,7 +130,7 @@ class TimeStep(unittest.TestCase):
 		O.step()
 		cold, first = ts.lanczosSteps, ts.criticalDt
 		self.assertAlmostEqual(O.dt / (0.8 * first), 1, delta=1e-12)
-		O.run(200, True)
+		rdem.run(200)
 		self.assertEqual(ts.reused, 2)  # the updates at steps 100 and 200 kept it
 		self.assertEqual(ts.criticalDt, first)
 		again = ts.estimate()  # computes, from the Ritz vector of the first
@@ -142,7 +142,7 @@ class TimeStep(unittest.TestCase):
 		# a broken bond changes the springs: the next update estimates anew
 		I = O.interactions[ids[0], ids[1]]
 		O.interactions.erase(I.id1, I.id2)
-		O.run(100, True)
+		rdem.run(100)
 		self.assertEqual(ts.reused, 0)
 
 
