@@ -275,6 +275,23 @@ vector<Real> RdemTimeStepper::springSignature(Scene* sc) const
 	return { Real(sc->bodies->size()), nReal, nSegments, nSamples, stiffness, blocked, mass, Real(Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(sc)) };
 }
 
+bool RdemTimeStepper::contactsPossible(Scene* sc) const
+{
+	if (Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(sc) > 0) return true;
+	vector<char> bonded(sc->bodies->size(), 0);
+	for (const auto& I : *sc->interactions) {
+		if (!I->isReal()) continue;
+		const auto* g = dynamic_cast<RdemGeom*>(I->geom.get());
+		if (!g) continue;
+		if (!g->sampleKey.empty()) return true;
+		if (g->nSegments() > 0) bonded[size_t(I->getId1())] = bonded[size_t(I->getId2())] = 1;
+	}
+	if (!contactBound) return false;
+	for (const auto& b : *sc->bodies)
+		if (b && b->state->blockedDOFs != State::DOF_ALL && !bonded[size_t(b->id)]) return true;
+	return false;
+}
+
 Real RdemTimeStepper::estimate(Scene* sc)
 {
 	springCriticalDt = std::numeric_limits<Real>::infinity();                   // set by the Lanczos estimate; the Gershgorin bound is one value
@@ -354,7 +371,8 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 		checkedDt = sc->dt;
 		return;
 	}
-	if (active) sc->dt = safety * criticalDt;
+	contactDt = method == "lanczos" && contactLimit && contactsPossible(sc) ? gershgorin(sc) : std::numeric_limits<Real>::infinity();
+	if (active) sc->dt = safety * math::min(criticalDt, contactDt);
 	else
 		checkFixedDt(sc);
 }

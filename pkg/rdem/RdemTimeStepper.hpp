@@ -56,6 +56,8 @@ When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the
 		((Real,checkedDt,0,(Attr::hidden|Attr::readonly|Attr::noSave),"The fixed ``O.dt`` last checked against the limit [s]."))
 		((bool,contactBound,false,,"Also allow for the contacts that blocks can still make (scenes with a collider, ``rdem.engines(recontact=True)``): every free block that carries no bond gets the terms of a flush contact on each of its six faces, at its own stiffness per area (doc/theory.md §6). Without it the step follows only the contacts that exist: none for a falling block, and a step set while a corner touches is unstable once a face lands."))
 		((Real,criticalDt,0,Attr::readonly,"Last estimate of the critical time step, without the safety factor [s]."))
+		((bool,contactLimit,true,,"While contacts act or can form (a contact sample, a broken spring, or with ``contactBound`` a free block without bonds), keep the automatic step below the Gershgorin bound too: ``O.dt = safety·min(criticalDt, contactDt)``. Contacts that form between two estimates bring their critical dashpots (eq. 13, $h=1$), whose limit, 0.41 of the undamped one for one oscillator, the estimate has not seen; the Gershgorin bound lies at 0.37–0.44 of the undamped limit. At 0.8 of the Lanczos limit the law's dashpot caps bind on such contacts and the contact dynamics change with the step (doc/stability.md: a rocking block that no longer overturns, a dry wall that falls below its tilt limit). A bonded assembly before its first break keeps the tight step."))
+		((Real,contactDt,0,(Attr::readonly|Attr::noSave),"The Gershgorin bound applied by ``contactLimit`` at the last estimate [s]; inf while no contact can act."))
 		((Real,springCriticalDt,0,(Attr::readonly|Attr::noSave),"Critical step of the springs alone, $2/\\omega_{max}$, of the last estimate [s]: a fixed ``O.dt`` above it is refused; one between ``criticalDt`` (with the contact dashpots) and it only warns."))
 		((bool,warned,false,(Attr::readonly|Attr::noSave),"Whether the too-large ``O.dt`` warning was printed (once per engine)."))
 		,
@@ -74,6 +76,8 @@ private:
 	Real capDt = 0;
 	/// Springs broken when the last estimate was made (a break triggers a new one).
 	long brokenAtEstimate = 0;
+	/// Whether a contact acts or can form: a contact sample, a broken spring, or (contactBound) a free block without bonds.
+	bool contactsPossible(Scene* scene) const;
 	/// What K depends on besides the poses (reuseUnchanged).
 	vector<Real> springSignature(Scene* scene) const;
 };

@@ -257,7 +257,8 @@ def engines(segmentsPerEdge=2,
 	    :yref:`RdemContactGate` only once contacts can occur (the first broken spring, a free block, a second assembly);
 	    ``'always'``: the collider runs from the first step; ``False``: no new contact is ever made.
 	:param damping: Cundall's non-viscous damping of :yref:`NewtonIntegrator` (0 = none, as in the paper).
-	:param dt: ``None``: :yref:`RdemTimeStepper` sets ``O.dt = safety·Δt_crit`` with its Gershgorin bound of Δt_crit; a number:
+	:param dt: ``None``: :yref:`RdemTimeStepper` sets ``O.dt = safety·Δt_crit`` with its Lanczos estimate of Δt_crit (the tight
+	    limit, dashpots included), kept below the Gershgorin bound while contacts act or can form (``contactLimit``); a number:
 	    fixed ``O.dt`` [s], checked against the stepper's Lanczos estimate (with the contact dashpots): refused above it
 	    (doc/stability.md).
 	:param verletDist: collider sweep distance [m] (default: none, the collider runs every step; set it to about 5 % of the
@@ -316,11 +317,10 @@ def engines(segmentsPerEdge=2,
 	eng += [loop, RdemForceAssembler()]  # forces summed per body in a fixed order: O.load continues bit for bit
 	if withPoisson:
 		eng.append(RdemPoissonEngine(corotational=corotational))
-	# The automatic step keeps the Gershgorin bound (2.2-2.7 times below the limit) until the tests whose tolerances were
-	# set at its steps (energy drift, penetration depth) are checked at the Lanczos step; a fixed step is checked against
-	# the Lanczos estimate with the contact dashpots, refused above it (doc/stability.md)
+	# The automatic step is 0.8 of the tight (Lanczos) limit, also below the Gershgorin bound while contacts act or can form
+	# (RdemTimeStepper.contactLimit); a fixed step is checked against the Lanczos estimate, refused above it (doc/stability.md)
 	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None, contactBound=bool(recontact),
-	                          method='gershgorin' if dt is None else 'lanczos')
+	                          method='lanczos')
 	eng += [stepper, NewtonIntegrator(damping=damping, gravity=Vector3(gravity))]
 	if finiteGuard:
 		eng.append(RdemFiniteGuard())
