@@ -38,6 +38,9 @@ CASES = {
         'springs1': ('1x1 spring per face', ['--springs', '1'], 1),
         'springs3': ('3x3 springs per face', ['--springs', '3'], 1),
         'poissonOff': ('Poisson effect off', ['--formulation', 'off', '--failure-stress', 'spring'], 1),
+        'brickCapOff': ('no compression cap in the bricks', ['--brick-fc', '0'], 1),
+        'poissonOffBrickCapOff': ('Poisson effect off, no compression cap in the bricks (with the Poisson effect off the bricks\' cap is refused: '
+                                  'its softening would snap back)', ['--formulation', 'off', '--failure-stress', 'spring', '--brick-fc', '0'], 1),
         'brittle': ('softening off (brittle springs, the paper)', ['--softening', 'off'], 1),
         'headBonded': ('head joints bonded like the bed joints', ['--head-joints', 'bonded'], 1),
         'rate': ('half the loading rate (20 mm/s, the rate of doc/validation.md)', ['--rate', '20'], 1),
