@@ -38,7 +38,7 @@ parser.add_argument('--corotational', action='store_true', help='corotational Po
 parser.add_argument('--plate-young', type=float, default=None, help="Young's modulus of the plates [GPa] (default: the concrete's, 30)")
 parser.add_argument('--rate', type=float, default=1.0, help='loading rate [mm/s] (default 1.0)')
 parser.add_argument('--end', type=float, default=0.25, help='end displacement of the loading plate [mm] (default 0.25)')
-parser.add_argument('--dt', default='2e-6', help="time step [s] (default 2e-6, as in the paper), or 'auto': RdemTimeStepper's, 0.8 of the critical step")
+parser.add_argument('--dt', default='2e-6', help="time step [s] (default 2e-6, as in the paper), or 'auto': RdemTimeStepper's, 0.8 of the critical step (also below the Gershgorin bound once springs break)")
 parser.add_argument('--out', default='output/compression', help='output folder (default output/compression)')
 parser.add_argument('--vtk-every', type=float, default=0.05, help='ParaView output every this displacement [mm] (default 0.05; 0 = none)')
 parser.add_argument('--threads', type=int, default=None, help='OpenMP threads; same as yade -jN (given here, it must match -j)')

@@ -124,10 +124,10 @@ namespace {
 		Real                           A;   ///< area of a segment [m²]
 		rdem::RestoringConstants<Real> k;   ///< restoring springs per area
 		Real                           wn, ws;
-		Real                           cn, cs;          ///< restoring spring of one segment with its weight, w k A [N/m]
-		Real                           contactArea = 0; ///< of the broken segments in contact: shares of the dashpot caps [m²]
-		Vector3r                       slip;            ///< cells' offset slip of the intact shear springs [m]
-		Real                           sigmaCells = 0;  ///< cells' normal stress on the face, for the criteria [Pa]
+		Real                           springN, springS; ///< restoring spring of one segment with its weight, w k A [N/m]
+		Real                           contactArea = 0;  ///< of the broken segments in contact: shares of the dashpot caps [m²]
+		Vector3r                       slip;             ///< cells' offset slip of the intact shear springs [m]
+		Real                           sigmaCells = 0;   ///< cells' normal stress on the face, for the criteria [Pa]
 		Vector3r                       fSum = Vector3r::Zero(), fs = Vector3r::Zero(), fr = Vector3r::Zero(); ///< ΣF, Σ sF, Σ rF on body 2 [N]
 		Vector3r                       tSum                = Vector3r::Zero(); ///< Σ w_s k_s A (d_t - slip) over the intact segments [N]
 		bool                           anyIntactOrTouching = false;
@@ -143,8 +143,8 @@ namespace {
 		        , k { p.kn, p.ks, p.tensileStrength, p.cohesion, p.tanFriction }
 		        , wn(p.weightNormal)
 		        , ws(p.weightShear)
-		        , cn(wn * p.kn * A)
-		        , cs(ws * p.ks * A)
+		        , springN(wn * p.kn * A)
+		        , springS(ws * p.ks * A)
 		{
 		}
 		/// Adds the force F at the segment of grid coordinates (s, r).
@@ -180,8 +180,8 @@ namespace {
 	{
 		const auto stress = rdem::restoringStress<Real>(b.k, un, ust, withCells ? b.sigmaCells : Real(0));
 		if (stress.state == rdem::SegmentState::Intact) {
-			b.applyAt(-(b.cn * un * b.n + b.cs * ust), s, r); // -(w_n σ n + w_s τ) A
-			if (withCells) b.tSum += b.cs * ust;
+			b.applyAt(-(b.springN * un * b.n + b.springS * ust), s, r); // -(w_n σ n + w_s τ) A
+			if (withCells) b.tSum += b.springS * ust;
 			p.segSigma[i]         = stress.sigma;
 			p.segTau[i]           = stress.tauNorm;
 			b.anyIntactOrTouching = true;
