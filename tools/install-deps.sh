@@ -7,7 +7,12 @@ readonly PACKAGES=(
 	build-essential cmake pkg-config bzip2 ca-certificates
 	libboost-all-dev libeigen3-dev libbz2-dev zlib1g-dev libvtk9-dev libgtest-dev
 	python3-dev python3-numpy python3-ipython python3-matplotlib python3-pygraphviz python3-xlib
-	python3-sphinx python3-tk python3-mpmath python3-future)
+	python3-sphinx python3-tk python3-mpmath python3-future
+	# YADE's Qt viewer (feature GUI: gui/CMakeLists.txt and cMake/Find*.cmake of YADE 2025.2.0) and its Python side
+	qtbase5-dev libqt5opengl5-dev libqglviewer-dev-qt5 freeglut3-dev libglu1-mesa-dev libglib2.0-dev
+	pyqt5-dev-tools python3-pyqt5
+	# the viewer test renders offscreen under Xvfb (xvfb-run needs xauth)
+	xvfb xauth)
 
 missing=()
 for pkg in "${PACKAGES[@]}"; do
