@@ -1,0 +1,97 @@
+"""YADE's Qt viewer for refined-DEM scenes: blocks, broken springs coloured by failure mode, Poisson elements.
+
+The blocks are :yref:`Box` es drawn by YADE's ``Gl1_Box``; the broken springs are drawn per segment by
+``Gl1_RdemPhys`` (red tension, blue shear, amber crushing, green outline: a closed crack in contact), the Poisson
+elements by ``GlExtra_RdemPoissonElements`` (off unless asked for). A YADE built without its GUI (``tools/setup.sh``
+without ``--gui``), ``yade -n`` or a missing display leave :func:`available` false; scripts then run headless::
+
+    from rdem import gui
+    if gui.available():
+        gui.view()                  # a 3D view beside the controller YADE opens by itself
+    gui.run(nSteps)                 # O.run(nSteps, True), with the view drawing meanwhile
+"""
+import os
+import time
+
+import yade
+from yade import O
+
+
+def available():
+	"""Whether YADE's Qt viewer can be opened: a YADE with feature QT5 (GUI), started without ``-n``, with a display."""
+	import yade.config
+	import yade.runtime
+	return 'QT5' in yade.config.features and bool(getattr(yade.runtime, 'hasDisplay', False))
+
+
+def _require():
+	if not available():
+		raise RuntimeError('rdem.gui: no Qt viewer here (YADE built without GUI, started with -n, or no DISPLAY); '
+		                   'check rdem.gui.available() first')
+
+
+def configure(poissonElements=False, wireBlocks=True):
+	"""Set YADE's renderer (``yade.qt.Renderer()``) up for the refined DEM and return it: interactions drawn by their
+	physics (``intrPhys``, so ``Gl1_RdemPhys`` draws the broken segments), blocks as wire boxes unless ``wireBlocks`` is
+	False (solid boxes hide the cracks inside the specimen), and one ``GlExtra_RdemPoissonElements`` among the extra
+	drawers, switched off (``dead``) unless ``poissonElements``."""
+	_require()
+	from yade import qt
+	r = qt.Renderer()
+	r.intrPhys = True
+	r.wire = bool(wireBlocks)
+	drawers = [d for d in r.extraDrawers if not isinstance(d, yade.wrapper.GlExtra_RdemPoissonElements)]
+	r.extraDrawers = drawers + [yade.wrapper.GlExtra_RdemPoissonElements(dead=not poissonElements)]
+	return r
+
+
+def view(poissonElements=False, wireBlocks=True, viewDir=(-1.0, -1.6, -0.7), upVector=(0, 0, 1)):
+	"""Open a 3D view (``yade.qt.View()``) of the whole scene seen along ``viewDir`` with ``upVector`` up, the renderer
+	set by :func:`configure`, and return it. Raises RuntimeError when :func:`available` is false."""
+	r = configure(poissonElements=poissonElements, wireBlocks=wireBlocks)
+	from yade import qt
+	v = qt.View()
+	v.upVector = yade.Vector3(*upVector)
+	v.viewDir = yade.Vector3(*viewDir)
+	v.showEntireScene()
+	_processEvents()
+	return v
+
+
+def _processEvents():
+	from PyQt5.QtWidgets import QApplication
+	app = QApplication.instance()
+	if app is not None:
+		app.processEvents()
+
+
+def run(nSteps, poll=0.05):
+	"""``O.run(nSteps, True)``; with the viewer, the Qt events are processed while the simulation thread runs, so the
+	view and the controller keep drawing (a script runs in Qt's thread before YADE's shell starts its event loop).
+	poll: seconds between two rounds of events."""
+	if not available():
+		O.run(nSteps, True)
+		return
+	O.run(nSteps)
+	while O.running:
+		_processEvents()
+		time.sleep(poll)
+	O.wait()  # re-raises an exception of the simulation thread, as O.run(nSteps, True)
+	_processEvents()
+
+
+def snapshot(view, fileName, timeout=20.0):
+	"""Save ``view``'s next frame to ``fileName`` (PNG; ``saveSnapshot`` of YADE's GLViewer, which writes it when it
+	next draws) and wait until the file exists. Raises RuntimeError after ``timeout`` seconds."""
+	_require()
+	fileName = os.path.abspath(fileName)
+	if os.path.exists(fileName):
+		os.remove(fileName)
+	view.saveSnapshot(fileName)
+	end = time.time() + timeout
+	while not (os.path.exists(fileName) and os.path.getsize(fileName) > 0):
+		if time.time() > end:
+			raise RuntimeError('rdem.gui.snapshot: %s not written within %g s' % (fileName, timeout))
+		_processEvents()
+		time.sleep(0.05)
+	return fileName
