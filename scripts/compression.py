@@ -18,6 +18,8 @@ How to run
     build/bin/yade scripts/compression.py                 the paper's scene (see README for its wall time)
     build/bin/yade scripts/compression.py --help          all options
     build/bin/yade -j2 scripts/compression.py --blocks 6  smaller, on two threads
+    build/bin/yade -n scripts/compression.py              without YADE's viewer (which opens, in a YADE built with GUI,
+                                                          with the cracks coloured by failure mode; rdem.gui)
 
 Outputs (in --out, default output/compression): results.json, history.txt (yade.plot's saveDataTxt), plots (PNG),
 ParaView files (*.pvd: blocks from YADE's VTKRecorder, crack faces and Poisson elements from rdem.export).
@@ -59,6 +61,7 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, PyRunner, VTKRecorder, plot
 import rdem
+from rdem import gui
 from rdem.scenes import CompressionTest
 
 os.makedirs(opts.out, exist_ok=True)
@@ -120,9 +123,13 @@ if vtkEvery:
 	]
 
 # 4. Run --------------------------------------------------------------------------------------------------------------
+# With YADE's viewer (a YADE built with GUI, started without -n) a 3D view shows the blocks and the broken springs beside
+# the controller YADE opens; gui.run keeps both drawing while the script waits. Headless, gui.run is O.run(n, True).
+if gui.available():
+	gui.view()
 wallRun = time.time()
 while O.time < tEnd - 0.5 * O.dt:  # to the end displacement, whatever the step
-	O.run(max(1, min(nSteps, int((tEnd - O.time) / O.dt))), True)
+	gui.run(max(1, min(nSteps, int((tEnd - O.time) / O.dt))))
 wall = time.time() - wallRun
 record()
 cracks.close()
@@ -219,4 +226,5 @@ print('compression: apparent nu before cracking %.4f; first broken spring at t =
       (nuBefore, fmt(first.get('time'), '%.4f'), fmt(first.get('stress', None) and first['stress'] * 1e-6, '%.2f'), fmt(failure and failure['time'], '%.4f'),
        fmt(failure and failure['stress'] * 1e-6, '%.2f'), fmt(results['firstTensileFailure']['ftOverStress'], '%.3f'), results['breaks'], O.iter, wall,
        results['stepsPerSecond'], results['microsecondsPerBlockStep'], opts.out))
-sys.exit(0)
+if not gui.available():  # with the viewer, YADE's shell stays, and the view with it
+	sys.exit(0)
