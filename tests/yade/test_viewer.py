@@ -68,8 +68,8 @@ class Viewer(unittest.TestCase):
 
 if __name__ == '__main__':
 	if not gui.available():
-		print('test_viewer: SKIPPED: no Qt viewer (YADE features %s; started with -n or without DISPLAY: %s); '
-		      'it runs under xvfb-run when YADE is built with GUI (tools/setup.sh --gui) and xvfb-run is installed' %
-		      (' '.join(yade.config.features), not getattr(yade.runtime, 'hasDisplay', False)))
+		print('test_viewer: SKIPPED: no Qt viewer here (YADE features: %s, the viewer needs QT5; display: %s); it runs under '
+		      'xvfb-run when YADE is built with its GUI (tools/setup.sh --gui) and xvfb-run is installed' %
+		      (' '.join(yade.config.features), 'yes' if getattr(yade.runtime, 'hasDisplay', False) else 'none or -n'))
 		sys.exit(SKIP)
 	harness.run(Viewer)
