@@ -106,6 +106,42 @@ TEST(SeparationBound, SlackOfAGapIsTheGapLessTheMargin)
 	EXPECT_TRUE(rdem::blocksOverlap(rdem::BlockPair<double>(A, closer), tol));
 }
 
+TEST(SeparationBound, EdgeToEdgeGapGetsNoCertificate)
+{
+	// Two unit cubes with crossed edges: A turned 45° about x (its top edge along x at z = √2/2), B turned 45° about y
+	// and lifted so that its lowest edge (along y) is g above A's. Every face axis overlaps (on A's (0, 1, 1)/√2, B's
+	// projection reaches down to 1 + g/√2 - 0.854 < 0.5), so only the cross product x × y = z separates them, by g:
+	// apart, but no certificate (the face normals give none): tested again at every step.
+	const V3                      h(0.5, 0.5, 0.5);
+	const double                  g = 1e-3, margin = 2e-6 * h.norm();
+	const Block                   A = blockAt(V3::Zero(), Q(Eigen::AngleAxisd(M_PI / 4, V3::UnitX())), h);
+	const Q                       qB(Eigen::AngleAxisd(M_PI / 4, V3::UnitY()));
+	const Block                   B = blockAt(V3(0, 0, std::sqrt(2.0) + g), qB, h);
+	const rdem::BlockPair<double> pair(A, B);
+	for (int i = 0; i < 3; ++i) {
+		EXPECT_LT(tol - pair.overlapA(i), 0) << "face axis " << i << " of A";
+		EXPECT_LT(tol - pair.overlapB(i), 0) << "face axis " << i << " of B";
+	}
+	EXPECT_FALSE(rdem::blocksOverlap(pair, tol));
+	EXPECT_LT(rdem::separationSlack(pair, tol), 0);
+	EXPECT_TRUE(rdem::blocksOverlap(rdem::BlockPair<double>(A, blockAt(B.pos - (g + margin + 2 * tol) * V3::UnitZ(), qB, h)), tol)); // not vacuous
+}
+
+TEST(SeparationBound, AFaceAxisThatCertifiesGivesItsOwnSlack)
+{
+	// B turned by 0.1 rad and 0.2 m beyond A's +x face: A's x axis separates them (B reaches about 0.06 m further
+	// along x than unturned): the slack is the largest over the face normals.
+	const V3     h(0.5, 0.5, 0.5);
+	const double g = 0.2;
+	const Block  A = blockAt(V3::Zero(), Q::Identity(), h), B = blockAt(V3(1 + g, 0.3, -0.2), Q(Eigen::AngleAxisd(0.1, V3(1, 2, 3).normalized())), h);
+	const rdem::BlockPair<double> pair(A, B);
+	double                        face = -1e9;
+	for (int i = 0; i < 3; ++i)
+		face = std::max(face, std::max(tol - pair.overlapA(i), tol - pair.overlapB(i)));
+	EXPECT_GT(face, 0);
+	EXPECT_EQ(rdem::separationSlack(pair, tol), face - 1e-6 * (A.half.norm() + B.half.norm()));
+}
+
 // Moves a block rigidly: its centre by `shift`, its orientation by q, about its centre.
 Block moved(const Block& b, const V3& shift, const Q& q) { return Block { b.pos + shift, q.toRotationMatrix() * b.rot, b.half }; }
 
