@@ -31,7 +31,7 @@ parser.add_argument('--out', default='doc/accuracy-vs-cost.md', help='markdown r
 parser.add_argument('--figure', default='doc/figures/accuracy-vs-cost.png', help='Pareto plot to write')
 parser.add_argument('--replot', default=None, help='re-make the report and plot from the .json of an earlier run, without running')
 parser.add_argument('--child', default=None, help=argparse.SUPPRESS)  # internal: run one point in this process
-opts = parser.parse_args(sys.argv[1:])
+cli = parser.parse_args(sys.argv[1:])
 
 E, NU, RATE, MAX_DISP = 30e9, 0.2, 10e-3, 0.4e-3  # input modulus [Pa] and ratio, loading rate [m/s], give-up displacement [m]
 BASE = dict(blocks=10, springs=2, formulation='consistent', corotational=False, safety=0.8)
@@ -85,12 +85,12 @@ def runPoint(point):
 	            crackDispMm=crack['disp'] * 1e3 if crack else None)
 
 
-if opts.child is not None:
-	rdem.batch.reportChild(runPoint(json.loads(opts.child)))
+if cli.child is not None:
+	rdem.batch.reportChild(runPoint(json.loads(cli.child)))
 	sys.exit(0)
 
 # Sweeps: knob -> list of (label, changes to BASE); the first point of each list is its finest (reference) setting.
-if opts.quick:
+if cli.quick:
 	SWEEPS = {
 	    'blocks per edge': [('%d' % n, dict(blocks=n)) for n in (10, 6, 4)],
 	    'springs per face': [('%d×%d' % (n, n), dict(springs=n)) for n in (3, 2, 1)],
@@ -111,11 +111,11 @@ start = time.time()
 cache = {}
 nPoints = sum(len(v) for v in SWEEPS.values())
 k = 0
-if opts.replot:
-	rows = json.load(open(opts.replot))
+if cli.replot:
+	rows = json.load(open(cli.replot))
 	SWEEPS = {r['knob']: None for r in rows}
 	cache = {json.dumps(r['point'], sort_keys=True): r for r in rows}
-for knob, points in ([] if opts.replot else SWEEPS.items()):
+for knob, points in ([] if cli.replot else SWEEPS.items()):
 	for label, change in points:
 		k += 1
 		point = dict(BASE, **change)
@@ -158,8 +158,8 @@ ax.set_ylabel('worst of |ν error|, |E error|, |crack-stress change| [%]')
 ax.grid(True, which='both', alpha=0.3)
 ax.legend(fontsize=7)
 fig.tight_layout()
-os.makedirs(os.path.dirname(opts.figure), exist_ok=True)
-fig.savefig(opts.figure, dpi=120)
+os.makedirs(os.path.dirname(cli.figure), exist_ok=True)
+fig.savefig(cli.figure, dpi=120)
 
 pct = lambda x: '%+.2f %%' % (100 * x) if x is not None else '–'
 lines = [
@@ -169,7 +169,7 @@ lines = [
     'base setting: %s. Errors of the apparent ν and E against the input; crack change: mean stress at the first broken spring against the '
     'finest point of all (the first row).' % (' '.join(sys.argv[1:]), time.time() - start, time.strftime('%Y-%m-%d'), os.cpu_count(), os.getloadavg()[0],
                                                  ', '.join('%s = %s' % kv for kv in BASE.items())), '',
-    '![Pareto plot](figures/%s)' % os.path.basename(opts.figure), '',
+    '![Pareto plot](figures/%s)' % os.path.basename(cli.figure), '',
     '| knob | value | blocks | Δt [µs] | steps | wall [s] | µs per block-step | memory [MB] | ν error | E error | first crack [MPa] | crack change |',
     '|---|---|---|---|---|---|---|---|---|---|---|---|'
 ]
@@ -190,9 +190,9 @@ for target in (0.01, 0.05, 0.10):
 		lines.append('| %d %% | %s = %s | %.1f | %.2f %% |' % (round(100 * target), best['knob'], best['label'], best['wall'], 100 * worst(best)))
 	else:
 		lines.append('| %d %% | none of the points | | |' % round(100 * target))
-with open(opts.out, 'w') as f:
+with open(cli.out, 'w') as f:
 	f.write('\n'.join(lines) + '\n')
-with open(os.path.splitext(opts.out)[0] + '.json', 'w') as f:
+with open(os.path.splitext(cli.out)[0] + '.json', 'w') as f:
 	json.dump(rows, f, indent=1)
-print('accuracy_vs_cost: %d points in %.0f s; report in %s, plot in %s' % (len(cache), time.time() - start, opts.out, opts.figure))
+print('accuracy_vs_cost: %d points in %.0f s; report in %s, plot in %s' % (len(cache), time.time() - start, cli.out, cli.figure))
 sys.exit(0)

@@ -64,7 +64,7 @@ parser.add_argument('--repeat', type=int, default=2, help='run the whole plan th
 parser.add_argument('--out', default='doc/benchmark.md', help='markdown table to write (default doc/benchmark.md)')
 parser.add_argument('--collapse-blocks', type=int, default=22, help='blocks per edge of the collapsing cube (default 22)')
 parser.add_argument('--child', default=None, help=argparse.SUPPRESS)  # internal: run one case in this process
-opts = parser.parse_args(sys.argv[1:])
+cli = parser.parse_args(sys.argv[1:])
 
 
 # Effects added one at a time to the paper's geometry: (label, CompressionTest / engine options).
@@ -279,12 +279,24 @@ def runCount(spec):
 	return dict(bodies=len(O.bodies), steps=spec['steps'], interactions=len(O.interactions.all()), real=sum(1 for I in O.interactions if I.isReal))
 
 
+def pluginLibrary():
+	"""Path of the plugin library this process loaded (libpkg_rdem.so, from /proc/self/maps), else the checkout's build."""
+	try:
+		with open('/proc/self/maps') as f:
+			for line in f:
+				if line.rstrip().endswith('libpkg_rdem.so'):
+					return line.split()[-1]
+	except OSError:
+		pass
+	return os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build', 'lib', 'libpkg_rdem.so')
+
+
 def crackedState():
 	"""Path of the paper scene 5000 steps after its first broken spring, saved by a native run of this build (the saved
 	attributes follow the build) into the system's temporary folder; made if missing (about a minute)."""
 	import hashlib
 	import tempfile
-	with open(os.path.join(os.path.dirname(rdem.batch.LAUNCHER), '..', 'lib', 'libpkg_rdem.so'), 'rb') as f:
+	with open(pluginLibrary(), 'rb') as f:
 		build = hashlib.sha1(f.read()).hexdigest()[:12]
 	path = os.path.join(tempfile.gettempdir(), 'rdem-paper-cracked-%s.yade.gz' % build)
 	if not os.path.exists(path):
@@ -327,36 +339,36 @@ def child(spec):
 	rdem.batch.reportChild(res)
 
 
-if opts.child is not None:
-	child(json.loads(opts.child))
+if cli.child is not None:
+	child(json.loads(cli.child))
 	sys.exit(0)
 
-steps = opts.steps // 3 if opts.quick else opts.steps
-warmup = opts.warmup
+steps = cli.steps // 3 if cli.quick else cli.steps
+warmup = cli.warmup
 plan = []  # (section, label, spec, threads)
-if 'paper' in opts.cases:
+if 'paper' in cli.cases:
 	for th in (1, 2):
 		plan.append(('paper', 'refined DEM, paper scene', dict(kind='rdem', steps=steps, warmup=warmup), th))
-if 'crack' in opts.cases:
+if 'crack' in cli.cases:
 	for th in (1, 2):
 		plan.append(('crack', 'paper scene to its first broken spring', dict(kind='crack'), th))
-if 'phases' in opts.cases:
+if 'phases' in cli.cases:
 	plan.append(('phases', 'paper main job, intact and cracked phases', dict(kind='phases'), 1))
-if 'collapse' in opts.cases:
-	nc = opts.collapse_blocks
+if 'collapse' in cli.cases:
+	nc = cli.collapse_blocks
 	if nc < 2:
 		sys.exit('--collapse-blocks %d: must be >= 2' % nc)
 	for th in (1, 2):
 		plan.append(('collapse', 'collapsing cube, %d³ blocks' % nc,
 		             dict(kind='collapse', blocks=nc, steps=max(50, int(steps * 1200 / nc**3)), warmup=min(warmup, max(50, int(steps * 1200 / nc**3)))), th))
-if 'cpm' in opts.cases:
+if 'cpm' in cli.cases:
 	for th in (1, 2):
 		plan.append(('paper', 'YADE CpmMat spheres, same grid', dict(kind='cpm', steps=steps, warmup=warmup), th))
-if 'effects' in opts.cases:
+if 'effects' in cli.cases:
 	for label, options in EFFECTS:
 		plan.append(('effects', label, dict(kind='rdem', options=options, steps=steps, warmup=warmup), 1))
-if 'scaling' in opts.cases:
-	sizes = opts.sizes or ((10, 22) if opts.quick else (10, 22, 46))
+if 'scaling' in cli.cases:
+	sizes = cli.sizes or ((10, 22) if cli.quick else (10, 22, 46))
 	if min(sizes) < 2 or len(set(sizes)) != len(sizes):
 		sys.exit('--sizes %s: blocks per edge must be distinct integers >= 2' % ' '.join(map(str, sizes)))
 	for n in sorted(sizes):
@@ -365,15 +377,15 @@ if 'scaling' in opts.cases:
 		plan.append(('scaling', '%d³ blocks' % n, spec, 1))
 		plan.append(('scaling-cpm', '%d³ CpmMat spheres' % n, dict(spec, kind='cpm'), 1))
 
-if opts.repeat < 1:
-	sys.exit('--repeat %d: must be >= 1' % opts.repeat)
+if cli.repeat < 1:
+	sys.exit('--repeat %d: must be >= 1' % cli.repeat)
 # Round robin: every case once per round, so that a slow phase of the machine does not hit one case only; each case
 # keeps its fastest round, and the spread over the rounds is reported.
 results = [None] * len(plan)
 start = time.time()
-for rnd in range(opts.repeat):
+for rnd in range(cli.repeat):
 	for k, (section, label, spec, th) in enumerate(plan):
-		print('benchmark round %d/%d, case %d/%d: %s, %d thread(s) ...' % (rnd + 1, opts.repeat, k + 1, len(plan), label, th), flush=True)
+		print('benchmark round %d/%d, case %d/%d: %s, %d thread(s) ...' % (rnd + 1, cli.repeat, k + 1, len(plan), label, th), flush=True)
 		res = rdem.batch.runChild(spec, th)
 		res.update(section=section, label=label)
 		print('    %.0f steps/s, %.3f us per body-step (%.0f s so far)' % (res['stepsPerSecond'], res['usPerBodyStep'], time.time() - start), flush=True)
@@ -386,7 +398,7 @@ for rnd in range(opts.repeat):
 
 count = None
 cracked = None
-if 'instructions' in opts.cases:
+if 'instructions' in cli.cases:
 	print('benchmark: instructions per block-step under callgrind (about a minute) ...', flush=True)
 	# difference of 220 and 20 steps: the first step's cold Lanczos estimate of the time step (RdemTimeStepper checks the
 	# fixed 2 µs) alone costs about 0.4e9 instructions, a fifth of 200 steps
@@ -401,7 +413,7 @@ if 'instructions' in opts.cases:
 	cracked['perBlockStep'] = cracked['instructions'] / 100 / cracked['bodies']
 	print('    %.0f instructions per block-step (%.2f x intact)' % (cracked['perBlockStep'], cracked['perBlockStep'] / count['perBlockStep']), flush=True)
 misses = None
-if 'misses' in opts.cases:
+if 'misses' in cli.cases:
 	print('benchmark: last-level cache misses per block-step of the 22³ cube under callgrind (about 5 minutes) ...', flush=True)
 	misses = countInstructions(steps=11, blocks=22, cacheSim=True)
 	print('    %.1f last-level misses (%.0f instructions) per block-step' % (misses['llMissesPerBlockStep'], misses['perBlockStep']), flush=True)
@@ -416,7 +428,7 @@ lines = [
     'each row a fresh process, %d warm-up steps, then 20 timed windows of `O.step()` loops: the fastest window (the speed of the code) and the median one '
     '(this virtual machine\'s speed varies by up to 1.5× from second to second); the whole plan ran %d times round robin, each row is its case\'s '
     'fastest round and "rounds" lists every round\'s fastest window [µs per body-step]. See doc/performance.md for the discussion.' %
-    (' '.join(sys.argv[1:]), time.strftime('%Y-%m-%d'), os.cpu_count(), load, warmup, opts.repeat), ''
+    (' '.join(sys.argv[1:]), time.strftime('%Y-%m-%d'), os.cpu_count(), load, warmup, cli.repeat), ''
 ]
 rounds = lambda r: ' '.join('%.3f' % x for x in r['rounds'])
 paper = [r for r in results if r['section'] == 'paper']
@@ -517,7 +529,7 @@ if models:
 		import matplotlib
 		matplotlib.use('Agg')
 		import matplotlib.pyplot as plt
-		figure = os.path.join(os.path.dirname(opts.out), 'figures', os.path.splitext(os.path.basename(opts.out))[0] + '.png')
+		figure = os.path.join(os.path.dirname(cli.out), 'figures', os.path.splitext(os.path.basename(cli.out))[0] + '.png')
 		os.makedirs(os.path.dirname(figure), exist_ok=True)
 		fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
 		for (label, rows), colour in zip(models, ('C0', 'C1')):
@@ -540,10 +552,10 @@ if models:
 		right.legend(fontsize='small', loc='upper left')
 		fig.tight_layout()
 		fig.savefig(figure, dpi=110)
-		lines += ['![scaling](%s)' % os.path.relpath(figure, os.path.dirname(opts.out) or '.'), '']
-with open(opts.out, 'w') as f:
+		lines += ['![scaling](%s)' % os.path.relpath(figure, os.path.dirname(cli.out) or '.'), '']
+with open(cli.out, 'w') as f:
 	f.write('\n'.join(lines))
-with open(os.path.splitext(opts.out)[0] + '.json', 'w') as f:
+with open(os.path.splitext(cli.out)[0] + '.json', 'w') as f:
 	json.dump(results, f, indent=1)
-print('benchmark: %d cases in %.0f s; table in %s' % (len(results), time.time() - start, opts.out))
+print('benchmark: %d cases in %.0f s; table in %s' % (len(results), time.time() - start, cli.out))
 sys.exit(0)

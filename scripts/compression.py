@@ -44,15 +44,15 @@ parser.add_argument('--dt', default='2e-6', help="time step [s] (default 2e-6, a
 parser.add_argument('--out', default='output/compression', help='output folder (default output/compression)')
 parser.add_argument('--vtk-every', type=float, default=0.05, help='ParaView output every this displacement [mm] (default 0.05; 0 = none)')
 parser.add_argument('--threads', type=int, default=None, help='OpenMP threads; same as yade -jN (given here, it must match -j)')
-opts = parser.parse_args(sys.argv[1:])
-if opts.threads is not None and opts.threads != yade.runtime.ompThreads:  # noqa: F821 (yade is in the launcher's globals)
+cli = parser.parse_args(sys.argv[1:])
+if cli.threads is not None and cli.threads != yade.runtime.ompThreads:  # noqa: F821 (yade is in the launcher's globals)
 	sys.exit('--threads %d given but YADE runs %d threads: start it as  build/bin/yade -j%d scripts/compression.py' %
-	         (opts.threads, yade.runtime.ompThreads, opts.threads))  # noqa: F821
+	         (cli.threads, yade.runtime.ompThreads, cli.threads))  # noqa: F821
 try:
-	dt = None if opts.dt == 'auto' else float(opts.dt)
+	dt = None if cli.dt == 'auto' else float(cli.dt)
 except ValueError:
-	sys.exit("--dt = %s: must be a number of seconds > 0 or 'auto'" % opts.dt)
-for name, value in (('rate', opts.rate), ('end', opts.end), ('dt', 1 if dt is None else dt)):
+	sys.exit("--dt = %s: must be a number of seconds > 0 or 'auto'" % cli.dt)
+for name, value in (('rate', cli.rate), ('end', cli.end), ('dt', 1 if dt is None else dt)):
 	if not value > 0:
 		sys.exit('--%s = %g: must be > 0' % (name, value))
 
@@ -64,20 +64,20 @@ import rdem
 from rdem import gui
 from rdem.scenes import CompressionTest
 
-os.makedirs(opts.out, exist_ok=True)
+os.makedirs(cli.out, exist_ok=True)
 
 # 2. Scene ------------------------------------------------------------------------------------------------------------
 O.reset()
 wall0 = time.time()
-test = CompressionTest(blocksPerEdge=opts.blocks,
-                       segmentsPerEdge=opts.springs,
-                       poisson=opts.nu,
-                       formulation=opts.formulation,
-                       corotational=opts.corotational,
-                       plateYoung=opts.plate_young * 1e9 if opts.plate_young is not None else None,
-                       rate=opts.rate * 1e-3,
+test = CompressionTest(blocksPerEdge=cli.blocks,
+                       segmentsPerEdge=cli.springs,
+                       poisson=cli.nu,
+                       formulation=cli.formulation,
+                       corotational=cli.corotational,
+                       plateYoung=cli.plate_young * 1e9 if cli.plate_young is not None else None,
+                       rate=cli.rate * 1e-3,
                        dt=dt)
-tEnd = opts.end / opts.rate  # [s]
+tEnd = cli.end / cli.rate  # [s]
 critical = rdem.timeStepper().estimate()
 dtRun = dt if dt is not None else rdem.timeStepper().safety * critical  # the automatic step is updated every 100 steps
 nSteps = int(round(tEnd / dtRun))  # exact for a fixed step; about, for the automatic one
@@ -90,8 +90,8 @@ plot.reset()
 plot.plots = {'disp': ('stress', ), 't': ('nu', )}
 history = plot.data
 first = {}
-vtkEvery = int(round(opts.vtk_every * 1e-3 / (opts.rate * 1e-3) / dtRun)) if opts.vtk_every > 0 else 0
-cracks = rdem.CrackExport(os.path.join(opts.out, 'vtk', ''))
+vtkEvery = int(round(cli.vtk_every * 1e-3 / (cli.rate * 1e-3) / dtRun)) if cli.vtk_every > 0 else 0
+cracks = rdem.CrackExport(os.path.join(cli.out, 'vtk', ''))
 
 
 def record():
@@ -118,7 +118,7 @@ def report():
 O.engines += [PyRunner(command='record()', iterPeriod=max(1, nSteps // 2000)), PyRunner(command='report()', realPeriod=5)]
 if vtkEvery:
 	O.engines += [
-	        VTKRecorder(fileName=os.path.join(opts.out, 'vtk', 'blocks.'), recorders=['boxes'], iterPeriod=vtkEvery),
+	        VTKRecorder(fileName=os.path.join(cli.out, 'vtk', 'blocks.'), recorders=['boxes'], iterPeriod=vtkEvery),
 	        PyRunner(command='cracks.write()', iterPeriod=vtkEvery)
 	]
 
@@ -150,7 +150,7 @@ for k in range(1, len(history['t'])):
 		failure = dict(time=history['t'][k - 1], stress=history['stress'][k - 1], disp=history['disp'][k - 1], breaks=history['tension'][k - 1] + history['shear'][k - 1])
 		break
 results = dict(
-        input=vars(opts),
+        input=vars(cli),
         blocks=len(test.ids),
         specimen=dict(blocksPerEdge=test.n, size=test.size, x0=0.0, y0=0.0),
         tensileStrength=test.material.tensileStrength,
@@ -177,24 +177,24 @@ results = dict(
         stepsPerSecond=O.iter / wall,
         microsecondsPerBlockStep=1e6 * wall / (O.iter * len(test.ids)),
         history=history)
-with open(os.path.join(opts.out, 'results.json'), 'w') as f:
+with open(os.path.join(cli.out, 'results.json'), 'w') as f:
 	json.dump(results, f, indent=1)
-plot.saveDataTxt(os.path.join(opts.out, 'history.txt'))
+plot.saveDataTxt(os.path.join(cli.out, 'history.txt'))
 
 # Figures: apparent Poisson's ratio vs time (paper Fig. 9b), stress vs displacement, crack pattern (paper Fig. 10).
 fig, ax = plt.subplots(figsize=(6, 4))
 ax.plot([t for t, _ in nuHist], [nu for _, nu in nuHist], label='apparent ν')
-ax.axhline(opts.nu, color='k', ls=':', label='input ν = %g' % opts.nu)
+ax.axhline(cli.nu, color='k', ls=':', label='input ν = %g' % cli.nu)
 if first:
 	ax.axvline(first['time'], color='orange', ls=':', label='first broken spring')
 if failure:
 	ax.axvline(failure['time'], color='r', ls='--', label='tensile failure (ν departs)')
 ax.set_xlabel('time [s]')
 ax.set_ylabel("apparent Poisson's ratio")
-ax.set_ylim(0, max(0.5, 2 * opts.nu))
+ax.set_ylim(0, max(0.5, 2 * cli.nu))
 ax.legend()
 fig.tight_layout()
-fig.savefig(os.path.join(opts.out, 'apparent_poisson.png'), dpi=120)
+fig.savefig(os.path.join(cli.out, 'apparent_poisson.png'), dpi=120)
 
 fig, ax = plt.subplots(figsize=(6, 4))
 ax.plot([1e3 * d for d in history['disp']], [1e-6 * s for s in history['stress']])
@@ -207,7 +207,7 @@ if first or failure:
 ax.set_xlabel('displacement of the loading plate [mm]')
 ax.set_ylabel('mean compressive stress [MPa]')
 fig.tight_layout()
-fig.savefig(os.path.join(opts.out, 'stress_displacement.png'), dpi=120)
+fig.savefig(os.path.join(cli.out, 'stress_displacement.png'), dpi=120)
 
 segs = rdem.brokenSegments(cracks.snapshot)
 fig, axes = plt.subplots(1, 2, figsize=(10, 5))
@@ -218,13 +218,13 @@ for ax, (u, v, name) in zip(axes, ((0, 2, 'front view (x-z)'), (0, 1, 'top view 
 	ax.set_xlabel('xyz'[u] + ' [m]')
 	ax.set_ylabel('xyz'[v] + ' [m]')
 fig.tight_layout()
-fig.savefig(os.path.join(opts.out, 'crack_pattern.png'), dpi=120)
+fig.savefig(os.path.join(cli.out, 'crack_pattern.png'), dpi=120)
 
 fmt = lambda x, f: f % x if x is not None else 'none'
 print('compression: apparent nu before cracking %.4f; first broken spring at t = %s s, %s MPa; tensile failure (nu departs) at t = %s s, '
       '%s MPa (f_t/sigma = %s); breaks %s; %d steps in %.1f s (%.0f steps/s, %.3f us per block-step); results in %s' %
       (nuBefore, fmt(first.get('time'), '%.4f'), fmt(first.get('stress', None) and first['stress'] * 1e-6, '%.2f'), fmt(failure and failure['time'], '%.4f'),
        fmt(failure and failure['stress'] * 1e-6, '%.2f'), fmt(results['firstTensileFailure']['ftOverStress'], '%.3f'), results['breaks'], O.iter, wall,
-       results['stepsPerSecond'], results['microsecondsPerBlockStep'], opts.out))
+       results['stepsPerSecond'], results['microsecondsPerBlockStep'], cli.out))
 if not gui.available():  # with the viewer, YADE's shell stays, and the view with it
 	sys.exit(0)

@@ -58,10 +58,10 @@ r = parser.add_argument_group('run')
 r.add_argument('--duration', type=float, default=1.0, help='simulated time after settling [s] (default 1.0)')
 r.add_argument('--out', default='output/earthquake', help='output folder (default output/earthquake)')
 r.add_argument('--vtk-every', type=float, default=0.02, help='ParaView output every this time [s] (default 0.02; 0 = none)')
-opts = parser.parse_args(sys.argv[1:])
+cli = parser.parse_args(sys.argv[1:])
 for name in ('amplitude', 'period', 'scale', 'duration'):
-	if not getattr(opts, name) > 0:
-		sys.exit('--%s = %g: must be > 0' % (name, getattr(opts, name)))
+	if not getattr(cli, name) > 0:
+		sys.exit('--%s = %g: must be > 0' % (name, getattr(cli, name)))
 
 import matplotlib
 matplotlib.use('Agg')
@@ -71,38 +71,38 @@ from yade.wrapper import RdemMat, RdemJoint
 import rdem
 from rdem import ground_motion as gm
 
-os.makedirs(os.path.join(opts.out, 'vtk'), exist_ok=True)
+os.makedirs(os.path.join(cli.out, 'vtk'), exist_ok=True)
 G = gm.G
 
 # 1. Ground motion ----------------------------------------------------------------------------------------------------
 try:
-	if opts.record:
-		rec = gm.readAT2(opts.record)
-	elif opts.columns:
-		rec = gm.readColumns(opts.columns, units=opts.units)
-	elif opts.pulse == 'sine':
-		rec = gm.sinePulse(opts.amplitude * G, opts.period, dt=opts.period / 200, before=0.05, after=0.05)
-	elif opts.pulse == 'ricker':
-		rec = gm.rickerWavelet(opts.amplitude * G, 1 / opts.period, dt=opts.period / 200)
+	if cli.record:
+		rec = gm.readAT2(cli.record)
+	elif cli.columns:
+		rec = gm.readColumns(cli.columns, units=cli.units)
+	elif cli.pulse == 'sine':
+		rec = gm.sinePulse(cli.amplitude * G, cli.period, dt=cli.period / 200, before=0.05, after=0.05)
+	elif cli.pulse == 'ricker':
+		rec = gm.rickerWavelet(cli.amplitude * G, 1 / cli.period, dt=cli.period / 200)
 	else:
-		rec = gm.sweep(opts.amplitude * G, 0.5, 10.0, opts.period, dt=0.002)
-	degree = opts.baseline if opts.baseline is not None else (2 if (opts.record or opts.columns) else 0)
-	rec = (rec.baselineCorrected(degree) if degree > 0 else rec).scaled(opts.scale)
+		rec = gm.sweep(cli.amplitude * G, 0.5, 10.0, cli.period, dt=0.002)
+	degree = cli.baseline if cli.baseline is not None else (2 if (cli.record or cli.columns) else 0)
+	rec = (rec.baselineCorrected(degree) if degree > 0 else rec).scaled(cli.scale)
 except (ValueError, FileNotFoundError) as e:
 	sys.exit('earthquake: %s' % e)
-motion = gm.GroundMotion(**{opts.direction: rec})
+motion = gm.GroundMotion(**{cli.direction: rec})
 
 # 2. Structure, settled under gravity --------------------------------------------------------------------------------
 wall0 = time.time()
 brick = O.materials.append(RdemMat(young=16.7e9, poisson=0.15, density=1800, tensileStrength=3e6, label='brick'))
-joint = RdemJoint(young=2e9, poisson=0.25, tensileStrength=opts.bond_ft * 1e6, cohesion=opts.bond_c * 1e6, frictionAngle=math.atan(0.75))
+joint = RdemJoint(young=2e9, poisson=0.25, tensileStrength=cli.bond_ft * 1e6, cohesion=cli.bond_c * 1e6, frictionAngle=math.atan(0.75))
 
 
 def makeWall():
 	"""The wall on its base beam, with Poisson cells and failure on the total stress; returns (the wall, its block ids, the
 	base beam's, the top course's)."""
 	O.engines = rdem.engines(poisson='consistent', failureStress='total', contactSamples=1, gravity=(0, 0, -9.81), damping=0.5)
-	w = rdem.masonry.wall(opts.length, opts.height, opts.thickness, bond=opts.bond, blocksPerBrick=opts.blocks, baseBeam=0.1, brickMaterial=brick,
+	w = rdem.masonry.wall(cli.length, cli.height, cli.thickness, bond=cli.bond, blocksPerBrick=cli.blocks, baseBeam=0.1, brickMaterial=brick,
 	                      jointMaterial=joint)
 	rdem.poissonEngine().elements = 'cells'
 	rdem.poissonEngine().build(w.ids)
@@ -115,16 +115,16 @@ def makeBuilding():
 	block ids, the base slab's, the walls' top courses')."""
 	O.engines = rdem.engines(poisson=None, contactSamples=1, gravity=(0, 0, -9.81), damping=0.5)
 	L, C = 0.26, 0.065  # modules of the default brick and joint along a wall and up it [m]
-	courses = int(round((opts.height + 0.01) / C))
+	courses = int(round((cli.height + 0.01) / C))
 	door = (L - 0.005, 0.0, 2 * L, (2 * courses // 3) * C - 0.005)
 	window = (L - 0.005, (courses // 3) * C - 0.005, 2 * L, (courses // 3) * C)
-	b = rdem.earthquake.building(opts.length, opts.width, opts.height, brick, joint, thickness=opts.thickness, bond=opts.bond,
+	b = rdem.earthquake.building(cli.length, cli.width, cli.height, brick, joint, thickness=cli.thickness, bond=cli.bond,
 	                             openings={'front': [door], 'back': [window]})
 	return b, b.ids, b.base, b.top
 
 
 try:
-	structure, ids, baseIds, top = makeWall() if opts.structure == 'wall' else makeBuilding()
+	structure, ids, baseIds, top = makeWall() if cli.structure == 'wall' else makeBuilding()
 except ValueError as e:
 	sys.exit('earthquake: %s' % e)
 for i in baseIds:
@@ -135,18 +135,18 @@ settle = 0.05  # [s] with Cundall's damping: the structure comes to rest under i
 while O.time < settle:
 	O.step()
 newton.damping = 0.0
-shaker = rdem.earthquake.shaker(motion, ids=baseIds, mode=opts.mode)
+shaker = rdem.earthquake.shaker(motion, ids=baseIds, mode=cli.mode)
 shaker.times = [t + O.time for t in shaker.times]  # the motion starts now
 O.trackEnergy = True
 x0 = {i: Vector3(O.bodies[i].state.pos) for i in top}
 b0 = Vector3(O.bodies[baseIds[0]].state.pos)
 t0 = O.time
 print('earthquake: %s; %s, PGA %.3g g along %s, %s; settled in %.3f s; step %.3g s' %
-      (structure, rec.name or opts.pulse, rec.pga / G, opts.direction, opts.mode, settle, O.dt),
+      (structure, rec.name or cli.pulse, rec.pga / G, cli.direction, cli.mode, settle, O.dt),
       flush=True)
 
 # 3. Run -------------------------------------------------------------------------------------------------------------
-axis = 'xy'.index(opts.direction)
+axis = 'xy'.index(cli.direction)
 history = dict(t=[], groundAcc=[], groundDisp=[], topDrift=[], breaks=[], input=[], dissipated=[], kinetic=[], total=[])
 
 
@@ -165,26 +165,26 @@ def record():
 	history['total'].append(O.energy.total())
 
 
-lastReport, vtkNext, cracks = time.time(), 0.0, rdem.CrackExport(os.path.join(opts.out, 'vtk', ''))
+lastReport, vtkNext, cracks = time.time(), 0.0, rdem.CrackExport(os.path.join(cli.out, 'vtk', ''))
 runStart = time.time()
-while O.time - t0 < opts.duration:
+while O.time - t0 < cli.duration:
 	for _ in range(50):
 		O.step()
 	record()
-	if opts.vtk_every > 0 and O.time - t0 >= vtkNext:
-		VTKRecorder(fileName=os.path.join(opts.out, 'vtk', 'blocks.'), recorders=['boxes'])()
+	if cli.vtk_every > 0 and O.time - t0 >= vtkNext:
+		VTKRecorder(fileName=os.path.join(cli.out, 'vtk', 'blocks.'), recorders=['boxes'])()
 		cracks.write()
-		vtkNext += opts.vtk_every
+		vtkNext += cli.vtk_every
 	if time.time() - lastReport > 5:
 		lastReport = time.time()
-		print('t = %.3f of %.3g s, top drift %.4f m, broken springs %d' % (O.time - t0, opts.duration, history['topDrift'][-1], history['breaks'][-1]), flush=True)
+		print('t = %.3f of %.3g s, top drift %.4f m, broken springs %d' % (O.time - t0, cli.duration, history['topDrift'][-1], history['breaks'][-1]), flush=True)
 cracks.close()
 runTime = time.time() - runStart
 segs = rdem.brokenSegments(cracks.snapshot)
-results = dict(input=vars(opts), structure=repr(structure), blocks=len(ids), pga=rec.pga, recordName=rec.name, timeStep=O.dt, steps=O.iter,
+results = dict(input=vars(cli), structure=repr(structure), blocks=len(ids), pga=rec.pga, recordName=rec.name, timeStep=O.dt, steps=O.iter,
                maxTopDrift=max(abs(d) for d in history['topDrift']), finalTopDrift=history['topDrift'][-1], brokenSprings=history['breaks'][-1],
                wallSeconds=runTime, microsecondsPerBlockStep=1e6 * runTime / max(1, O.iter * len(ids)), history=history)
-with open(os.path.join(opts.out, 'results.json'), 'w') as f:
+with open(os.path.join(cli.out, 'results.json'), 'w') as f:
 	json.dump(results, f, indent=1)
 
 fig, axes = plt.subplots(3, 1, figsize=(7, 8), sharex=True)
@@ -200,7 +200,7 @@ axes[2].set_ylabel('energy [J]')
 axes[2].set_xlabel('time since the motion began [s]')
 axes[2].legend()
 fig.tight_layout()
-fig.savefig(os.path.join(opts.out, 'earthquake.png'), dpi=120)
+fig.savefig(os.path.join(cli.out, 'earthquake.png'), dpi=120)
 fig, axes = plt.subplots(1, 2, figsize=(10, 5))
 for ax, (u, name) in zip(axes, ((0, 'front (x-z)'), (1, 'side (y-z)'))):
 	ax.scatter([s['point'][u] for s in segs], [s['point'][2] for s in segs], s=4, c=['r' if s['state'] == 1 else 'b' for s in segs])
@@ -209,7 +209,7 @@ for ax, (u, name) in zip(axes, ((0, 'front (x-z)'), (1, 'side (y-z)'))):
 	ax.set_xlabel('xyz'[u] + ' [m]')
 	ax.set_ylabel('z [m]')
 fig.tight_layout()
-fig.savefig(os.path.join(opts.out, 'cracks.png'), dpi=120)
+fig.savefig(os.path.join(cli.out, 'cracks.png'), dpi=120)
 print('earthquake: largest top drift %.4f m, final %.4f m; %d broken springs; %d steps in %.1f s (%.3f us per block-step); results in %s' %
-      (results['maxTopDrift'], results['finalTopDrift'], results['brokenSprings'], O.iter, runTime, results['microsecondsPerBlockStep'], opts.out))
+      (results['maxTopDrift'], results['finalTopDrift'], results['brokenSprings'], O.iter, runTime, results['microsecondsPerBlockStep'], cli.out))
 sys.exit(0)

@@ -35,10 +35,10 @@ parser.add_argument('--steps', type=int, default=2000, help='timed steps per rou
 parser.add_argument('--rounds', type=int, default=5, help='rounds, alternating the walls (default 5)')
 parser.add_argument('--no-setup', action='store_true', help='skip the 1e5-block set-up timing')
 parser.add_argument('--out', default='doc/masonry-cost.md', help='markdown report (default doc/masonry-cost.md; a .json beside it)')
-opts = parser.parse_args(sys.argv[1:])
+cli = parser.parse_args(sys.argv[1:])
 for name in ('bricks', 'courses', 'steps', 'rounds'):
-	if getattr(opts, name) < 1:
-		sys.exit('--%s = %d: must be >= 1' % (name, getattr(opts, name)))
+	if getattr(cli, name) < 1:
+		sys.exit('--%s = %d: must be >= 1' % (name, getattr(cli, name)))
 
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
@@ -94,20 +94,20 @@ def timing(w):
 	for e in O.engines:
 		e.execTime = 0
 	t = time.perf_counter()
-	for _ in range(opts.steps):
+	for _ in range(cli.steps):
 		O.step()
 	total = time.perf_counter() - t
 	O.timingEnabled = False
 	byName = {type(e).__name__: e.execTime * 1e-9 for e in O.engines}  # execTime in ns
-	per = 1e6 / (opts.steps * len(w.ids))
+	per = 1e6 / (cli.steps * len(w.ids))
 	return dict(poisson=(byName.get('RdemCellStrainUpdater', 0) + byName['RdemPoissonEngine']) * per, loop=byName['InteractionLoop'] * per, step=total * per)
 
 
-results = dict(input=vars(opts), rounds=[])
-for r in range(opts.rounds):
+results = dict(input=vars(cli), rounds=[])
+for r in range(cli.rounds):
 	for case in ('cube', 'stack', 'stack-cells', 'running'):
 		bond = case.split('-')[0]
-		w = cube() if case == 'cube' else wall(bond, opts.bricks, opts.courses, elements='cells' if case.endswith('cells') else 'auto')[0]
+		w = cube() if case == 'cube' else wall(bond, cli.bricks, cli.courses, elements='cells' if case.endswith('cells') else 'auto')[0]
 		eng = rdem.poissonEngine()
 		row = dict(round=r, bond=case, blocks=len(w.ids), elements=eng.nElements, cells=eng.nCells, **timing(w))
 		results['rounds'].append(row)
@@ -130,22 +130,22 @@ def ratio(a, b):
 summary['poissonRatio'] = ratio('running', 'stack')
 summary['poissonRatioCube'] = ratio('running', 'cube')
 results['summary'] = summary
-if not opts.no_setup:
+if not cli.no_setup:
 	w, setup = wall('running', 60, 45, blocks=(3, 1, 6))
 	results['setup'] = dict(blocks=len(w.ids), bonds=w.nBonds, cells=rdem.poissonEngine().nCells, **setup)
 	print('set-up of a %d-block wall: rdem.masonry.wall %.1f s, Poisson cells %.1f s, first step %.2f s' %
 	      (len(w.ids), setup['wall'], setup['poisson'], setup['firstStep']),
 	      flush=True)
 
-with open(os.path.splitext(opts.out)[0] + '.json', 'w') as f:
+with open(os.path.splitext(cli.out)[0] + '.json', 'w') as f:
 	json.dump(results, f, indent=1)
 fmt = lambda t: '%.4f (%.4f–%.4f)' % t
-with open(opts.out, 'w') as f:
+with open(cli.out, 'w') as f:
 	f.write('# What the Poisson effect costs on masonry\n\n')
 	f.write('Made by `build/bin/yade -n scripts/masonry_cost.py --bricks %d --courses %d --steps %d --rounds %d` on %s (one thread). '
 	        'Walls of %d stretchers × %d courses, two wythes, 250×120×55 mm bricks, one block per brick, 10 mm interface joints, '
 	        'elastic vertical compression between beams. µs per block and step: median (min–max) over the rounds.\n\n' %
-	        (opts.bricks, opts.courses, opts.steps, opts.rounds, time.strftime('%Y-%m-%d'), opts.bricks, opts.courses))
+	        (cli.bricks, cli.courses, cli.steps, cli.rounds, time.strftime('%Y-%m-%d'), cli.bricks, cli.courses))
 	f.write('| wall | blocks | Poisson | Poisson part (updater + engine) | interaction loop | whole step |\n|---|---|---|---|---|---|\n')
 	for bond, label in (('cube', "the paper's scene, consistent (a cube of 10³ blocks and two plates)"), ('stack', 'stack bond (grid)'),
 	                    ('stack-cells', 'stack bond (grid), cells asked for'), ('running', 'running bond')):
@@ -159,5 +159,5 @@ with open(opts.out, 'w') as f:
 		f.write('\nSet-up of a running-bond wall of %d blocks (60 stretchers × 45 courses, two wythes, bricks of 3×1×6 blocks, %d bonds, %d cells): '
 		        '`rdem.masonry.wall` (layout, bodies, bonds) %.1f s, `RdemPoissonEngine.build` %.1f s, first step %.2f s: **%.1f s** in all; goal < 30 s.\n' %
 		        (s['blocks'], s['bonds'], s['cells'], s['wall'], s['poisson'], s['firstStep'], s['wall'] + s['poisson'] + s['firstStep']))
-print('masonry_cost: report in %s' % opts.out)
+print('masonry_cost: report in %s' % cli.out)
 sys.exit(0)

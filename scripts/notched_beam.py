@@ -52,19 +52,19 @@ parser.add_argument('--seeds', type=int, nargs='+', default=[0], help='seeds of 
 parser.add_argument('--damping', type=float, default=0.2, help="Cundall's non-viscous damping of the integrator (default 0.2)")
 parser.add_argument('--out', default='output/notched_beam', help='output folder (default output/notched_beam)')
 parser.add_argument('--doc', action='store_true', help='also write the figure to doc/figures/notched_beam.png')
-opts = parser.parse_args(sys.argv[1:])
+cli = parser.parse_args(sys.argv[1:])
 for name in ('length', 'span', 'depth', 'thickness', 'young', 'ft', 'gf', 'speed', 'deflection'):
-	if not getattr(opts, name) > 0:
-		sys.exit('--%s = %g: must be > 0' % (name, getattr(opts, name)))
-if not opts.span < opts.length:
-	sys.exit('--span = %g: must be less than --length = %g' % (opts.span, opts.length))
-if not opts.strength_cov >= 0:
-	sys.exit('--strength-cov = %g: must be >= 0' % opts.strength_cov)
-if not 0 <= opts.stop_drop < 1:
-	sys.exit('--stop-drop = %g: must be in [0, 1)' % opts.stop_drop)
-if not 0 < opts.notch < 1:
-	sys.exit('--notch = %g: must be in (0, 1)' % opts.notch)
-if any(n < 2 for n in opts.depths):
+	if not getattr(cli, name) > 0:
+		sys.exit('--%s = %g: must be > 0' % (name, getattr(cli, name)))
+if not cli.span < cli.length:
+	sys.exit('--span = %g: must be less than --length = %g' % (cli.span, cli.length))
+if not cli.strength_cov >= 0:
+	sys.exit('--strength-cov = %g: must be >= 0' % cli.strength_cov)
+if not 0 <= cli.stop_drop < 1:
+	sys.exit('--stop-drop = %g: must be in [0, 1)' % cli.stop_drop)
+if not 0 < cli.notch < 1:
+	sys.exit('--notch = %g: must be in (0, 1)' % cli.notch)
+if any(n < 2 for n in cli.depths):
 	sys.exit('--depths: each must be >= 2')
 
 import matplotlib
@@ -74,36 +74,36 @@ from yade import O, Vector3, VTKRecorder
 from yade.wrapper import RdemMat
 import rdem
 
-os.makedirs(os.path.join(opts.out, 'vtk'), exist_ok=True)
+os.makedirs(os.path.join(cli.out, 'vtk'), exist_ok=True)
 
 
 def build(ny, softening, seed):
 	"""The beam of ny blocks over the depth (square in the plane of bending); returns (supports, loaded, span)."""
 	O.reset()
-	b = opts.depth / ny
-	nx = 2 * int(round(opts.length / b / 2))  # even: mid-span is a block boundary
-	mat = O.materials.append(RdemMat(young=opts.young, poisson=0.2, density=2400, tensileStrength=opts.ft, cohesion=2 * opts.ft, fractureEnergy=opts.gf,
-	                                 shearFractureEnergy=10 * opts.gf))
-	O.engines = rdem.engines(poisson=None, recontact=True, damping=opts.damping, softening=softening, strengthCoV=opts.strength_cov,
-	                         strengthPerSegment=opts.per_segment, seed=seed)
+	b = cli.depth / ny
+	nx = 2 * int(round(cli.length / b / 2))  # even: mid-span is a block boundary
+	mat = O.materials.append(RdemMat(young=cli.young, poisson=0.2, density=2400, tensileStrength=cli.ft, cohesion=2 * cli.ft, fractureEnergy=cli.gf,
+	                                 shearFractureEnergy=10 * cli.gf))
+	O.engines = rdem.engines(poisson=None, recontact=True, damping=cli.damping, softening=softening, strengthCoV=cli.strength_cov,
+	                         strengthPerSegment=cli.per_segment, seed=seed)
 	x0 = -nx * b / 2
-	rdem.blockGrid((nx, 1, ny), (b, opts.thickness, b), material=mat, origin=(x0, -opts.thickness / 2, 0))
+	rdem.blockGrid((nx, 1, ny), (b, cli.thickness, b), material=mat, origin=(x0, -cli.thickness / 2, 0))
 	rdem.bond(range(len(O.bodies)))
 	pos = {body.id: body.state.pos for body in O.bodies}  # blocks by their grid cell (column, row)
 	col = lambda x: int(math.floor((x - x0) / b))
 	row = lambda z: int(math.floor(z / b))
 	grid = {(col(p[0]), row(p[2])): i for i, p in pos.items()}
-	notchRows = int(round(opts.notch * ny))
+	notchRows = int(round(cli.notch * ny))
 	for k in range(notchRows):  # the notch: no bond across x = 0 in the lowest rows
 		O.interactions.erase(grid[(nx // 2 - 1, k)], grid[(nx // 2, k)])
-	ia = min(range(nx), key=lambda i: abs(x0 + (i + 0.5) * b + opts.span / 2))
+	ia = min(range(nx), key=lambda i: abs(x0 + (i + 0.5) * b + cli.span / 2))
 	supports = [grid[(ia, 0)], grid[(nx - 1 - ia, 0)]]
 	for i in supports:
 		O.bodies[i].state.blockedDOFs = 'z'
 	loaded = [grid[(nx // 2 - 1, ny - 1)], grid[(nx // 2, ny - 1)]]
 	for i in loaded:
 		O.bodies[i].state.blockedDOFs = 'z'
-		O.bodies[i].state.vel = Vector3(0, 0, -opts.speed)
+		O.bodies[i].state.vel = Vector3(0, 0, -cli.speed)
 	span = (nx - 1 - 2 * ia) * b
 	return supports, loaded, span
 
@@ -122,23 +122,23 @@ def run(ny, softening, seed):
 	z0 = O.bodies[loaded[0]].state.pos[2]
 	hist = dict(deflection=[], load=[])
 	wall0, last = time.time(), time.time()
-	steps = int(opts.deflection / opts.speed / O.dt)
-	while z0 - O.bodies[loaded[0]].state.pos[2] < opts.deflection:
+	steps = int(cli.deflection / cli.speed / O.dt)
+	while z0 - O.bodies[loaded[0]].state.pos[2] < cli.deflection:
 		O.run(max(1, steps // 400), True)
 		hist['deflection'].append(z0 - O.bodies[loaded[0]].state.pos[2])
 		hist['load'].append(sum(O.forces.f(i)[2] for i in loaded))
 		if first is None and cracked(softening):
 			first = hist['load'][-1]
-		if hist['deflection'][-1] > opts.deflection / 4 and hist['load'][-1] < opts.stop_drop * max(hist['load']):  # past the start's vibrations
+		if hist['deflection'][-1] > cli.deflection / 4 and hist['load'][-1] < cli.stop_drop * max(hist['load']):  # past the start's vibrations
 			break
 		if time.time() - last > 10:
 			last = time.time()
 			print('  depth %d, %s: step %d of about %d, load %.0f N' % (ny, 'softening' if softening else 'brittle', O.iter, steps, hist['load'][-1]), flush=True)
 	wall = time.time() - wall0
 	peak = max(hist['load'])
-	VTKRecorder(fileName=os.path.join(opts.out, 'vtk', 'beam-%d-%s-%d.' % (ny, 'softening' if softening else 'brittle', seed)), recorders=['boxes'])()
+	VTKRecorder(fileName=os.path.join(cli.out, 'vtk', 'beam-%d-%s-%d.' % (ny, 'softening' if softening else 'brittle', seed)), recorders=['boxes'])()
 	return dict(blocksOverDepth=ny, blocks=len(O.bodies), law='softening' if softening else 'brittle', seed=seed, span=span, peakLoad=peak, firstCrackLoad=first,
-	            nominalStrength=3 * peak * span / (2 * opts.thickness * opts.depth**2), dt=O.dt, steps=O.iter, wallSeconds=wall, history=hist)
+	            nominalStrength=3 * peak * span / (2 * cli.thickness * cli.depth**2), dt=O.dt, steps=O.iter, wallSeconds=wall, history=hist)
 
 
 def meanCoV(x):
@@ -150,11 +150,11 @@ def summarize(runs):
 	"""Per law: the spread of the nominal strength over the meshes (first seed); per law and mesh: mean and CoV over the
 	seeds of the peak load and of the load at the first crack."""
 	summary = {}
-	for law in opts.laws:
-		s = [r['nominalStrength'] for r in runs if r['law'] == law and r['seed'] == opts.seeds[0]]
+	for law in cli.laws:
+		s = [r['nominalStrength'] for r in runs if r['law'] == law and r['seed'] == cli.seeds[0]]
 		if s:
 			summary[law] = dict(spread=(max(s) - min(s)) / max(s), strengths=s, seeds={})
-		for ny in opts.depths:
+		for ny in cli.depths:
 			rs = [r for r in runs if r['law'] == law and r['blocksOverDepth'] == ny]
 			if rs:
 				peak, first = meanCoV([r['peakLoad'] for r in rs]), meanCoV([r['firstCrackLoad'] or 0.0 for r in rs])
@@ -163,28 +163,28 @@ def summarize(runs):
 
 
 runs = []
-for law in opts.laws:
-	for ny in opts.depths:
-		for seed in opts.seeds:
+for law in cli.laws:
+	for ny in cli.depths:
+		for seed in cli.seeds:
 			print('depth %d blocks, %s springs, seed %d' % (ny, law, seed), flush=True)
 			runs.append(run(ny, law == 'softening', seed))
 			print('  peak load %.0f N, nominal strength %.3f MPa, first crack at %s, %d steps, %.1f s' %
 			      (runs[-1]['peakLoad'], runs[-1]['nominalStrength'] / 1e6, '%.0f N' % runs[-1]['firstCrackLoad'] if runs[-1]['firstCrackLoad'] else '-',
 			       runs[-1]['steps'], runs[-1]['wallSeconds']),
 			      flush=True)
-			with open(os.path.join(opts.out, 'results.json'), 'w') as f:  # after every run: the runs so far
-				json.dump(dict(input=vars(opts), runs=runs, summary=summarize(runs)), f, indent=1)
+			with open(os.path.join(cli.out, 'results.json'), 'w') as f:  # after every run: the runs so far
+				json.dump(dict(input=vars(cli), runs=runs, summary=summarize(runs)), f, indent=1)
 summary = summarize(runs)
 
 fig, ax = plt.subplots(figsize=(7, 4.5))
 for r in runs:
 	ax.plot([d * 1e3 for d in r['history']['deflection']], [p / 1e3 for p in r['history']['load']], '-' if r['law'] == 'softening' else '--',
-	        label='%s, %d blocks over the depth%s' % (r['law'], r['blocksOverDepth'], ', seed %d' % r['seed'] if len(opts.seeds) > 1 else ''))
+	        label='%s, %d blocks over the depth%s' % (r['law'], r['blocksOverDepth'], ', seed %d' % r['seed'] if len(cli.seeds) > 1 else ''))
 ax.set_xlabel('mid-span deflection [mm]')
 ax.set_ylabel('load [kN]')
 ax.legend(fontsize=8)
 fig.tight_layout()
-fig.savefig(os.path.join(opts.out, 'load_deflection.png'), dpi=120)
+fig.savefig(os.path.join(cli.out, 'load_deflection.png'), dpi=120)
 
 lines = ['| law | blocks over depth | seed | blocks | span [m] | first crack [kN] | peak load [kN] | nominal strength [MPa] | steps | wall [s] |',
          '|---|---|---|---|---|---|---|---|---|---|']
@@ -200,7 +200,7 @@ for law, s in summary.items():
 			lines.append('%s, %d blocks over the depth, %d seeds: peak %.3f kN (CoV %.2f %%), first crack %.3f kN (CoV %.2f %%)' %
 			             (law, ny, q['n'], q['peakMean'] / 1e3, 100 * q['peakCoV'], q['firstCrackMean'] / 1e3, 100 * q['firstCrackCoV']))
 print('\n'.join(lines))
-if opts.doc:
+if cli.doc:
 	fig.savefig('doc/figures/notched_beam.png', dpi=120)
 	print('notched_beam: figure in doc/figures/notched_beam.png (the table above goes into doc/validation.md)')
 sys.exit(0)

@@ -37,10 +37,10 @@ parser.add_argument('--mortar-nu', type=float, default=0.25, help="Poisson's rat
 parser.add_argument('--rate', type=float, default=10.0, help='loading rate of the top plate [mm/s] (default 10)')
 parser.add_argument('--max-stress', type=float, default=100.0, help='stop a run at this stress if nothing cracked [MPa] (default 100)')
 parser.add_argument('--out', default='output/prism', help='output folder (default output/prism)')
-opts = parser.parse_args(sys.argv[1:])
+cli = parser.parse_args(sys.argv[1:])
 for name in ('rate', 'max_stress', 'brick_ft', 'mortar_E'):
-	if not getattr(opts, name) > 0:
-		sys.exit('--%s = %g: must be > 0' % (name.replace('_', '-'), getattr(opts, name)))
+	if not getattr(cli, name) > 0:
+		sys.exit('--%s = %g: must be > 0' % (name.replace('_', '-'), getattr(cli, name)))
 
 import matplotlib
 matplotlib.use('Agg')
@@ -50,8 +50,8 @@ from yade.wrapper import RdemMat, RdemJoint
 import rdem
 from rdem.scenes import MasonryPrism
 
-os.makedirs(os.path.join(opts.out, 'vtk'), exist_ok=True)
-BRICK = dict(young=16.7e9, poisson=0.15, density=1800, tensileStrength=opts.brick_ft * 1e6, cohesion=2 * opts.brick_ft * 1e6, label='brick')
+os.makedirs(os.path.join(cli.out, 'vtk'), exist_ok=True)
+BRICK = dict(young=16.7e9, poisson=0.15, density=1800, tensileStrength=cli.brick_ft * 1e6, cohesion=2 * cli.brick_ft * 1e6, label='brick')
 BOND = RdemJoint(tensileStrength=0.5e6, cohesion=1e6, frictionAngle=math.atan(0.75))
 
 
@@ -60,7 +60,7 @@ def run(label, mortarYoung, mortarNu):
 	O.reset()
 	brick = RdemMat(**BRICK)
 	mortar = RdemMat(young=mortarYoung, poisson=mortarNu, density=1800, tensileStrength=2e6, cohesion=4e6, label='mortar')
-	p = MasonryPrism(brick, mortar, BOND, blocks=opts.blocks, rate=opts.rate * 1e-3)
+	p = MasonryPrism(brick, mortar, BOND, blocks=cli.blocks, rate=cli.rate * 1e-3)
 	snapshot = rdem.measure.bondSnapshot()
 	t0 = time.time()
 	history = dict(disp=[], stress=[])
@@ -78,10 +78,10 @@ def run(label, mortarYoung, mortarNu):
 	elastic['predictedCrackStressMPa'] = BRICK['tensileStrength'] / elastic['brickLateralStressPerStress'] * 1e-6 if elastic[
 	        'brickLateralStressPerStress'] > 0 else None
 	for i in p.top:
-		O.bodies[i].state.vel = Vector3(0, 0, -opts.rate * 1e-3)
+		O.bodies[i].state.vel = Vector3(0, 0, -cli.rate * 1e-3)
 	# 2. Loading to the first crack inside a brick (or --max-stress).
 	first = None
-	while p.stress() < opts.max_stress * 1e6:
+	while p.stress() < cli.max_stress * 1e6:
 		rdem.run(50)
 		history['disp'].append(p.displacement())
 		history['stress'].append(p.stress())
@@ -94,8 +94,8 @@ def run(label, mortarYoung, mortarNu):
 		if O.iter % 5000 == 0:
 			print('%s: step %d, stress %.2f MPa, breaks %s' % (label, O.iter, p.stress() * 1e-6, rdem.breakCounts()), flush=True)
 	segs = rdem.brokenSegments(snapshot)
-	VTKRecorder(fileName=os.path.join(opts.out, 'vtk', label + '.blocks.'), recorders=['boxes'])()
-	exp = rdem.CrackExport(os.path.join(opts.out, 'vtk', label + '.'))
+	VTKRecorder(fileName=os.path.join(cli.out, 'vtk', label + '.blocks.'), recorders=['boxes'])()
+	exp = rdem.CrackExport(os.path.join(cli.out, 'vtk', label + '.'))
 	exp.snapshot = snapshot
 	exp.write()
 	exp.close()
@@ -105,21 +105,21 @@ def run(label, mortarYoung, mortarNu):
 	print('%s: elastic lateral strain %.4g against %.4g closed form (ratio %.4f) at %.2f MPa; largest total lateral stress in a brick %.4f sigma; '
 	      'first brick crack %s; %d steps in %.1f s' %
 	      (label, elastic['lateralStrain'], elastic['closedForm'], elastic['ratio'], elastic['stressMPa'], elastic['brickLateralStressPerStress'],
-	       'at %.2f MPa (%s)' % (first['stressMPa'], 'vertical' if first['vertical'] else 'not vertical') if first else 'none up to %.0f MPa' % opts.max_stress,
+	       'at %.2f MPa (%s)' % (first['stressMPa'], 'vertical' if first['vertical'] else 'not vertical') if first else 'none up to %.0f MPa' % cli.max_stress,
 	       O.iter, res['wallSeconds']),
 	      flush=True)
 	return res
 
 
-soft = run('soft', opts.mortar_E * 1e9, opts.mortar_nu)
+soft = run('soft', cli.mortar_E * 1e9, cli.mortar_nu)
 same = run('same', BRICK['young'], BRICK['poisson'])
-results = dict(input=vars(opts), soft=soft, sameMaterial=same)
-with open(os.path.join(opts.out, 'results.json'), 'w') as f:
+results = dict(input=vars(cli), soft=soft, sameMaterial=same)
+with open(os.path.join(cli.out, 'results.json'), 'w') as f:
 	json.dump(results, f, indent=1)
 
 fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
 ax = axes[0]
-for r, name in ((soft, 'soft mortar (E = %g GPa, ν = %g)' % (opts.mortar_E, opts.mortar_nu)), (same, "mortar of the brick's E and ν")):
+for r, name in ((soft, 'soft mortar (E = %g GPa, ν = %g)' % (cli.mortar_E, cli.mortar_nu)), (same, "mortar of the brick's E and ν")):
 	ax.plot([1e3 * d for d in r['history']['disp']], [1e-6 * s for s in r['history']['stress']], label=name)
 	if r['firstBrickCrack']:
 		ax.plot([r['firstBrickCrack']['displacementMm']], [r['firstBrickCrack']['stressMPa']], 'ro')
@@ -139,6 +139,6 @@ ax.set_title('soft-mortar prism: broken springs (faces normal to x)')
 ax.set_xlabel('x [m]')
 ax.set_ylabel('z [m]')
 fig.tight_layout()
-fig.savefig(os.path.join(opts.out, 'prism.png'), dpi=120)
-print('prism: results in %s' % opts.out)
+fig.savefig(os.path.join(cli.out, 'prism.png'), dpi=120)
+print('prism: results in %s' % cli.out)
 sys.exit(0)

@@ -41,12 +41,12 @@ parser.add_argument('--contact-samples', type=int, default=1, help='contact samp
 parser.add_argument('--damping-constant', type=float, default=1.0, help='contact dashpots, 1 = critical (default 1)')
 parser.add_argument('--duration', type=float, default=2.0, help='simulated time [s] (default 2)')
 parser.add_argument('--out', default='output/rocking', help='output folder (default output/rocking)')
-opts = parser.parse_args(sys.argv[1:])
+cli = parser.parse_args(sys.argv[1:])
 for name in ('b', 'h', 'period', 'duration'):
-	if not getattr(opts, name) > 0:
-		sys.exit('--%s = %g: must be > 0' % (name, getattr(opts, name)))
-if not 0 <= opts.theta0 < 1:
-	sys.exit('--theta0 = %g: must be in [0, 1) (a fraction of alpha)' % opts.theta0)
+	if not getattr(cli, name) > 0:
+		sys.exit('--%s = %g: must be > 0' % (name, getattr(cli, name)))
+if not 0 <= cli.theta0 < 1:
+	sys.exit('--theta0 = %g: must be in [0, 1) (a fraction of alpha)' % cli.theta0)
 
 import matplotlib
 matplotlib.use('Agg')
@@ -56,17 +56,17 @@ import rdem
 from rdem import ground_motion as gm
 from rdem.scenes import RockingBlock
 
-os.makedirs(os.path.join(opts.out, 'vtk'), exist_ok=True)
-alpha = math.atan(opts.b / opts.h)
-theta0 = opts.theta0 * alpha if opts.pulse == 'none' else 0.0
-rock = RockingBlock(b=opts.b, h=opts.h, theta0=theta0, contactSamples=opts.contact_samples, dampingConstant=opts.damping_constant)
+os.makedirs(os.path.join(cli.out, 'vtk'), exist_ok=True)
+alpha = math.atan(cli.b / cli.h)
+theta0 = cli.theta0 * alpha if cli.pulse == 'none' else 0.0
+rock = RockingBlock(b=cli.b, h=cli.h, theta0=theta0, contactSamples=cli.contact_samples, dampingConstant=cli.damping_constant)
 motion = None
-if opts.pulse != 'none':
-	amp = opts.amplitude * rock.upliftAcceleration()
+if cli.pulse != 'none':
+	amp = cli.amplitude * rock.upliftAcceleration()
 	dt = 1e-3
-	record = gm.sinePulse(amp, opts.period, dt=dt, before=0.1) if opts.pulse == 'sine' else gm.rickerWavelet(amp, 1 / opts.period, dt)
+	record = gm.sinePulse(amp, cli.period, dt=dt, before=0.1) if cli.pulse == 'sine' else gm.rickerWavelet(amp, 1 / cli.period, dt)
 	motion = gm.GroundMotion(x=record)
-	rdem.earthquake.shaker(motion, ids=[rock.base], mode=opts.mode)
+	rdem.earthquake.shaker(motion, ids=[rock.base], mode=cli.mode)
 O.trackEnergy = True
 history = dict(t=[], theta=[], groundAcc=[], groundDisp=[], energy=[], kinetic=[])
 shaker = [e for e in O.engines if type(e).__name__ == 'RdemGroundShaker']
@@ -83,17 +83,17 @@ def record():
 
 wall0, lastReport, vtkNext = time.time(), time.time(), 0.0
 O.step()
-steps = int(math.ceil(opts.duration / O.dt))
-while O.time < opts.duration:
+steps = int(math.ceil(cli.duration / O.dt))
+while O.time < cli.duration:
 	for _ in range(20):
 		O.step()
 	record()
 	if O.time >= vtkNext:
-		VTKRecorder(fileName=os.path.join(opts.out, 'vtk', 'blocks.'), recorders=['boxes'])()
+		VTKRecorder(fileName=os.path.join(cli.out, 'vtk', 'blocks.'), recorders=['boxes'])()
 		vtkNext += 0.05
 	if time.time() - lastReport > 5:
 		lastReport = time.time()
-		print('t = %.3f s of %.3g (step %d of about %d), theta = %.5f rad' % (O.time, opts.duration, O.iter, steps, rock.angle()), flush=True)
+		print('t = %.3f s of %.3g (step %d of about %d), theta = %.5f rad' % (O.time, cli.duration, O.iter, steps, rock.angle()), flush=True)
 wall = time.time() - wall0
 
 # Impacts: zero crossings of theta, and the amplitude of each half cycle between them.
@@ -107,16 +107,16 @@ for t, th in zip(history['t'], history['theta']):
 	peak = max(peak, abs(th))
 	lastSign = sign
 overturned = abs(history['theta'][-1]) > alpha
-ratios = [rock.energyRatio(a0, a1) for a0, a1 in zip(amplitudes[:-1], amplitudes[1:])] if opts.pulse == 'none' else []
-results = dict(input=vars(opts), alpha=alpha, eta=rock.eta(), housnerEnergyRatio=rock.eta()**2, quarterCycleExact=rock.quarterCycle(theta0) if theta0 > 0 else None,
+ratios = [rock.energyRatio(a0, a1) for a0, a1 in zip(amplitudes[:-1], amplitudes[1:])] if cli.pulse == 'none' else []
+results = dict(input=vars(cli), alpha=alpha, eta=rock.eta(), housnerEnergyRatio=rock.eta()**2, quarterCycleExact=rock.quarterCycle(theta0) if theta0 > 0 else None,
                firstImpact=crossings[0] if crossings else None, amplitudes=amplitudes, energyRatios=ratios, overturned=overturned, timeStep=O.dt,
                steps=O.iter, wallSeconds=wall, history=history)
-with open(os.path.join(opts.out, 'results.json'), 'w') as f:
+with open(os.path.join(cli.out, 'results.json'), 'w') as f:
 	json.dump(results, f, indent=1)
 
 fig, axes = plt.subplots(3, 1, figsize=(7, 8), sharex=True)
 axes[0].plot(history['t'], history['theta'], label='model')
-if opts.pulse == 'none' and amplitudes:
+if cli.pulse == 'none' and amplitudes:
 	th, amps, t0 = theta0, [], 0
 	for k in range(len(amplitudes)):  # Housner's amplitudes: energy η² kept through every impact
 		amps.append(th)
@@ -136,8 +136,8 @@ axes[2].set_ylabel('energy [J]')
 axes[2].set_xlabel('time [s]')
 axes[2].legend()
 fig.tight_layout()
-fig.savefig(os.path.join(opts.out, 'rocking.png'), dpi=120)
+fig.savefig(os.path.join(cli.out, 'rocking.png'), dpi=120)
 print('rocking: alpha %.4f rad; first impact %s s (exact %s); energy kept through the impacts %s (Housner %.4f); %s; %d steps in %.1f s; results in %s' %
       (alpha, '%.4f' % crossings[0] if crossings else 'none', '%.4f' % results['quarterCycleExact'] if results['quarterCycleExact'] else '-',
-       ', '.join('%.4f' % r for r in ratios[:4]) or '-', rock.eta()**2, 'overturned' if overturned else 'standing', O.iter, wall, opts.out))
+       ', '.join('%.4f' % r for r in ratios[:4]) or '-', rock.eta()**2, 'overturned' if overturned else 'standing', O.iter, wall, cli.out))
 sys.exit(0)

@@ -103,18 +103,18 @@ o.add_argument('--smooth', type=int, default=21,
 o.add_argument('--out', default='output/shear_wall', help='output folder (default output/shear_wall)')
 o.add_argument('--save', default='', help='save the scene at the end of the run to this file (O.save; e.g. for scripts/shear_wall_cost.py; default none)')
 o.add_argument('--vtk-every', type=float, default=0.05, help='ParaView output every this drift [%%] (default 0.05; 0 = none)')
-opts = parser.parse_args(sys.argv[1:])
+cli = parser.parse_args(sys.argv[1:])
 for name in ('rate', 'drift', 'beam', 'compress_time', 'density', 'beam_density'):
-	if not getattr(opts, name) > 0:
-		sys.exit('--%s = %g: must be > 0' % (name.replace('_', '-'), getattr(opts, name)))
-if not (opts.smooth >= 1 and opts.smooth % 2 == 1):
-	sys.exit('--smooth = %d: must be an odd integer >= 1' % opts.smooth)
-if not 0 <= opts.stop_drop < 1:
-	sys.exit('--stop-drop = %g: must be in [0, 1)' % opts.stop_drop)
-if opts.ramp < 0:
-	sys.exit('--ramp = %g: must be >= 0' % opts.ramp)
+	if not getattr(cli, name) > 0:
+		sys.exit('--%s = %g: must be > 0' % (name.replace('_', '-'), getattr(cli, name)))
+if not (cli.smooth >= 1 and cli.smooth % 2 == 1):
+	sys.exit('--smooth = %d: must be an odd integer >= 1' % cli.smooth)
+if not 0 <= cli.stop_drop < 1:
+	sys.exit('--stop-drop = %g: must be in [0, 1)' % cli.stop_drop)
+if cli.ramp < 0:
+	sys.exit('--ramp = %g: must be >= 0' % cli.ramp)
 try:
-	amplitudes = rdem.masonry.numbers(opts.cycles) if opts.cycles else []
+	amplitudes = rdem.masonry.numbers(cli.cycles) if cli.cycles else []
 except argparse.ArgumentTypeError as e:
 	sys.exit('--cycles: %s' % e)
 
@@ -125,9 +125,9 @@ from yade import O, VTKRecorder
 from yade.wrapper import RdemMat, RdemJoint
 from rdem import walltest
 
-measured = walltest.MAGENES_CALVI_WALLS.get(opts.wall)
-sigma0 = opts.sigma0 * 1e6 if opts.sigma0 is not None else (measured['sigma0'] if measured else 0.0)
-os.makedirs(os.path.join(opts.out, 'vtk'), exist_ok=True)
+measured = walltest.MAGENES_CALVI_WALLS.get(cli.wall)
+sigma0 = cli.sigma0 * 1e6 if cli.sigma0 is not None else (measured['sigma0'] if measured else 0.0)
+os.makedirs(os.path.join(cli.out, 'vtk'), exist_ok=True)
 
 # 2. Scene ------------------------------------------------------------------------------------------------------------
 O.reset()
@@ -135,41 +135,41 @@ setup0 = time.time()
 try:
 	cap = lambda fc: fc * 1e6 if fc > 0 else float('inf')
 	brick = O.materials.append(
-	        RdemMat(young=opts.brick_E * 1e9, poisson=opts.brick_nu, density=opts.density, tensileStrength=opts.brick_ft * 1e6, cohesion=opts.brick_c * 1e6,
-	                frictionAngle=math.atan(opts.brick_mu), fractureEnergy=opts.brick_GfI, shearFractureEnergy=opts.brick_GfII,
-	                compressiveStrength=cap(opts.brick_fc), compressiveFractureEnergy=opts.bond_Gfc, label='brick'))
+	        RdemMat(young=cli.brick_E * 1e9, poisson=cli.brick_nu, density=cli.density, tensileStrength=cli.brick_ft * 1e6, cohesion=cli.brick_c * 1e6,
+	                frictionAngle=math.atan(cli.brick_mu), fractureEnergy=cli.brick_GfI, shearFractureEnergy=cli.brick_GfII,
+	                compressiveStrength=cap(cli.brick_fc), compressiveFractureEnergy=cli.bond_Gfc, label='brick'))
 	beam = O.materials.append(
-	        RdemMat(young=opts.beam_E * 1e9, poisson=opts.beam_nu, density=opts.beam_density, tensileStrength=float('inf'), cohesion=float('inf'),
-	                frictionAngle=math.atan(opts.bond_mu), label='beam'))
-	joint = RdemJoint(young=opts.mortar_E * 1e9, poisson=opts.mortar_nu, tensileStrength=opts.bond_ft * 1e6, cohesion=opts.bond_c * 1e6,
-	                  frictionAngle=math.atan(opts.bond_mu), fractureEnergy=opts.bond_GfI, shearFractureEnergy=opts.bond_GfII, compressiveStrength=cap(opts.bond_fc),
-	                  compressiveFractureEnergy=opts.bond_Gfc)
-	total = opts.failure_stress == 'total' and opts.formulation == 'consistent'
-	O.engines = rdem.engines(segmentsPerEdge=opts.springs,
-	                         poisson=None if opts.formulation == 'off' else opts.formulation,
-	                         damping=opts.damping,
-	                         gravity=(0, 0, -opts.gravity),
-	                         safety=opts.safety,
-	                         verletDist=opts.verlet,
+	        RdemMat(young=cli.beam_E * 1e9, poisson=cli.beam_nu, density=cli.beam_density, tensileStrength=float('inf'), cohesion=float('inf'),
+	                frictionAngle=math.atan(cli.bond_mu), label='beam'))
+	joint = RdemJoint(young=cli.mortar_E * 1e9, poisson=cli.mortar_nu, tensileStrength=cli.bond_ft * 1e6, cohesion=cli.bond_c * 1e6,
+	                  frictionAngle=math.atan(cli.bond_mu), fractureEnergy=cli.bond_GfI, shearFractureEnergy=cli.bond_GfII, compressiveStrength=cap(cli.bond_fc),
+	                  compressiveFractureEnergy=cli.bond_Gfc)
+	total = cli.failure_stress == 'total' and cli.formulation == 'consistent'
+	O.engines = rdem.engines(segmentsPerEdge=cli.springs,
+	                         poisson=None if cli.formulation == 'off' else cli.formulation,
+	                         damping=cli.damping,
+	                         gravity=(0, 0, -cli.gravity),
+	                         safety=cli.safety,
+	                         verletDist=cli.verlet,
 	                         failureStress='total' if total else 'spring',
-	                         softening=opts.softening == 'on')  # before the wall: a bond's law is fixed when it is made
-	w = rdem.masonry.wall(opts.length, opts.height, opts.thickness, brick=opts.brick, joint=opts.joint, bond=opts.bond, blocksPerBrick=opts.blocks,
-	                      mortar=opts.mortar, openings=opts.openings, baseBeam=opts.beam, topBeam=opts.beam, beamBlocks=1, brickMaterial=brick,
+	                         softening=cli.softening == 'on')  # before the wall: a bond's law is fixed when it is made
+	w = rdem.masonry.wall(cli.length, cli.height, cli.thickness, brick=cli.brick, joint=cli.joint, bond=cli.bond, blocksPerBrick=cli.blocks,
+	                      mortar=cli.mortar, openings=cli.openings, baseBeam=cli.beam, topBeam=cli.beam, beamBlocks=1, brickMaterial=brick,
 	                      jointMaterial=joint, beamMaterial=beam)
-	if opts.formulation != 'off':
+	if cli.formulation != 'off':
 		if total:
 			rdem.poissonEngine().elements = 'cells'
 		rdem.poissonEngine().build(w.ids)
-	unbonded = walltest.unbondJoints(w, 'head') if opts.head_joints == 'unbonded' else set()
-	test = walltest.ShearWallTest(w, sigma0, boundary=opts.boundary)
-	targets = [a * 1e-2 * w.layout.height for a in walltest.cycleTargets(amplitudes, opts.repeat)] if amplitudes else [opts.drift * 1e-2 * w.layout.height]
+	unbonded = walltest.unbondJoints(w, 'head') if cli.head_joints == 'unbonded' else set()
+	test = walltest.ShearWallTest(w, sigma0, boundary=cli.boundary)
+	targets = [a * 1e-2 * w.layout.height for a in walltest.cycleTargets(amplitudes, cli.repeat)] if amplitudes else [cli.drift * 1e-2 * w.layout.height]
 except ValueError as e:
 	sys.exit('shear_wall: %s' % e)
 O.trackEnergy = True
 O.dt = rdem.timeStepper().safety * rdem.timeStepper().estimate()
 span = sum(abs(b - a) for a, b in zip([0.0] + targets[:-1], targets))
 print('shear_wall: %s; sigma0 %.3g MPa (N = %.1f kN), %s ends; time step %.3g s, about %d steps of loading; set-up %.1f s' %
-      (w, sigma0 * 1e-6, test.axialForce * 1e-3, opts.boundary, O.dt, span / (opts.rate * 1e-3) / O.dt, time.time() - setup0),
+      (w, sigma0 * 1e-6, test.axialForce * 1e-3, cli.boundary, O.dt, span / (cli.rate * 1e-3) / O.dt, time.time() - setup0),
       flush=True)
 
 # 3. Recording -------------------------------------------------------------------------------------------------------
@@ -178,7 +178,7 @@ ENERGIES = ('rdemElastic', 'rdemPoisson', 'rdemBondBreak', 'rdemDashpot', 'rdemF
 history = dict(t=[], drift=[], shear=[], baseShear=[], axial=[], rotation=[], vertical=[], tension=[], shearBreaks=[], workH=[], workV=[],
                **{e: [] for e in ENERGIES})
 state = dict(peak=None, peakCracks=None, first=None, report=time.time(), iter=O.iter, vtkNext=0.0)
-cracks = rdem.CrackExport(os.path.join(opts.out, 'vtk', ''))
+cracks = rdem.CrackExport(os.path.join(cli.out, 'vtk', ''))
 
 
 def record(t):
@@ -211,10 +211,10 @@ def onStep(t):
 		state['peakCracks'] = None
 	elif state['peakCracks'] is None and abs(V) < 0.99 * abs(state['peak']['shearKN']) * 1e3:
 		state['peakCracks'] = rdem.brokenSegments(cracks.snapshot)  # the cracks just past the peak (1 % drop)
-	if opts.vtk_every > 0 and abs(d) * 100 >= state['vtkNext']:
-		VTKRecorder(fileName=os.path.join(opts.out, 'vtk', 'blocks.'), recorders=['boxes'])()
+	if cli.vtk_every > 0 and abs(d) * 100 >= state['vtkNext']:
+		VTKRecorder(fileName=os.path.join(cli.out, 'vtk', 'blocks.'), recorders=['boxes'])()
 		cracks.write()
-		state['vtkNext'] += opts.vtk_every
+		state['vtkNext'] += cli.vtk_every
 	now = time.time()
 	if now - state['report'] > 5:
 		rate = (O.iter - state['iter']) / (now - state['report'])
@@ -229,19 +229,19 @@ def stop(t):
 	"""Monotonic test: the load, averaged over the last --smooth samples (crack bursts make single samples spike), has
 	dropped by --stop-drop of the largest such average, once past the first crack (before it, the peak is the residual
 	of the vertical loading)."""
-	if opts.max_wall > 0 and time.time() - t1 > opts.max_wall:
-		print('shear_wall: --max-wall %g s reached; results so far' % opts.max_wall, flush=True)
+	if cli.max_wall > 0 and time.time() - t1 > cli.max_wall:
+		print('shear_wall: --max-wall %g s reached; results so far' % cli.max_wall, flush=True)
 		return True
-	recent = history['shear'][-opts.smooth:]
+	recent = history['shear'][-cli.smooth:]
 	mean = abs(sum(recent) / len(recent))
 	state['smoothPeak'] = max(state.get('smoothPeak', 0.0), mean)
-	return (not amplitudes and opts.stop_drop > 0 and state['first'] is not None and abs(state['peak']['driftPercent']) > 0.01
-	        and mean < (1 - opts.stop_drop) * state['smoothPeak'])
+	return (not amplitudes and cli.stop_drop > 0 and state['first'] is not None and abs(state['peak']['driftPercent']) > 0.01
+	        and mean < (1 - cli.stop_drop) * state['smoothPeak'])
 
 
 # 4. Run ----------------------------------------------------------------------------------------------------------------
 t0 = time.time()
-compressTime = test.compress(opts.compress_time)
+compressTime = test.compress(cli.compress_time)
 compressWall = time.time() - t0
 compressSteps = O.iter
 print('shear_wall: sigma0 applied in %.3f s (%d steps, %.1f s); settlement %.3f mm, top rotation %.1e rad' %
@@ -252,25 +252,25 @@ cracks.snapshot = [row for row in rdem.bondSnapshot() if (min(row[0], row[1]), m
 state['breaks0'] = sum(rdem.breakCounts())
 onStep(test)
 t1 = time.time()
-pushSteps = test.push(targets, opts.rate * 1e-3, opts.ramp, record=onStep, stop=stop)
+pushSteps = test.push(targets, cli.rate * 1e-3, cli.ramp, record=onStep, stop=stop)
 pushWall = time.time() - t1
 cracks.write()
 cracks.close()
 final = rdem.brokenSegments(cracks.snapshot)
-if opts.save:
-	O.save(opts.save)
+if cli.save:
+	O.save(cli.save)
 if state['peakCracks'] is None:
 	state['peakCracks'] = final
 
 # 5. Results ----------------------------------------------------------------------------------------------------------
 h = history
 peak, first = state['peak'], state['first']
-smoothV, smoothDrift = walltest.smoothedPeak(h['drift'], h['shear'], opts.smooth)
-smoothed = dict(shearKN=smoothV * 1e-3, driftPercent=smoothDrift * 100, window=opts.smooth)
+smoothV, smoothDrift = walltest.smoothedPeak(h['drift'], h['shear'], cli.smooth)
+smoothed = dict(shearKN=smoothV * 1e-3, driftPercent=smoothDrift * 100, window=cli.smooth)
 uFirst = first['driftPercent'] * 1e-2 * test.height if first else None
 stiffness = first['shearKN'] * 1e3 / uFirst if first and uFirst else float('nan')
-closedForm = (walltest.timoshenkoStiffness(opts.brick_E * 1e9, opts.brick_nu, w.layout.length, w.layout.thickness, w.layout.height, opts.boundary)
-              if (opts.brick_E, opts.brick_nu) == (opts.mortar_E, opts.mortar_nu) else None)
+closedForm = (walltest.timoshenkoStiffness(cli.brick_E * 1e9, cli.brick_nu, w.layout.length, w.layout.thickness, w.layout.height, cli.boundary)
+              if (cli.brick_E, cli.brick_nu) == (cli.mortar_E, cli.mortar_nu) else None)
 e0 = {e: h[e][0] for e in ENERGIES}  # energies when the horizontal loading began
 stored = {e: h[e][-1] for e in ENERGIES}
 external = h['workH'][-1] + h['workV'][-1]
@@ -286,8 +286,8 @@ if measured:
 	                  peakError=abs(peak['shearKN']) * 1e3 / mean - 1, measuredDriftPercent=[d * 100 for d in measured['driftAtPeak']],
 	                  modelDriftPercent=abs(peak['driftPercent']), smoothedPeakKN=abs(smoothed['shearKN']), smoothedPeakError=abs(smoothV) / mean - 1,
 	                  smoothedDriftPercent=abs(smoothed['driftPercent']), measuredFailure=measured['failure'])
-results = dict(input=vars(opts), sigma0=sigma0, axialForce=test.axialForce, blocks=len(w.ids), bonds=w.nBonds, bricks=len(w.bricks), courses=len(w.courses),
-               joints={k: len(v) for k, v in w.joints.items()}, cells=rdem.poissonEngine().nCells if opts.formulation != 'off' else 0, timeStep=O.dt,
+results = dict(input=vars(cli), sigma0=sigma0, axialForce=test.axialForce, blocks=len(w.ids), bonds=w.nBonds, bricks=len(w.bricks), courses=len(w.courses),
+               joints={k: len(v) for k, v in w.joints.items()}, cells=rdem.poissonEngine().nCells if cli.formulation != 'off' else 0, timeStep=O.dt,
                sources=walltest.MAGENES_CALVI['sources'], peak=peak, smoothedPeak=smoothed, firstCrack=first, initialStiffnessKNPerMm=stiffness * 1e-6,
                timoshenkoStiffnessKNPerMm=closedForm * 1e-6 if closedForm else None, cracksAtPeak=peakCount, cracksAtEnd=crackCount,
                brokenSprings=dict(tension=h['tension'][-1] - h['tension'][0], shear=h['shearBreaks'][-1] - h['shearBreaks'][0]),
@@ -295,7 +295,7 @@ results = dict(input=vars(opts), sigma0=sigma0, axialForce=test.axialForce, bloc
                largestShearImbalance=max(abs(a - b) for a, b in zip(h['shear'], h['baseShear'])) / max(1.0, max(abs(v) for v in h['shear'])),
                energy=dict(externalWork=external, stored=stored, balanceError=(external - accounted) / external if external else None, atPushStart=e0),
                cost=cost, comparison=comparison, history=h)
-with open(os.path.join(opts.out, 'results.json'), 'w') as f:
+with open(os.path.join(cli.out, 'results.json'), 'w') as f:
 	json.dump(results, f, indent=1)
 
 # 6. Figures ----------------------------------------------------------------------------------------------------------
@@ -313,8 +313,8 @@ if measured:
 	if not amplitudes:  # a monotonic run against the envelope: the negative peak mirrored
 		ax.plot([100 * measured['driftAtPeak'][1]], [1e-3 * measured['peak'][1]], 's', mfc='none', color='tab:green', label='measured peak -, mirrored')
 ax.set_ylabel('horizontal load V [kN]')
-ax.set_title('%s: sigma0 = %.2f MPa, %s ends, %s' % (opts.wall if measured else 'wall', sigma0 * 1e-6, opts.boundary,
-                                                   'softening' if opts.softening == 'on' else 'brittle springs'))
+ax.set_title('%s: sigma0 = %.2f MPa, %s ends, %s' % (cli.wall if measured else 'wall', sigma0 * 1e-6, cli.boundary,
+                                                   'softening' if cli.softening == 'on' else 'brittle springs'))
 ax.legend(fontsize=7)
 ax = axes[1]
 dissipated = [
@@ -335,7 +335,7 @@ ax.set_ylabel('broken springs')
 ax.set_xlabel('drift u/H [%]')
 ax.legend(fontsize=7)
 fig.tight_layout()
-fig.savefig(os.path.join(opts.out, 'load_drift.png'), dpi=120)
+fig.savefig(os.path.join(cli.out, 'load_drift.png'), dpi=120)
 
 COLOURS = {1: 'tab:red', 2: 'tab:blue', 3: '0.4'}
 
@@ -356,7 +356,7 @@ def drawCracks(ax, segs, title):
 		half, t = (sg['halfSizes'][0], t1) if abs(t1[1]) < 0.9 else (sg['halfSizes'][1], t2)
 		ax.plot([p[0] - half * t[0], p[0] + half * t[0]], [p[2] - half * t[2], p[2] + half * t[2]], '-', color=COLOURS[sg['state']], lw=1.2)
 	ax.set_xlim(-0.02, lay.length + 0.02)
-	ax.set_ylim(-opts.beam, lay.height + opts.beam)
+	ax.set_ylim(-cli.beam, lay.height + cli.beam)
 	ax.set_aspect('equal')
 	ax.set_title(title, fontsize=8)
 	ax.set_xlabel('x [m]')
@@ -370,13 +370,13 @@ for state_, name in ((1, 'tension'), (2, 'shear'), (3, 'released bond')):
 	axes[1].plot([], [], '-', color=COLOURS[state_], label=name)
 axes[1].legend(fontsize=7, loc='upper right')
 fig.tight_layout()
-fig.savefig(os.path.join(opts.out, 'cracks.png'), dpi=120)
+fig.savefig(os.path.join(cli.out, 'cracks.png'), dpi=120)
 
-print('shear_wall: smoothed peak (%d samples) %.1f kN at %.3f %% drift' % (opts.smooth, smoothed['shearKN'], smoothed['driftPercent']), flush=True)
+print('shear_wall: smoothed peak (%d samples) %.1f kN at %.3f %% drift' % (cli.smooth, smoothed['shearKN'], smoothed['driftPercent']), flush=True)
 print('shear_wall: peak %.1f kN at %.3f %% drift%s; first broken spring at %s; initial stiffness %.1f kN/mm%s; cracks at the end: joints %s, bricks %s; '
       'energy balance %s; %d + %d steps in %.1f + %.1f s (%.3f us per block-step, %d threads); results in %s' %
       (peak['shearKN'], peak['driftPercent'], (' (measured mean %.1f kN: %+.1f %%)' % (comparison['measuredMeanKN'], 100 * comparison['peakError'])) if comparison else '',
        '%.1f kN' % first['shearKN'] if first else 'none', stiffness * 1e-6, (' (Timoshenko %.1f)' % (closedForm * 1e-6)) if closedForm else '',
        crackCount['joint'], crackCount['brick'], '%.2e' % results['energy']['balanceError'] if external else '-', compressSteps, pushSteps, compressWall, pushWall,
-       cost['microsecondsPerBlockStep'], O.numThreads, opts.out))
+       cost['microsecondsPerBlockStep'], O.numThreads, cli.out))
 sys.exit(0)

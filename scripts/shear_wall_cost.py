@@ -35,30 +35,30 @@ parser.add_argument('--state', required=True, help='a scene saved by scripts/she
 parser.add_argument('--steps', type=int, default=300, help='steps per round (default 300)')
 parser.add_argument('--rounds', type=int, default=3, help='rounds, each from the saved state (default 3)')
 parser.add_argument('--json', default='', help='also write the figures to this JSON file (default none)')
-opts = parser.parse_args(sys.argv[1:])
-if opts.steps < 1 or opts.rounds < 1:
-	sys.exit('--steps = %d, --rounds = %d: both must be >= 1' % (opts.steps, opts.rounds))
+cli = parser.parse_args(sys.argv[1:])
+if cli.steps < 1 or cli.rounds < 1:
+	sys.exit('--steps = %d, --rounds = %d: both must be >= 1' % (cli.steps, cli.rounds))
 
 import rdem  # noqa: F401 (the plugin's classes for O.load)
 from yade import O
 
 perBlockStep = []
-for k in range(opts.rounds):
-	O.load(opts.state)
+for k in range(cli.rounds):
+	O.load(cli.state)
 	blocks = len(O.bodies)
 	t0 = time.perf_counter()
-	for _ in range(opts.steps):
+	for _ in range(cli.steps):
 		O.step()
 	seconds = time.perf_counter() - t0
-	perBlockStep.append(1e6 * seconds / (opts.steps * blocks))
+	perBlockStep.append(1e6 * seconds / (cli.steps * blocks))
 	print('shear_wall_cost: round %d: %d steps of %d bodies in %.3f s, %.3f us per block-step (%d threads)' %
-	      (k + 1, opts.steps, blocks, seconds, perBlockStep[-1], O.numThreads),
+	      (k + 1, cli.steps, blocks, seconds, perBlockStep[-1], O.numThreads),
 	      flush=True)
-summary = dict(state=opts.state, steps=opts.steps, rounds=opts.rounds, threads=O.numThreads, bodies=len(O.bodies), microsecondsPerBlockStep=perBlockStep,
+summary = dict(state=cli.state, steps=cli.steps, rounds=cli.rounds, threads=O.numThreads, bodies=len(O.bodies), microsecondsPerBlockStep=perBlockStep,
                median=statistics.median(perBlockStep), min=min(perBlockStep), max=max(perBlockStep))
 print('shear_wall_cost: median %.3f us per block-step (%.3f-%.3f over %d rounds), %d threads, %s' %
-      (summary['median'], summary['min'], summary['max'], opts.rounds, O.numThreads, opts.state))
-if opts.json:
-	with open(opts.json, 'w') as f:
+      (summary['median'], summary['min'], summary['max'], cli.rounds, O.numThreads, cli.state))
+if cli.json:
+	with open(cli.json, 'w') as f:
 		json.dump(summary, f, indent=1)
 sys.exit(0)

@@ -68,8 +68,8 @@ def drawCracks(ax, quads, title):
 parser = argparse.ArgumentParser(prog='python3 scripts/shear_wall_replot.py', description=__doc__.split('\n\n')[0])
 parser.add_argument('--runs', required=True, help='name:log:folder,... (name MI1 or MI2 adds the measured peaks)')
 parser.add_argument('--out', default='shear_walls.png', help='figure to write (default shear_walls.png)')
-opts = parser.parse_args()
-runs = [r.split(':') for r in opts.runs.split(',')]
+cli = parser.parse_args()
+runs = [r.split(':') for r in cli.runs.split(',')]
 fig, axes = plt.subplots(1, 1 + len(runs), figsize=(5 + 3.2 * len(runs), 5.5), gridspec_kw=dict(width_ratios=[1.6] + [1] * len(runs)))
 for k, (name, log, folder) in enumerate(runs):
 	rows = readLog(log)
@@ -91,5 +91,5 @@ axes[0].set_xlabel('drift u/H [%]')
 axes[0].set_ylabel('horizontal load V [kN]')
 axes[0].legend(fontsize=7)
 fig.tight_layout()
-fig.savefig(opts.out, dpi=120)
-print('shear_wall_replot: %s' % opts.out)
+fig.savefig(cli.out, dpi=120)
+print('shear_wall_replot: %s' % cli.out)

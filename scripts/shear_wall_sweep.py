@@ -61,21 +61,21 @@ parser.add_argument('--extra', default='', help='further options for every run o
 parser.add_argument('--out', default='output/shear_wall_sweep', help='folder of the runs (default output/shear_wall_sweep)')
 parser.add_argument('--table', default=None, help='also write the markdown table to this file')
 parser.add_argument('--replot', action='store_true', help='do not run: make the table from the results.json already in --out')
-opts = parser.parse_args(sys.argv[1:])
-names = list(CASES) if opts.cases == 'all' else [c for c in opts.cases.split(',') if c]
+cli = parser.parse_args(sys.argv[1:])
+names = list(CASES) if cli.cases == 'all' else [c for c in cli.cases.split(',') if c]
 unknown = [c for c in names if c not in CASES]
 if unknown:
 	sys.exit('--cases: unknown %s; choose among %s or all' % (', '.join(unknown), ', '.join(CASES)))
 
 
 def folder(name):
-	return os.path.join(opts.out, '%s_%s' % (opts.wall, name))
+	return os.path.join(cli.out, '%s_%s' % (cli.wall, name))
 
 
 def run(name):
 	desc, extra, threads = CASES[name]
-	cmd = [LAUNCHER, '-j%d' % threads, '-n', '-x', SCRIPT, '--wall', opts.wall, '--out', folder(name), '--drift', opts.drift, '--stop-drop', opts.stop_drop
-	       ] + COMMON + extra + opts.extra.split()
+	cmd = [LAUNCHER, '-j%d' % threads, '-n', '-x', SCRIPT, '--wall', cli.wall, '--out', folder(name), '--drift', cli.drift, '--stop-drop', cli.stop_drop
+	       ] + COMMON + extra + cli.extra.split()
 	if name in SAVED:  # the state at the end, for scripts/shear_wall_cost.py
 		cmd += ['--save', os.path.join(folder(name), 'state.yade.gz')]
 	print('sweep: %s (%s): %s' % (name, desc, ' '.join(cmd[1:])), flush=True)
@@ -85,7 +85,7 @@ def run(name):
 	print('sweep: %s done in %.0f s, exit %d: %s' % (name, time.time() - start, proc.returncode, last[-1] if last else proc.stdout[-2000:]), flush=True)
 
 
-if not opts.replot:
+if not cli.replot:
 	for name in names:
 		run(name)
 
@@ -117,7 +117,7 @@ if finest:
 		lines.append('Cheapest within %d %% of the finest run (%s): %s' % (100 * target, finest['desc'], '%s, %.0f s' % (best['desc'], best['wall']) if best else 'none'))
 text = '\n'.join(lines)
 print(text)
-if opts.table:
-	with open(opts.table, 'w') as f:
+if cli.table:
+	with open(cli.table, 'w') as f:
 		f.write(text + '\n')
 sys.exit(0)

@@ -47,14 +47,14 @@ r.add_argument('--uplift', type=float, default=1e-3, help='rotation of the botto
 r.add_argument('--fall', type=float, default=1.0, help='the run ends when the wall leans this far [rad] (default 1.0), or --hold x 10 after lift-off')
 r.add_argument('--out', default='output/tilt', help='output folder (default output/tilt)')
 r.add_argument('--vtk-every', type=float, default=0.05, help='ParaView output every this time [s] (default 0.05; 0 = none)')
-opts = parser.parse_args(sys.argv[1:])
+cli = parser.parse_args(sys.argv[1:])
 for name in ('length', 'height', 'friction', 'young', 'step', 'hold', 'uplift', 'fall'):
-	if not getattr(opts, name) > 0:
-		sys.exit('--%s = %g: must be > 0' % (name, getattr(opts, name)))
-if not 0 < opts.start < 1:
-	sys.exit('--start = %g: must be in (0, 1) (a fraction of the limit-analysis angle)' % opts.start)
-if len(opts.brick) != 3 or min(opts.brick) <= 0:
-	sys.exit('--brick = %s: must be three sizes > 0 [m]' % (opts.brick, ))
+	if not getattr(cli, name) > 0:
+		sys.exit('--%s = %g: must be > 0' % (name, getattr(cli, name)))
+if not 0 < cli.start < 1:
+	sys.exit('--start = %g: must be in (0, 1) (a fraction of the limit-analysis angle)' % cli.start)
+if len(cli.brick) != 3 or min(cli.brick) <= 0:
+	sys.exit('--brick = %s: must be three sizes > 0 [m]' % (cli.brick, ))
 
 import matplotlib
 matplotlib.use('Agg')
@@ -62,10 +62,10 @@ import matplotlib.pyplot as plt
 from yade import O, VTKRecorder
 from rdem.earthquake import DryWall
 
-os.makedirs(os.path.join(opts.out, 'vtk'), exist_ok=True)
+os.makedirs(os.path.join(cli.out, 'vtk'), exist_ok=True)
 try:
-	wall = DryWall(length=opts.length, height=opts.height, thickness=opts.brick[1], brick=opts.brick, bond=opts.bond, young=opts.young * 1e9,
-	               friction=opts.friction)
+	wall = DryWall(length=cli.length, height=cli.height, thickness=cli.brick[1], brick=cli.brick, bond=cli.bond, young=cli.young * 1e9,
+	               friction=cli.friction)
 except ValueError as e:
 	sys.exit('tilt: %s' % e)
 limit = wall.limit
@@ -91,46 +91,46 @@ def advance(duration, theta0, theta1, ramp):
 		history['tilt'].append(theta)
 		history['lean'].append(wall.lean())
 		history['uplift'].append(wall.lean(wall.courses[0]))
-		if opts.vtk_every > 0 and O.time >= state['vtkNext']:
-			VTKRecorder(fileName=os.path.join(opts.out, 'vtk', 'blocks.'), recorders=['boxes'])()
-			state['vtkNext'] += opts.vtk_every
+		if cli.vtk_every > 0 and O.time >= state['vtkNext']:
+			VTKRecorder(fileName=os.path.join(cli.out, 'vtk', 'blocks.'), recorders=['boxes'])()
+			state['vtkNext'] += cli.vtk_every
 		if time.time() - state['report'] > 5:
 			state['report'] = time.time()
 			print('t = %.3f s, tilt %.3f deg, lean %.5f rad, bottom course %.2e rad' % (O.time, math.degrees(theta), history['lean'][-1], history['uplift'][-1]),
 			      flush=True)
-		if history['uplift'][-1] > opts.uplift:
+		if history['uplift'][-1] > cli.uplift:
 			return True
 	return False
 
 
 wall0 = time.time()
 advance(0.05, 0.0, 0.0, 1.0)  # settle under gravity
-level = opts.start * limit.angle
-lifted = advance(opts.hold + 0.2, 0.0, level, 0.2)
+level = cli.start * limit.angle
+lifted = advance(cli.hold + 0.2, 0.0, level, 0.2)
 held = []  # the levels at which the wall stood through the whole hold [rad]
 while not lifted and level < math.pi / 2:
 	held.append(level)
-	step = math.radians(opts.step)
-	lifted = advance(opts.hold, level, level + step, opts.hold / 10)
+	step = math.radians(cli.step)
+	lifted = advance(cli.hold, level, level + step, cli.hold / 10)
 	level += step
 liftTime, liftTilt = O.time, level
 fallTime = None
-while lifted and O.time - liftTime < 10 * opts.hold:
+while lifted and O.time - liftTime < 10 * cli.hold:
 	advance(0.02, level, level, 1.0)
-	if history['lean'][-1] > opts.fall:
+	if history['lean'][-1] > cli.fall:
 		fallTime = O.time
 		break
 wallSeconds = time.time() - wall0
 
 lastHeld = held[-1] if held else None
 error = liftTilt / limit.angle - 1
-results = dict(input=vars(opts), blocks=len(wall.ids), courses=len(wall.courses), length=wall.layout.length, height=wall.layout.height,
+results = dict(input=vars(cli), blocks=len(wall.ids), courses=len(wall.courses), length=wall.layout.length, height=wall.layout.height,
                thickness=wall.layout.thickness, limitAnalysis=dict(angleDeg=math.degrees(limit.angle), multiplier=limit.multiplier, mechanism=limit.mechanism,
                                                                     joint=limit.joint),
                liftOffTiltDeg=math.degrees(liftTilt) if lifted else None, lastStandingTiltDeg=math.degrees(lastHeld) if lastHeld else None,
                relativeError=error if lifted else None, fellOver=fallTime is not None, fallTime=fallTime, timeStep=O.dt, steps=O.iter, wallSeconds=wallSeconds,
                history=history)
-with open(os.path.join(opts.out, 'results.json'), 'w') as f:
+with open(os.path.join(cli.out, 'results.json'), 'w') as f:
 	json.dump(results, f, indent=1)
 
 fig, axes = plt.subplots(2, 1, figsize=(7, 7))
@@ -147,8 +147,8 @@ axes[1].axhline(math.degrees(limit.angle), color='r', lw=0.5)
 axes[1].set_xlabel('time [s]')
 axes[1].legend()
 fig.tight_layout()
-fig.savefig(os.path.join(opts.out, 'tilt.png'), dpi=120)
+fig.savefig(os.path.join(cli.out, 'tilt.png'), dpi=120)
 print('tilt: limit analysis %.3f deg; stood at %s deg, lifted off at %s deg (%s); %s; %d steps in %.1f s; results in %s' %
       (math.degrees(limit.angle), '%.3f' % math.degrees(lastHeld) if lastHeld else '-', '%.3f' % math.degrees(liftTilt) if lifted else 'never',
-       '%+.2f %%' % (100 * error) if lifted else '-', 'fell over at t = %.2f s' % fallTime if fallTime else 'did not fall over', O.iter, wallSeconds, opts.out))
+       '%+.2f %%' % (100 * error) if lifted else '-', 'fell over at t = %.2f s' % fallTime if fallTime else 'did not fall over', O.iter, wallSeconds, cli.out))
 sys.exit(0)

@@ -62,10 +62,10 @@ r.add_argument('--end', type=float, default=1.5, help='end shortening [mm] (defa
 r.add_argument('--damping', type=float, default=0.0, help="Cundall's non-viscous damping of the integrator, in [0, 1) (default 0, as in the paper)")
 r.add_argument('--out', default='output/wall', help='output folder (default output/wall)')
 r.add_argument('--vtk-every', type=float, default=0.05, help='ParaView output every this shortening [mm] (default 0.05; 0 = none)')
-opts = parser.parse_args(sys.argv[1:])
+cli = parser.parse_args(sys.argv[1:])
 for name in ('rate', 'end', 'beam'):
-	if not getattr(opts, name) > 0:
-		sys.exit('--%s = %g: must be > 0' % (name, getattr(opts, name)))
+	if not getattr(cli, name) > 0:
+		sys.exit('--%s = %g: must be > 0' % (name, getattr(cli, name)))
 
 import matplotlib
 matplotlib.use('Agg')
@@ -73,29 +73,29 @@ import matplotlib.pyplot as plt
 from yade import O, PyRunner, VTKRecorder, Vector3, plot
 from yade.wrapper import RdemMat, RdemJoint
 
-os.makedirs(opts.out, exist_ok=True)
+os.makedirs(cli.out, exist_ok=True)
 
 # 2. Scene ------------------------------------------------------------------------------------------------------------
 O.reset()
 wall0 = time.time()
 try:
 	brick = O.materials.append(
-	        RdemMat(young=opts.brick_E * 1e9, poisson=opts.brick_nu, density=opts.brick_density, tensileStrength=opts.brick_ft * 1e6, label='brick'))
-	joint = RdemJoint(young=opts.mortar_E * 1e9, poisson=opts.mortar_nu, tensileStrength=opts.bond_ft * 1e6, cohesion=opts.bond_c * 1e6,
-	                  frictionAngle=math.atan(opts.bond_mu))
-	total = opts.failure_stress == 'total' and opts.formulation == 'consistent'
-	O.engines = rdem.engines(segmentsPerEdge=opts.springs,
-	                         poisson=None if opts.formulation == 'off' else opts.formulation,
-	                         damping=opts.damping,
+	        RdemMat(young=cli.brick_E * 1e9, poisson=cli.brick_nu, density=cli.brick_density, tensileStrength=cli.brick_ft * 1e6, label='brick'))
+	joint = RdemJoint(young=cli.mortar_E * 1e9, poisson=cli.mortar_nu, tensileStrength=cli.bond_ft * 1e6, cohesion=cli.bond_c * 1e6,
+	                  frictionAngle=math.atan(cli.bond_mu))
+	total = cli.failure_stress == 'total' and cli.formulation == 'consistent'
+	O.engines = rdem.engines(segmentsPerEdge=cli.springs,
+	                         poisson=None if cli.formulation == 'off' else cli.formulation,
+	                         damping=cli.damping,
 	                         failureStress='total' if total else 'spring')
-	w = rdem.masonry.wall(opts.length, opts.height, opts.thickness, brick=opts.brick, joint=opts.joint, bond=opts.bond, blocksPerBrick=opts.blocks,
-	                      mortar=opts.mortar, openings=opts.openings, baseBeam=opts.beam, topBeam=opts.beam, brickMaterial=brick, jointMaterial=joint)
+	w = rdem.masonry.wall(cli.length, cli.height, cli.thickness, brick=cli.brick, joint=cli.joint, bond=cli.bond, blocksPerBrick=cli.blocks,
+	                      mortar=cli.mortar, openings=cli.openings, baseBeam=cli.beam, topBeam=cli.beam, brickMaterial=brick, jointMaterial=joint)
 	for i in w.beams['base']:
 		O.bodies[i].state.blockedDOFs = 'xyzXYZ'
 	for i in w.beams['top']:
 		O.bodies[i].state.blockedDOFs = 'xyzXYZ'
-		O.bodies[i].state.vel = Vector3(0, 0, -opts.rate * 1e-3)
-	if opts.formulation != 'off':
+		O.bodies[i].state.vel = Vector3(0, 0, -cli.rate * 1e-3)
+	if cli.formulation != 'off':
 		if total:
 			rdem.poissonEngine().elements = 'cells'  # also on a grid (stack bond): the total stress of a face needs the cells
 		rdem.poissonEngine().build(w.ids)
@@ -103,9 +103,9 @@ except ValueError as e:
 	sys.exit('wall: %s' % e)
 area = w.layout.length * w.layout.thickness
 dt = rdem.timeStepper().safety * rdem.timeStepper().estimate()
-nSteps = int(math.ceil(opts.end / opts.rate / dt))
+nSteps = int(math.ceil(cli.end / cli.rate / dt))
 print('wall: %s; %d Poisson elements, %d cells; about %d steps of %.3g s; set-up %.1f s' %
-      (w, rdem.poissonEngine().nElements if opts.formulation != 'off' else 0, rdem.poissonEngine().nCells if opts.formulation != 'off' else 0, nSteps, dt,
+      (w, rdem.poissonEngine().nElements if cli.formulation != 'off' else 0, rdem.poissonEngine().nCells if cli.formulation != 'off' else 0, nSteps, dt,
        time.time() - wall0), flush=True)
 
 # 3. Recording -------------------------------------------------------------------------------------------------------
@@ -113,7 +113,7 @@ kindOf = {}
 for kind, pairs in w.joints.items():
 	for a, b in pairs:
 		kindOf[(min(a, b), max(a, b))] = kind
-cracks = rdem.CrackExport(os.path.join(opts.out, 'vtk', ''))
+cracks = rdem.CrackExport(os.path.join(cli.out, 'vtk', ''))
 plot.reset()  # yade.plot keeps the history (plot.data): live plot.plot() in a GUI, history.txt by saveDataTxt
 plot.plots = {'shortening': ('stress', )}
 history = plot.data
@@ -159,16 +159,16 @@ def report():
 
 
 O.engines += [PyRunner(command='record()', iterPeriod=max(1, nSteps // 400)), PyRunner(command='report()', realPeriod=5)]
-vtkEvery = int(round(opts.vtk_every / opts.rate / dt)) if opts.vtk_every > 0 else 0
+vtkEvery = int(round(cli.vtk_every / cli.rate / dt)) if cli.vtk_every > 0 else 0
 if vtkEvery:
 	O.engines += [
-	        VTKRecorder(fileName=os.path.join(opts.out, 'vtk', 'blocks.'), recorders=['boxes'], iterPeriod=vtkEvery),
+	        VTKRecorder(fileName=os.path.join(cli.out, 'vtk', 'blocks.'), recorders=['boxes'], iterPeriod=vtkEvery),
 	        PyRunner(command='cracks.write()', iterPeriod=vtkEvery)
 	]
 
 # 4. Run --------------------------------------------------------------------------------------------------------------
 wallRun = time.time()
-while shortening() < opts.end * 1e-3:
+while shortening() < cli.end * 1e-3:
 	rdem.run(max(1, nSteps // 100))
 wallTime = time.time() - wallRun
 record()
@@ -178,14 +178,14 @@ cracks.close()
 nJ, nB, segs = breaks()
 elastic = [(d, s) for d, s, j, b in zip(history['shortening'], history['stress'], history['jointBreaks'], history['brickBreaks']) if j + b == 0 and d > 0]
 stiffness = sum(s for _, s in elastic[len(elastic) // 2:]) / sum(d for d, _ in elastic[len(elastic) // 2:]) if len(elastic) > 1 else float('nan')
-results = dict(input=vars(opts),
+results = dict(input=vars(cli),
                blocks=len(w.ids),
                bonds=w.nBonds,
                bricks=len(w.bricks),
                courses=len(w.courses),
                joints={k: len(v) for k, v in w.joints.items()},
-               cells=rdem.poissonEngine().nCells if opts.formulation != 'off' else 0,
-               poissonElements=rdem.poissonEngine().nElements if opts.formulation != 'off' else 0,
+               cells=rdem.poissonEngine().nCells if cli.formulation != 'off' else 0,
+               poissonElements=rdem.poissonEngine().nElements if cli.formulation != 'off' else 0,
                elasticStiffnessMPaPerMm=stiffness * 1e-9,
                firstJointCrack=first.get('joint'),
                firstBrickCrack=first.get('brick'),
@@ -196,9 +196,9 @@ results = dict(input=vars(opts),
                wallSeconds=wallTime,
                microsecondsPerBlockStep=1e6 * wallTime / max(1, O.iter * len(w.ids)),
                history=history)
-with open(os.path.join(opts.out, 'results.json'), 'w') as f:
+with open(os.path.join(cli.out, 'results.json'), 'w') as f:
 	json.dump(results, f, indent=1)
-plot.saveDataTxt(os.path.join(opts.out, 'history.txt'))
+plot.saveDataTxt(os.path.join(cli.out, 'history.txt'))
 
 fig, ax = plt.subplots(figsize=(6, 4))
 ax.plot([1e3 * d for d in history['shortening']], [1e-6 * s for s in history['stress']], 'k-')
@@ -210,9 +210,9 @@ if first:
 ax.set_xlabel('shortening of the wall [mm]')
 ax.set_ylabel('mean compressive stress [MPa]')
 fig.tight_layout()
-fig.savefig(os.path.join(opts.out, 'stress_displacement.png'), dpi=120)
+fig.savefig(os.path.join(cli.out, 'stress_displacement.png'), dpi=120)
 
-fig, ax = plt.subplots(figsize=(6, 6 * (w.layout.height + 2 * opts.beam) / w.layout.length))
+fig, ax = plt.subplots(figsize=(6, 6 * (w.layout.height + 2 * cli.beam) / w.layout.length))
 for ids in w.units:
 	b0 = O.bodies[ids[0]]
 	lo = [min(O.bodies[i].state.pos[d] - O.bodies[i].shape.extents[d] for i in ids) for d in (0, 2)]
@@ -226,16 +226,16 @@ for s in segs:
 	t = t1 if abs(t1[1]) < 0.9 else t2
 	ax.plot([p[0] - h * t[0], p[0] + h * t[0]], [p[2] - h * t[2], p[2] + h * t[2]], '-', color='r' if s['state'] == 1 else 'b', lw=1.5)
 ax.set_xlim(-0.02, w.layout.length + 0.02)
-ax.set_ylim(-opts.beam - 0.02, w.layout.height + opts.beam + 0.02)
+ax.set_ylim(-cli.beam - 0.02, w.layout.height + cli.beam + 0.02)
 ax.set_aspect('equal')
 ax.set_title('%d broken springs at %.2f mm (red tension, blue shear)' % (len(segs), 1e3 * shortening()))
 ax.set_xlabel('x [m]')
 ax.set_ylabel('z [m]')
 fig.tight_layout()
-fig.savefig(os.path.join(opts.out, 'cracks.png'), dpi=120)
+fig.savefig(os.path.join(cli.out, 'cracks.png'), dpi=120)
 
 fmt = lambda d, k: '%.2f MPa' % d[k] if d else 'none'
 print('wall: elastic stiffness %.1f MPa/mm; first cracked joint %s, first cracked brick %s; peak %.2f MPa; %d steps in %.1f s (%.3f us per block-step); '
       'results in %s' % (stiffness * 1e-9, fmt(first.get('joint'), 'stressMPa'), fmt(first.get('brick'), 'stressMPa'), results['peakStressMPa'], O.iter,
-                         wallTime, results['microsecondsPerBlockStep'], opts.out))
+                         wallTime, results['microsecondsPerBlockStep'], cli.out))
 sys.exit(0)

@@ -371,9 +371,10 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 		checkedDt = sc->dt;
 		return;
 	}
-	contactDt = method == "lanczos" && contactLimit && contactsPossible(sc) ? gershgorin(sc) : std::numeric_limits<Real>::infinity();
-	if (active) sc->dt = safety * math::min(criticalDt, contactDt);
-	else
+	if (active) {
+		contactDt = method == "lanczos" && contactLimit && contactsPossible(sc) ? gershgorin(sc) : std::numeric_limits<Real>::infinity();
+		sc->dt    = safety * math::min(criticalDt, contactDt);
+	} else
 		checkFixedDt(sc);
 }
 
