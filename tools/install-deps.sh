@@ -10,7 +10,7 @@ readonly PACKAGES=(
 	python3-sphinx python3-tk python3-mpmath python3-future
 	# YADE's Qt viewer (feature GUI: gui/CMakeLists.txt and cMake/Find*.cmake of YADE 2025.2.0) and its Python side
 	qtbase5-dev libqt5opengl5-dev libqglviewer-dev-qt5 freeglut3-dev libglu1-mesa-dev libglib2.0-dev
-	pyqt5-dev-tools python3-pyqt5 python3-pyqt5.qtwebkit # yade.qt imports QtWebKit (or QtWebEngine), as Debian's yade package
+	pyqt5-dev-tools python3-pyqt5 python3-pyqt5.qtwebkit python3-pyqt5.qtsvg # yade.qt imports QtWebKit (or QtWebEngine); IPython's Qt check needs QtSvg
 	# the viewer test renders offscreen under Xvfb (xvfb-run needs xauth)
 	xvfb xauth)
 

@@ -88,10 +88,25 @@ def snapshot(view, fileName, timeout=20.0):
 	if os.path.exists(fileName):
 		os.remove(fileName)
 	view.saveSnapshot(fileName)
-	end = time.time() + timeout
-	while not (os.path.exists(fileName) and os.path.getsize(fileName) > 0):
-		if time.time() > end:
-			raise RuntimeError('rdem.gui.snapshot: %s not written within %g s' % (fileName, timeout))
+	end, size = time.time() + timeout, -1
+	while True:  # written when the view next draws: wait for a complete image whose size no longer changes
 		_processEvents()
 		time.sleep(0.05)
-	return fileName
+		now = os.path.getsize(fileName) if os.path.exists(fileName) else 0
+		if now > 0 and now == size and _isComplete(fileName):
+			return fileName
+		size = now
+		if time.time() > end:
+			raise RuntimeError('rdem.gui.snapshot: %s not written within %g s' % (fileName, timeout))
+
+
+def _isComplete(fileName):
+	"""Whether the file is a complete image (QGLViewer writes its ``snapshotFormat``, JPEG by default, whatever the
+	file's extension)."""
+	from PIL import Image
+	try:
+		with Image.open(fileName) as im:
+			im.load()
+		return True
+	except Exception:
+		return False
