@@ -76,13 +76,16 @@ def run(nSteps, poll=0.05):
 	while O.running:
 		_processEvents()
 		time.sleep(poll)
-	O.wait()  # re-raises an exception of the simulation thread, as O.run(nSteps, True)
+	# An exception of the simulation thread ends the run and is printed by YADE (ThreadRunner's LOG_FATAL), but is not
+	# raised here: O.wait() returns at once once the run has stopped, without looking at it (yadeWrapper.cpp, wait)
+	O.wait()
 	_processEvents()
 
 
 def snapshot(view, fileName, timeout=20.0):
-	"""Save ``view``'s next frame to ``fileName`` (PNG; ``saveSnapshot`` of YADE's GLViewer, which writes it when it
-	next draws) and wait until the file exists. Raises RuntimeError after ``timeout`` seconds."""
+	"""Save ``view``'s next frame to ``fileName`` (``saveSnapshot`` of YADE's GLViewer, which writes it when it next
+	draws, in QGLViewer's ``snapshotFormat``, JPEG by default, whatever the extension) and wait until the image is
+	complete. Raises RuntimeError after ``timeout`` seconds."""
 	_require()
 	fileName = os.path.abspath(fileName)
 	if os.path.exists(fileName):
