@@ -209,8 +209,12 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	if (const int distance = rdem::prefetchDistanceFor(prefetchDistance, scene->interactions->size()))
 		rdem::prefetchInteractionsAhead(*scene, *I, distance);
 	// A real interaction has the RdemGeom this functor made; a potential one has no geometry or an RdemGap.
-	if (I->phys && static_cast<RdemGeom*>(I->geom.get())->bonded)
-		return true; // bonded: the law takes the segments' kinematics from the blocks' states (RdemGeom::kinematics)
+	if (I->phys && static_cast<RdemGeom*>(I->geom.get())->bonded) {
+		// bonded: this step's face normal and segment kinematics (paper eq. 14), from the blocks' states
+		static_cast<RdemGeom*>(I->geom.get())
+		        ->updateBond(state1.ori.toRotationMatrix(), state2.ori.toRotationMatrix(), state2.pos + shift2 - state1.pos);
+		return true;
+	}
 	if (!I->phys && !force && stillApart(*I)) {
 		skippedTests += 1;
 		return false;

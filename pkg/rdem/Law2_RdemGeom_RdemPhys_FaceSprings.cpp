@@ -109,7 +109,7 @@ namespace {
 		}
 	}
 
-	/* One step of a bond: the segments' kinematics from the blocks' current states (RdemGeom::kinematics, paper eq. 14),
+	/* One step of a bond: the segments' kinematics of this step (RdemGeom::kin, set by the geometry functor; paper eq. 14),
 	   the loop invariants, and the sums the segments' forces go into. Segment k = i n + j sits at grid coordinates
 	   (s, r) = (s_i, s_j) (rdem::segmentCoordinate), where its d = P₂ - P₁ and r₂ = C - x₂ are affine in (s, r)
 	   (rdem::BondKinematics). So is the moment of the segment forces about x₂: Σ r₂ × F = r0 × ΣF + ra × Σ sF + rb × Σ rF,
@@ -118,7 +118,7 @@ namespace {
 	struct BondStep {
 		const Pair&                    pair;
 		const RdemGeom&                g;
-		Matrix3r                       R1, R2;
+		Matrix3r                       R1;  ///< rotation of body 1 (softening keeps its shear in body 1's frame)
 		Vector3r                       n;   ///< face normal from body 1 to body 2
 		rdem::BondKinematics<Real>     kin; ///< d and r₂ of the segments
 		Real                           A;   ///< area of a segment [m²]
@@ -136,9 +136,8 @@ namespace {
 		        : pair(pr)
 		        , g(geom)
 		        , R1(pr.s1.ori.toRotationMatrix())
-		        , R2(pr.s2.ori.toRotationMatrix())
-		        , n((R1 * geom.segNormal1 - R2 * geom.segNormal2).normalized())
-		        , kin(geom.kinematics(R1, R2, pr.x2 - pr.x1))
+		        , n(geom.normal)
+		        , kin(geom.kin)
 		        , A(geom.segmentArea())
 		        , k { p.kn, p.ks, p.tensileStrength, p.cohesion, p.tanFriction }
 		        , wn(p.weightNormal)
@@ -329,11 +328,10 @@ namespace {
 	bool bondForces(RdemGeom& g, RdemPhys& p, const Pair& pair, bool totalStress, Energies& e, Breaks& breaks, ForceOnBody2& out)
 	{
 		BondStep b(pair, g, p);
-		g.normal      = b.n;
 		b.contactArea = b.brokenContactArea(p);
 		// Bonds whose centroids are offset along the face (cells only): the intact shear springs measure d_t - slip.
 		const bool     offset = p.centroidOffset != Vector3r::Zero();
-		const Matrix3r R12    = offset ? Matrix3r(b.R1.transpose() * b.R2) : Matrix3r::Identity();
+		const Matrix3r R12    = offset ? Matrix3r(b.R1.transpose() * pair.s2.ori.toRotationMatrix()) : Matrix3r::Identity();
 		b.slip                = offset ? cellOffsetSlip(pair.s1, pair.s2, b.R1, R12, g, p, b.n) : Vector3r::Zero();
 		b.sigmaCells          = totalStress ? cellNormalStress(pair.s1, pair.s2, g, p) : Real(0);
 		const bool withCells  = offset || totalStress;

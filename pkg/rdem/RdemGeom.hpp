@@ -32,6 +32,16 @@ public:
 	{
 		return rdem::bondKinematics<Real>(R1, R2, dx, faceCentre1, segHalf1u, segHalf1v, faceCentre2, segHalf2u, segHalf2v);
 	}
+	/// Sets normal and kin for this step from the current rotations R1, R2 of the blocks and dx = x₂ - x₁ (a bond only).
+	void updateBond(const Matrix3r& R1, const Matrix3r& R2, const Vector3r& dx)
+	{
+		normal = (R1 * segNormal1 - R2 * segNormal2).normalized();
+		kin    = kinematics(R1, R2, dx);
+	}
+	/* A bond's segment kinematics in this step (d = P₂ - P₁ and the arms, affine in the grid coordinates; paper eq. 14),
+	   set with normal by Ig2_RdemBlock_RdemBlock_RdemGeom, read by the law in the same step; not saved. Declared
+	   before the attributes, so that it lies with what the law reads first (RdemPrefetch: the object's head). */
+	rdem::BondKinematics<Real> kin;
 	/// Clear the per-step list of contact samples.
 	void clearSamples();
 	/// Segment centres of a bond in body-1 (body-2) frame [m], and their areas [m²] (empty for a pure contact).
@@ -41,11 +51,11 @@ public:
 	/// Python: d = P₂ - P₁ of every bonded segment for the given states of the two blocks [m].
 	vector<Vector3r> segDispPy(const shared_ptr<State>& s1, const shared_ptr<State>& s2) const;
 	/* The attributes are laid out in memory in this order: what a bond's law reads every step (the face in both block
-	   frames) and writes (``normal``) comes first, in as few cache lines as possible (doc/performance.md). */
+	   frames, ``normal``) comes first, in as few cache lines as possible (doc/performance.md). */
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemGeom,IGeom,R"""(Geometry of a pair of :yref:`RdemBlock` (built by :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom`).
 
-*Bonded segments.* When the pair is bonded (created with ``utils.createInteraction`` on face-adjacent blocks), the shared face is cut into $n\times n$ equal segments (paper §3.1, Fig. 2a). The face is stored in both body frames: its centre $\mathbf{c}$ (``faceCentre1``, ``faceCentre2``), its outward normal (``segNormal1``, ``segNormal2``) and the half-size vectors $\mathbf{u}=h_1\mathbf{t}_1$, $\mathbf{v}=h_2\mathbf{t}_2$ of a segment along the face's in-plane axes (``segHalf1u``, ``segHalf1v``, ``segHalf2u``, ``segHalf2v``). Segment $k=in+j$ has its centre, a material point of both blocks, at $\mathbf{c}+s_i\mathbf{u}+s_j\mathbf{v}$, $s_i=2i+1-n$ (``segPoint1``, ``segPoint2``, computed). :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` takes the relative displacement $\mathbf{d}=\mathbf{P}_2-\mathbf{P}_1$ of the two material points from the blocks' current states, affine in $(s_i,s_j)$ (no per-segment array is stored or written each step), and splits it along the current face normal $\mathbf{n}$ (from body 1 to body 2, ``normal``): $u_n=\mathbf{d}\cdot\mathbf{n}$ (positive = opening, the paper's tension-positive convention of eq. 14) and $\mathbf{u}_s=\mathbf{d}-u_n\mathbf{n}$. Rigid motions of the pair give $\mathbf{d}=0$ exactly, at any rotation.
+*Bonded segments.* When the pair is bonded (created with ``utils.createInteraction`` on face-adjacent blocks), the shared face is cut into $n\times n$ equal segments (paper §3.1, Fig. 2a). The face is stored in both body frames: its centre $\mathbf{c}$ (``faceCentre1``, ``faceCentre2``), its outward normal (``segNormal1``, ``segNormal2``) and the half-size vectors $\mathbf{u}=h_1\mathbf{t}_1$, $\mathbf{v}=h_2\mathbf{t}_2$ of a segment along the face's in-plane axes (``segHalf1u``, ``segHalf1v``, ``segHalf2u``, ``segHalf2v``). Segment $k=in+j$ has its centre, a material point of both blocks, at $\mathbf{c}+s_i\mathbf{u}+s_j\mathbf{v}$, $s_i=2i+1-n$ (``segPoint1``, ``segPoint2``, computed). :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom` computes each step, from the blocks' current states, the current face normal $\mathbf{n}$ (from body 1 to body 2, ``normal``) and the relative displacement $\mathbf{d}=\mathbf{P}_2-\mathbf{P}_1$ of the two material points, affine in $(s_i,s_j)$ (its three coefficients, not a per-segment array); :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` splits $\mathbf{d}$ along $\mathbf{n}$: $u_n=\mathbf{d}\cdot\mathbf{n}$ (positive = opening, the paper's tension-positive convention of eq. 14) and $\mathbf{u}_s=\mathbf{d}-u_n\mathbf{n}$. Rigid motions of the pair give $\mathbf{d}=0$ exactly, at any rotation.
 
 *Sampled contacts.* Blocks that are not bonded interact where sample points of one block's faces (an $(n+1)\times(n+1)$ trapezoid grid per face, corners and edges included) have entered the other block: one normal for the pair (the face axis of least overlap), depth = distance to travel along it to leave the other block, weight = trapezoid area × cosine between the sampled face and the normal, halved because both blocks are sampled; plus one edge-to-edge contact when two edges cross (separating-axis test); see doc/theory.md.)""",
 		((int,samplesPerEdge,2,,"$n$: segments per face edge of the bond, and sample-grid density of contacts; copied from :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom.segmentsPerEdge` when the bond is made (the same $n$: a segment is the patch of one spring, a sample its point; the name stays for saved scenes)."))
@@ -58,7 +68,7 @@ public:
 		((Vector3r,segHalf1v,Vector3r::Zero(),,"Half-size vector $h_2\\mathbf{t}_2$ along the second axis $\\mathbf{t}_2=\\mathbf{n}_1\\times\\mathbf{t}_1$ ($\\mathbf{n}_1$ = ``segNormal1``), in body-1 frame [m]."))
 		((Vector3r,segHalf2u,Vector3r::Zero(),,"``segHalf1u`` in body-2 frame [m]."))
 		((Vector3r,segHalf2v,Vector3r::Zero(),,"``segHalf1v`` in body-2 frame [m]."))
-		((Vector3r,normal,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"Unit normal of the bonded face in the last step, from body 1 to body 2 (global); zero until the law has run."))
+		((Vector3r,normal,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"Unit normal of the bonded face in this step, from body 1 to body 2 (global): $(\\mathbf{R}_1\\mathbf{n}_1-\\mathbf{R}_2\\mathbf{n}_2)/|\\ldots|$ with ``segNormal1``, ``segNormal2`` turned by the blocks' rotations; zero until the geometry functor has run."))
 		((Real,ell1,0,,"Distance from the centroid of body 1 to the bonded (or first contacted) face, $\\ell_A$ of eq. 12 [m]."))
 		((Real,ell2,0,,"Distance from the centroid of body 2 to its face, $\\ell_B$ of eq. 12 [m]."))
 		((shared_ptr<RdemJoint>,joint,,,"The joint of a bond made with a mortar joint (:yref:`Ig2_RdemBlock_RdemBlock_RdemGeom::joint`), or None: blocks bonded directly (eq. 12)."))
