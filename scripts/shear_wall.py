@@ -366,7 +366,7 @@ fig, axes = plt.subplots(1, 2, figsize=(10, 7))
 drawCracks(axes[0], state['peakCracks'], 'just past the peak (%.1f kN, %.3f %%): %d broken springs' % (peak['shearKN'], peak['driftPercent'], len(state['peakCracks'])))
 drawCracks(axes[1], final, 'end (%.3f %%): %d broken springs' % (drift[-1], len(final)))
 axes[0].set_ylabel('z [m]')
-for state_, name in ((1, 'tension'), (2, 'shear'), (3, 'released bond')):
+for state_, name in ((1, 'tension'), (2, 'shear'), (3, 'broken, mode not recorded')):
 	axes[1].plot([], [], '-', color=COLOURS[state_], label=name)
 axes[1].legend(fontsize=7, loc='upper right')
 fig.tight_layout()

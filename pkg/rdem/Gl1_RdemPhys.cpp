@@ -13,6 +13,7 @@
 #include <pkg/rdem/Gl1_RdemPhys.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/math/CrackDisplay.hpp>
+#include <pkg/rdem/math/SegmentGrid.hpp>
 
 namespace yade {
 
@@ -54,31 +55,50 @@ void Gl1_RdemPhys::go(const shared_ptr<IPhys>& ip, const shared_ptr<Interaction>
 	// segState and segSigma are sized once, when the bond is made (Ip2_RdemMat_RdemMat_RdemPhys); segCrush with softening only.
 	if (p.segState.size() != nSeg || p.segSigma.size() != nSeg) return;
 	const bool crushable = p.segCrush.size() == nSeg;
-	auto       markOf    = [&](size_t k) { return rdem::segmentMark<Real>(p.segState[k], crushable ? p.segCrush[k] : Real(0)); };
-	size_t     first     = 0; // most bonds are intact: nothing to draw, no GL state to change
-	while (first < nSeg && markOf(first) == rdem::SegmentMark::None)
-		++first;
-	if (first == nSeg) return;
-	const auto pose = displayed(scene, *b1);
+	Marks      marks(nSeg, rdem::SegmentMark::None);
+	bool       any = false; // most bonds are intact: nothing to draw, no GL state to change
+	for (size_t k = 0; k < nSeg; ++k) {
+		marks[k] = rdem::segmentMark<Real>(p.segState[k], crushable ? p.segCrush[k] : Real(0));
+		any      = any || marks[k] != rdem::SegmentMark::None;
+	}
+	if (!any) return;
+	vector<bool> closed(nSeg);
+	for (size_t k = 0; k < nSeg; ++k)
+		closed[k] = rdem::segmentInContact(p.segState[k], p.segSigma[k]);
+	drawFace(scene, *b1, g->faceCentre1, g->segHalf1u, g->segHalf1v, g->samplesPerEdge, marks, closed, wire);
+}
+
+void Gl1_RdemPhys::drawFace(
+        const Scene*        scene,
+        const Body&         b1,
+        const Vector3r&     c,
+        const Vector3r&     a,
+        const Vector3r&     b,
+        int                 n,
+        const Marks&        marks,
+        const vector<bool>& closed,
+        bool                wire)
+{
+	const auto pose = displayed(scene, b1);
 	const Real f    = math::min(math::max(fill, Real(0.05)), Real(1));
 	glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT | GL_LINE_BIT);
+	glPushMatrix();
 	glDisable(GL_LIGHTING); // flat colours: a picture shows exactly the attribute's RGB
 	glDisable(GL_CULL_FACE);
 	glLineWidth(GLfloat(lineWidth));
 	glTranslatev(pose.first);
 	const AngleAxisr aa(pose.second);
 	glRotate(aa.angle() * Mathr::RAD_TO_DEG, aa.axis()[0], aa.axis()[1], aa.axis()[2]);
-	for (size_t k = first; k < nSeg; ++k) {
-		const auto mark = markOf(k);
-		if (mark == rdem::SegmentMark::None) continue;
-		const Vector2r sr = g->segmentCoordinates(k);
-		const auto     q  = rdem::segmentQuad<Real>(g->faceCentre1, g->segHalf1u, g->segHalf1v, sr[0], sr[1], f);
-		glColor3v(mark == rdem::SegmentMark::Tension ? tensionColor : mark == rdem::SegmentMark::Shear ? shearColor : crushingColor);
+	for (size_t k = 0; k < marks.size() && k < size_t(n * n); ++k) {
+		if (marks[k] == rdem::SegmentMark::None) continue;
+		const Vector2r sr = rdem::segmentCoordinates<Real>(k, n);
+		const auto     q  = rdem::segmentQuad<Real>(c, a, b, sr[0], sr[1], f);
+		glColor3v(marks[k] == rdem::SegmentMark::Tension ? tensionColor : marks[k] == rdem::SegmentMark::Shear ? shearColor : crushingColor);
 		glBegin(wire ? GL_LINE_LOOP : GL_QUADS)
 			;
 			quadVertices(q);
 		glEnd();
-		if (rdem::segmentInContact(p.segState[k], p.segSigma[k])) {
+		if (k < closed.size() && closed[k]) {
 			glColor3v(contactColor);
 			glBegin(GL_LINE_LOOP)
 				;
@@ -86,6 +106,7 @@ void Gl1_RdemPhys::go(const shared_ptr<IPhys>& ip, const shared_ptr<Interaction>
 			glEnd();
 		}
 	}
+	glPopMatrix();
 	glPopAttrib();
 }
 

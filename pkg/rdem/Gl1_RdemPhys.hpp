@@ -9,6 +9,7 @@
 
 #include <pkg/common/GLDrawFunctors.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
+#include <pkg/rdem/math/CrackDisplay.hpp>
 
 namespace yade {
 
@@ -16,6 +17,21 @@ namespace yade {
 class Gl1_RdemPhys : public GlIPhysFunctor {
 public:
 	void go(const shared_ptr<IPhys>&, const shared_ptr<Interaction>&, const shared_ptr<Body>&, const shared_ptr<Body>&, bool wire) override;
+	using Marks = vector<rdem::SegmentMark>;
+	/* Draws, where the renderer shows body b1, the quads of the marked segments k = i n + j of a bond face of n×n
+	   segments, centre c and segment half-size vectors a, b in body 1's frame [m] (rdem::segmentQuad), in the colour of
+	   their mark, outlined in contactColor where closed[k] (a closed crack); also for released bonds
+	   (GlExtra_RdemReleasedBonds). */
+	static void drawFace(
+	        const Scene*        scene,
+	        const Body&         b1,
+	        const Vector3r&     c,
+	        const Vector3r&     a,
+	        const Vector3r&     b,
+	        int                 n,
+	        const Marks&        marks,
+	        const vector<bool>& closed,
+	        bool                wire);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_STATICATTRS(Gl1_RdemPhys,GlIPhysFunctor,R"""(Renders the bonded segments of :yref:`RdemPhys` that have failed: each broken or crushed segment of a bond's shared face (:yref:`RdemGeom`, $n\times n$ segments, the paper's §3.1) is a quad on body 1's face, filled with the colour of what broke it, tension (eq. 15) or shear (eq. 16), or crushed it (compression cap of the softening springs, [LourencoRots1997]_); a broken segment whose contact spring touches and carries compression ($\sigma<0$, :yref:`RdemPhys.segSigma`) is outlined in ``contactColor`` (a closed crack). Intact segments are not drawn.
 

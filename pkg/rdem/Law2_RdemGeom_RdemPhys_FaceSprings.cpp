@@ -500,6 +500,7 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	if (breaks.shear) shearBreaks += breaks.shear;
 	if (!keep) {
 		if (deferForces) activeSetChanges += 1;
+		if (g.bonded) recordRelease(*I, g, p);
 		return false;
 	}
 	applyForces(*I, p, on2.f, on2.t, pair.x2 - pair.x1);
@@ -523,6 +524,21 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::applyForces(const Interaction& I, RdemP
 		scene->forces.addTorque(I.getId2(), t2);
 		scene->forces.addTorque(I.getId1(), t1);
 	}
+}
+
+void Law2_RdemGeom_RdemPhys_FaceSprings::recordRelease(const Interaction& I, const RdemGeom& g, const RdemPhys& p)
+{
+	auto                              record = RdemReleasedBond::of(I.getId1(), I.getId2(), g, p, scene->iter);
+	const std::lock_guard<std::mutex> lock(releasedMutex); // rare: once per bond in a run
+	releasedBonds.push_back(std::move(record));
+}
+
+boost::python::list Law2_RdemGeom_RdemPhys_FaceSprings::releasedBondsPy()
+{
+	boost::python::list out;
+	for (const auto& r : releasedBondsNow())
+		out.append(r);
+	return out;
 }
 
 void Law2_RdemGeom_RdemPhys_FaceSprings::bookEnergies(const rdem::SpringEnergies<Real>& e)

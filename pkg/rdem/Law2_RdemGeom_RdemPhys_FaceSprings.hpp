@@ -10,8 +10,10 @@
 #include <core/Dispatching.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
+#include <pkg/rdem/RdemReleasedBond.hpp>
 #include <pkg/rdem/math/FaceSprings.hpp>
 #include <atomic>
+#include <mutex>
 
 namespace yade {
 
@@ -42,10 +44,18 @@ public:
 	/// throw from inside YADE's parallel loop (an exception leaving an OpenMP region ends the program), and in such a
 	/// step adds its forces directly instead (deferredApplied), so that no force is lost in any case.
 	static void checkForceAssembly(const Scene* scene);
+	/// releasedBonds as a Python list.
+	boost::python::list releasedBondsPy();
+	/// A copy of releasedBonds, safe while the simulation runs (for the viewer's thread).
+	vector<shared_ptr<RdemReleasedBond>> releasedBondsNow()
+	{
+		const std::lock_guard<std::mutex> lock(releasedMutex);
+		return releasedBonds;
+	}
 	/// Number of interactions that started or stopped leaving deferred forces since the last takeActiveSetChanged.
 	OpenMPAccumulator<int> activeSetChanges;
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS(Law2_RdemGeom_RdemPhys_FaceSprings,LawFunctor,R"""(Constitutive law of the refined distinct element method (paper §3, eqs. 13-17).
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_RdemGeom_RdemPhys_FaceSprings,LawFunctor,R"""(Constitutive law of the refined distinct element method (paper §3, eqs. 13-17).
 
 *Restoring springs* (intact segments of a bond): stresses $\sigma=\bar{k}_n u_n$ (positive in tension) and $\boldsymbol{\tau}=\bar{k}_s\mathbf{u}_s$ from the total relative displacement of the segment's material points (eq. 14); force on body 2 $-(\sigma\mathbf{n}+\boldsymbol{\tau})A$, applied at the segment point, so that bending and twisting moments emerge from the segment grid. A spring breaks when $\sigma>f_t$ (eq. 15) or $|\tau|+\sigma\tan\phi>c$ (eq. 16), tension checked first; its elastic energy is released (``rdemBondBreak`` in :yref:`O.energy<Scene.energy>`).
 
@@ -58,6 +68,7 @@ With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemElastic`` (springs, current
 		((bool,totalStress,false,,"Failure criteria (eqs. 15-16) on the total normal stress of the face: the springs' $\\sigma$ plus the normal stress the Poisson cells exert on it, $(c_1S_1+c_2S_2)/(w_nA)$ (:yref:`RdemState::cellStress`, :yref:`RdemPhys::cellCoef1`; doc/theory.md §5.6); it is the continuum's $\\sigma_{nn}$ of the face, zero on the head joints of a wall in uniform vertical compression. Needs Poisson cells (consistent formulation, :yref:`RdemPoissonEngine::elements` ``'cells'`` or ``'auto'`` on a layout that is not a grid). False (default): the springs' $\\sigma$ alone, the paper's criterion, whose lateral springs carry $M\\nu\\sigma/E$ in tension under uniaxial compression (the paper's splitting mechanism)."))
 		((OpenMPAccumulator<int>,tensionBreaks,,Attr::readonly,"Number of restoring springs broken in tension (eq. 15) so far."))
 		((OpenMPAccumulator<int>,shearBreaks,,Attr::readonly,"Number of restoring springs broken in shear (eq. 16) so far."))
+		((vector<shared_ptr<RdemReleasedBond>>,releasedBonds,,Attr::hidden,"The bonds released so far (Python: the read-only list ``releasedBonds``, without a converter of its own)."))
 		((int,elasticIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 		((int,dashpotIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 		((int,frictionIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
@@ -65,6 +76,10 @@ With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemElastic`` (springs, current
 		((int,fractureTensionIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 		((int,fractureShearIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 		((int,crushingIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
+		,
+		/* ctor */
+		,
+		.add_property("releasedBonds",&Law2_RdemGeom_RdemPhys_FaceSprings::releasedBondsPy,"The bonds released so far (every segment broken, none in contact; the interaction is then reset), step by step: the cracks that no interaction shows any more (:yref:`RdemReleasedBond`), drawn by :yref:`GlExtra_RdemReleasedBonds` and exported by ``rdem.export.CrackExport``.")
 	);
 	// clang-format on
 	FUNCTOR2D(RdemGeom, RdemPhys);
@@ -74,12 +89,15 @@ private:
 	/// The interaction's force f₂ on body 2 and moment t₂ about its centroid, and their reaction on body 1 (dx = x₂ - x₁):
 	/// left in p for RdemForceAssembler (deferForces) or added to the scene's force container.
 	void applyForces(const Interaction& I, RdemPhys& p, const Vector3r& f2, const Vector3r& t2, const Vector3r& dx);
+	/// Appends the bond of I, released in this step, to releasedBonds (thread-safe).
+	void recordRelease(const Interaction& I, const RdemGeom& g, const RdemPhys& p);
 	/// Adds one interaction's energies of this step to O.energy.
 	void bookEnergies(const rdem::SpringEnergies<Real>& e);
 	/// deferForces, and an RdemForceAssembler will apply the forces in this step (checked once per step).
 	bool              deferredApplied();
 	std::atomic<long> assemblyChecked { -1 }; // 2·iter + (assembler follows) of the last check; -1: none yet
 	std::atomic<bool> assemblyWarned { false };
+	std::mutex        releasedMutex; // releasedBonds grows from the threads of the interaction loop
 };
 REGISTER_SERIALIZABLE(Law2_RdemGeom_RdemPhys_FaceSprings);
 

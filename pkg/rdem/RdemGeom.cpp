@@ -11,11 +11,7 @@ namespace yade {
 
 YADE_PLUGIN((RdemGeom));
 
-Vector2r RdemGeom::segmentCoordinates(size_t k) const
-{
-	const int n = samplesPerEdge;
-	return Vector2r(rdem::segmentCoordinate<Real>(int(k) / n, n), rdem::segmentCoordinate<Real>(int(k) % n, n));
-}
+Vector2r RdemGeom::segmentCoordinates(size_t k) const { return rdem::segmentCoordinates<Real>(k, samplesPerEdge); }
 
 namespace {
 	/// Centres of the n×n segments of a face with centre c and segment half-size vectors u, v (one body frame) [m].

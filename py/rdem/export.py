@@ -31,8 +31,8 @@ def _writeVtu(path, points, cells, cellType, cellData):
 
 
 class CrackExport:
-	"""Writes ``<prefix>cracks.<iter>.vtu`` (one quad per segment broken since the export was made: state 1 tension, 2 shear,
-	3 released bond) and
+	"""Writes ``<prefix>cracks.<iter>.vtu`` (one quad per segment broken since the export was made: ``state`` 1 tension,
+	2 shear, 3 broken, mode unknown; ``released`` 1 where the whole bond has broken through and opened) and
 	``<prefix>poisson.<iter>.vtu`` (one hexahedron per Poisson element on the current centroids, with its force scale), plus
 	``.pvd`` collections. Call :meth:`write` from a :yref:`PyRunner`, and :meth:`close` at the end."""
 
@@ -52,7 +52,7 @@ class CrackExport:
 			pass  # no Poisson engine in this scene
 
 	def _cracks(self):
-		points, cells, state = [], [], []
+		points, cells, state, released = [], [], [], []
 		for sg in measure.brokenSegments(self.snapshot):
 			c, t1, t2 = sg['point'], sg['t1'], sg['t2']
 			h1, h2 = sg['halfSizes']
@@ -60,7 +60,8 @@ class CrackExport:
 			points += [c - h1 * t1 - h2 * t2, c + h1 * t1 - h2 * t2, c + h1 * t1 + h2 * t2, c - h1 * t1 + h2 * t2]
 			cells.append([base, base + 1, base + 2, base + 3])
 			state.append(sg['state'])
-		self._save('cracks', points, cells, 9, {'state': state})
+			released.append(1 if sg['released'] else 0)
+		self._save('cracks', points, cells, 9, {'state': state, 'released': released})
 
 	def _poisson(self, eng):
 		nodes = eng.nodes

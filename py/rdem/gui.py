@@ -1,7 +1,8 @@
 """YADE's Qt viewer for refined-DEM scenes: blocks, broken springs coloured by failure mode, Poisson elements.
 
 The blocks are :yref:`Box` es drawn by YADE's ``Gl1_Box``; the broken springs are drawn per segment by
-``Gl1_RdemPhys`` (red tension, blue shear, amber crushing, green outline: a closed crack in contact), the Poisson
+``Gl1_RdemPhys`` (red tension, blue shear, amber crushing, green outline: a closed crack in contact) and, once a bond
+has broken through and opened, by ``GlExtra_RdemReleasedBonds``; the Poisson
 elements by ``GlExtra_RdemPoissonElements`` (off unless asked for). A YADE built without its GUI (``tools/setup.sh``
 without ``--gui``), ``yade -n`` or a missing display leave :func:`available` false; scripts then run headless::
 
@@ -33,15 +34,17 @@ def _require():
 def configure(poissonElements=False, wireBlocks=True):
 	"""Set YADE's renderer (``yade.qt.Renderer()``) up for the refined DEM and return it: interactions drawn by their
 	physics (``intrPhys``, so ``Gl1_RdemPhys`` draws the broken segments), blocks as wire boxes unless ``wireBlocks`` is
-	False (solid boxes hide the cracks inside the specimen), and one ``GlExtra_RdemPoissonElements`` among the extra
-	drawers, switched off (``dead``) unless ``poissonElements``."""
+	False (solid boxes hide the cracks inside the specimen), and among the extra drawers one
+	``GlExtra_RdemReleasedBonds`` (the bonds broken through and opened, which no interaction shows any more) and one
+	``GlExtra_RdemPoissonElements``, switched off (``dead``) unless ``poissonElements``."""
 	_require()
 	from yade import qt
 	r = qt.Renderer()
 	r.intrPhys = True
 	r.wire = bool(wireBlocks)
-	drawers = [d for d in r.extraDrawers if not isinstance(d, yade.wrapper.GlExtra_RdemPoissonElements)]
-	r.extraDrawers = drawers + [yade.wrapper.GlExtra_RdemPoissonElements(dead=not poissonElements)]
+	ours = (yade.wrapper.GlExtra_RdemPoissonElements, yade.wrapper.GlExtra_RdemReleasedBonds)
+	drawers = [d for d in r.extraDrawers if not isinstance(d, ours)]
+	r.extraDrawers = drawers + [yade.wrapper.GlExtra_RdemReleasedBonds(), yade.wrapper.GlExtra_RdemPoissonElements(dead=not poissonElements)]
 	return r
 
 

@@ -34,18 +34,27 @@ def bondSnapshot():
 
 def brokenSegments(snapshot):
 	"""The segments of a :func:`bondSnapshot` whose restoring spring has broken since, in global coordinates: dicts with
-	``point``, ``normal``, ``t1``, ``t2``, ``halfSizes`` and ``state`` (1 tension, 2 shear, 3 released bond: all springs broken and
-	open, so the breaking mode is no longer stored)."""
+	``point``, ``normal``, ``t1``, ``t2``, ``halfSizes``, ``state`` (1 tension, 2 shear) and ``released`` (True once the
+	whole bond has broken through and opened: the law released it and keeps its record in
+	:yref:`Law2_RdemGeom_RdemPhys_FaceSprings.releasedBonds`; ``state`` is then read there, and is 3 if that list was
+	cleared)."""
+	records = {}
+	for r in build.law().releasedBonds:
+		records[(r.id1, r.id2)] = r.segState
 	out = []
 	for id1, id2, k, pt, n1, t1, half in snapshot:
 		I = O.interactions[id1, id2] if O.interactions.has(id1, id2) else None
 		real = I is not None and I.isReal and isinstance(I.phys, RdemPhys) and len(I.phys.segState) > k
-		state = I.phys.segState[k] if real else 3
+		if real:
+			state = I.phys.segState[k]
+		else:
+			record = records.get((id1, id2))
+			state = record[k] if record is not None and len(record) > k else 3
 		if state == 0:
 			continue
 		s1 = O.bodies[id1].state
 		n, t = s1.ori * n1, s1.ori * t1
-		out.append(dict(id1=id1, id2=id2, point=s1.pos + s1.ori * pt, normal=n, t1=t, t2=n.cross(t), halfSizes=half, state=state))
+		out.append(dict(id1=id1, id2=id2, point=s1.pos + s1.ori * pt, normal=n, t1=t, t2=n.cross(t), halfSizes=half, state=state, released=not real))
 	return out
 
 

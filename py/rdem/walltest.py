@@ -278,13 +278,17 @@ def smoothedPeak(drift, shear, window):
 def crackClasses(wall, segments):
 	"""The broken segments ``segments`` (:func:`rdem.measure.brokenSegments`) counted by where and how they broke:
 	``{'joint': {'tension': n, 'shear': n, 'released': n}, 'brick': {...}}``; *joint* = bed, head, collar and beam joints,
-	*brick* = springs inside a brick (blocks per brick > 1)."""
+	*brick* = springs inside a brick (blocks per brick > 1). ``tension`` and ``shear`` count every broken segment by
+	what broke it; ``released`` counts those of them whose bond has broken through and opened."""
 	kindOf = {(min(a, b), max(a, b)): kind for kind, pairs in wall.joints.items() for a, b in pairs}
 	out = {w: {'tension': 0, 'shear': 0, 'released': 0} for w in ('joint', 'brick')}
-	mode = {1: 'tension', 2: 'shear', 3: 'released'}
+	mode = {1: 'tension', 2: 'shear'}
 	for sg in segments:
 		where = 'brick' if kindOf.get((min(sg['id1'], sg['id2']), max(sg['id1'], sg['id2']))) == 'internal' else 'joint'
-		out[where][mode[sg['state']]] += 1
+		if sg['state'] in mode:
+			out[where][mode[sg['state']]] += 1
+		if sg.get('released', sg['state'] == 3):
+			out[where]['released'] += 1
 	return out
 
 

@@ -19,7 +19,7 @@ namespace {
 using rdem_test::Scalar;
 
 namespace rdem = yade::rdem;
-using V3 = rdem_test::Vector3;
+using V3       = rdem_test::Vector3;
 
 // A tilted face: centre c, orthonormal in-plane axes t1, t2 (columns of a rotation), half-sizes 0.3 × 0.2 m.
 struct Face {
@@ -42,7 +42,7 @@ TEST(SegmentGrid, CentresTileTheFace)
 	for (int n = 1; n <= 3; ++n) {
 		const auto pts = rdem::segmentCentres<Scalar>(f.c, f.t1, f.t2, f.h1, f.h2, n);
 		ASSERT_EQ(pts.size(), size_t(n * n));
-		Scalar area = 0;
+		Scalar area     = 0;
 		V3     centroid = V3::Zero();
 		for (const auto& p : pts) {
 			// every segment has the same area 0.24/n²; a single division: 1e-15 relative
@@ -78,6 +78,19 @@ TEST(SegmentGrid, CentresForNEquals2ByHand)
 	ASSERT_EQ(one.size(), 1u);
 	EXPECT_EQ(one[0].pos, V3(1, 2, 3)); // s = r = 0 exactly
 	EXPECT_NEAR(one[0].weight, 0.16, 1e-15 * 0.16);
+}
+
+// Segment k = i n + j sits at (s_i, s_j), s_i = 2i + 1 - n: row-major, as RdemPhys::segState is indexed.
+TEST(SegmentGrid, CoordinatesOfSegmentIndex)
+{
+	const auto c = rdem::segmentCoordinates<Scalar>(5, 3); // i = 1, j = 2
+	EXPECT_EQ(c[0], Scalar(0));
+	EXPECT_EQ(c[1], Scalar(2));
+	const auto first = rdem::segmentCoordinates<Scalar>(0, 2), last = rdem::segmentCoordinates<Scalar>(3, 2);
+	EXPECT_EQ(first[0], Scalar(-1));
+	EXPECT_EQ(first[1], Scalar(-1));
+	EXPECT_EQ(last[0], Scalar(1));
+	EXPECT_EQ(last[1], Scalar(1));
 }
 
 TEST(SegmentGrid, SamplePointsTrapezoidWeights)
@@ -172,8 +185,8 @@ TEST(SegmentGrid, TrapezoidNodesOnMinusOneToOne)
 // A bonded face in the frames of its two blocks, made from the face in global coordinates at bonding time.
 struct BondedFace {
 	rdem_test::Matrix3 R1, R2; // rotations of the blocks at bonding (body to global)
-	V3              x1, x2; // their centroids [m]
-	V3              c1, a1, b1, c2, a2, b2;
+	V3                 x1, x2; // their centroids [m]
+	V3                 c1, a1, b1, c2, a2, b2;
 };
 
 BondedFace bondedFace()
@@ -217,11 +230,11 @@ TEST(SegmentGrid, BondKinematicsEqualsTheMaterialPointsMovedOneByOne)
 {
 	// Blocks moved and rotated independently: d = P₂ - P₁ and r₂ = (P₁ + P₂)/2 - x₂ of each segment, computed from its
 	// two material points one by one, against the affine form. Coordinates O(1) m, a few products: 1e-14 m.
-	const BondedFace      b  = bondedFace();
+	const BondedFace         b  = bondedFace();
 	const rdem_test::Matrix3 R1 = Eigen::AngleAxis<Scalar>(0.05, V3(1, 0, 0)).toRotationMatrix() * b.R1;
 	const rdem_test::Matrix3 R2 = Eigen::AngleAxis<Scalar>(-0.08, V3(0.2, 1, 0.4).normalized()).toRotationMatrix() * b.R2;
-	const V3              x1 = b.x1 + V3(0.01, -0.02, 0.005), x2 = b.x2 + V3(-0.003, 0.004, 0.02);
-	const auto            kin = rdem::bondKinematics<Scalar>(R1, R2, x2 - x1, b.c1, b.a1, b.b1, b.c2, b.a2, b.b2);
+	const V3                 x1 = b.x1 + V3(0.01, -0.02, 0.005), x2 = b.x2 + V3(-0.003, 0.004, 0.02);
+	const auto               kin = rdem::bondKinematics<Scalar>(R1, R2, x2 - x1, b.c1, b.a1, b.b1, b.c2, b.a2, b.b2);
 	for (Scalar s : { -1.0, 1.0, 0.0, 0.5 })
 		for (Scalar r : { -1.0, 1.0, -0.25 }) {
 			const V3 P1 = x1 + R1 * (b.c1 + s * b.a1 + r * b.b1), P2 = x2 + R2 * (b.c2 + s * b.a2 + r * b.b2);
@@ -236,11 +249,11 @@ TEST(SegmentGrid, BondKinematicsOfARigidMotionIsZero)
 {
 	// The pair rotated by 1 rad and moved as one body: every segment's d is zero to round-off (1e-15 relative of
 	// coordinates O(1) m), and r₂ is the common material point's offset from x₂.
-	const BondedFace      b  = bondedFace();
+	const BondedFace         b  = bondedFace();
 	const rdem_test::Matrix3 Q  = Eigen::AngleAxis<Scalar>(1.0, V3(1, 2, 3).normalized()).toRotationMatrix();
-	const V3              u  = V3(0.5, -1, 2);
-	const V3              x1 = Q * b.x1 + u, x2 = Q * b.x2 + u;
-	const auto            kin = rdem::bondKinematics<Scalar>(Q * b.R1, Q * b.R2, x2 - x1, b.c1, b.a1, b.b1, b.c2, b.a2, b.b2);
+	const V3                 u  = V3(0.5, -1, 2);
+	const V3                 x1 = Q * b.x1 + u, x2 = Q * b.x2 + u;
+	const auto               kin = rdem::bondKinematics<Scalar>(Q * b.R1, Q * b.R2, x2 - x1, b.c1, b.a1, b.b1, b.c2, b.a2, b.b2);
 	for (Scalar s : { -1.0, 1.0 })
 		for (Scalar r : { -1.0, 1.0 }) {
 			EXPECT_NEAR(kin.displacement(s, r).norm(), 0, 1e-14) << "s = " << s << ", r = " << r;

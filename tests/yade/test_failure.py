@@ -43,6 +43,24 @@ class Breakage(unittest.TestCase):
 		self.assertEqual(rdem.breakCounts(), (4, 0))
 		self.assertFalse(O.interactions[0, 1].isReal)  # fully broken and open: the bond is released
 
+	def testReleasedBondIsRecorded(self):
+		"""A bond broken through and open is released (its interaction reset) but stays a crack: the law records its face
+		in body 1's frame and what broke each segment (RdemReleasedBond), and rdem.brokenSegments reads the mode there."""
+		self.build(ft=1e6)
+		snapshot = rdem.bondSnapshot()
+		self.place(Vector3(2e6 / KN, 0, 0))  # sigma = 2 f_t: all four springs break in tension and the faces are apart
+		self.assertFalse(O.interactions[0, 1].isReal)
+		records = rdem.law().releasedBonds
+		self.assertEqual(len(records), 1)
+		r = records[0]
+		self.assertEqual((r.id1, r.id2, r.iter, r.samplesPerEdge), (0, 1, O.iter - 1, 2))
+		self.assertEqual(list(r.segState), [1, 1, 1, 1])
+		self.assertLess((r.faceCentre1 - Vector3(H, 0, 0)).norm(), 1e-15 * H)  # block 0's +x face, in its frame (round-off of the grid)
+		self.assertEqual(tuple(r.segNormal1), (1, 0, 0))
+		self.assertAlmostEqual(r.segHalf1u.norm() * r.segHalf1v.norm() * 4, AREA / 4, delta=1e-15)  # a segment of 2x2
+		segs = rdem.brokenSegments(snapshot)
+		self.assertEqual([(s['state'], s['released']) for s in segs], [(1, True)] * 4)
+
 	def testBrokenTransmitsCompressionOnly(self):
 		self.build(ft=1e6)
 		self.place(Vector3(2e6 / KN, 0, 0))  # break

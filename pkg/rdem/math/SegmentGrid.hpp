@@ -14,6 +14,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <vector>
 
 namespace yade {
@@ -74,6 +75,12 @@ namespace rdem {
 	/// Grid coordinate of segment i of n along one axis of a face: its centre lies s·h from the face centre, s = 2i + 1 - n,
 	/// h the segment's half-size along that axis (so that segmentCentres gives c + s h₁t₁ + r h₂t₂).
 	template <class S> S segmentCoordinate(int i, int n) { return S(2 * i + 1 - n); }
+
+	/// Grid coordinates (s, r) of segment k = i n + j of a face of n×n segments (segmentCoordinate of i and of j).
+	template <class S> Eigen::Matrix<S, 2, 1> segmentCoordinates(std::size_t k, int n)
+	{
+		return Eigen::Matrix<S, 2, 1>(segmentCoordinate<S>(int(k) / n, n), segmentCoordinate<S>(int(k) % n, n));
+	}
 
 	/* Kinematics of the segments of a bonded face (paper eq. 14, §3.1). A segment at grid coordinates (s, r) has one
 	   material point in each block, P₁ = x₁ + R₁(c₁ + s a₁ + r b₁) and P₂ = x₂ + R₂(c₂ + s a₂ + r b₂), with c the face
