@@ -20,8 +20,8 @@ How to run
     build/bin/yade -n scripts/earthquake.py --record RSN6.AT2 --scale 1.5 --direction x
     build/bin/yade -n scripts/earthquake.py --help
 
-Outputs (in --out, default output/earthquake): results.json, earthquake.png (ground motion, top displacement relative
-to the base, energy), cracks.png (the wall's broken springs, front and side views), ParaView files in vtk/.
+Outputs (in --out, default output/earthquake): results.json, history.txt (yade.plot's saveDataTxt), earthquake.png
+(ground motion, top displacement relative to the base, energy), cracks.png (the wall's broken springs, front and side views), ParaView files in vtk/.
 """
 import argparse
 import json
@@ -66,7 +66,7 @@ for name in ('amplitude', 'period', 'scale', 'duration'):
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
-from yade import O, Vector3, VTKRecorder
+from yade import O, Vector3, VTKRecorder, plot
 from yade.wrapper import RdemMat, RdemJoint
 import rdem
 from rdem import ground_motion as gm
@@ -147,22 +147,25 @@ print('earthquake: %s; %s, PGA %.3g g along %s, %s; settled in %.3f s; step %.3g
 
 # 3. Run -------------------------------------------------------------------------------------------------------------
 axis = 'xy'.index(cli.direction)
-history = dict(t=[], groundAcc=[], groundDisp=[], topDrift=[], breaks=[], input=[], dissipated=[], kinetic=[], total=[])
+# yade.plot keeps the history (plot.data): live curves with plot.plot() in a YADE with a GUI, history.txt by saveDataTxt.
+plot.reset()
+plot.plots = {'t': ('topDrift', 'groundDisp'), 't ': ('input', 'dissipated', 'kinetic', 'total')}
+history = plot.data
 
 
 def record():
 	base = O.bodies[baseIds[0]].state.pos - b0
 	drift = sum((O.bodies[i].state.pos - x0[i])[axis] for i in top) / len(top) - base[axis]
 	e = dict(O.energy.items())
-	history['t'].append(O.time - t0)
-	history['groundAcc'].append(shaker.accelerationAt(O.time)[axis])
-	history['groundDisp'].append(base[axis])
-	history['topDrift'].append(drift)
-	history['breaks'].append(sum(rdem.breakCounts()))
-	history['input'].append(-e.get('groundWork', 0.0) - e.get('gravWork', 0.0))
-	history['dissipated'].append(e.get('rdemDashpot', 0) + e.get('rdemFriction', 0) + e.get('rdemBondBreak', 0) + e.get('rdemPoissonRelease', 0))
-	history['kinetic'].append(e.get('kinetic', 0.0))
-	history['total'].append(O.energy.total())
+	plot.addData(t=O.time - t0,
+	             groundAcc=shaker.accelerationAt(O.time)[axis],
+	             groundDisp=base[axis],
+	             topDrift=drift,
+	             breaks=sum(rdem.breakCounts()),
+	             input=-e.get('groundWork', 0.0) - e.get('gravWork', 0.0),
+	             dissipated=e.get('rdemDashpot', 0) + e.get('rdemFriction', 0) + e.get('rdemBondBreak', 0) + e.get('rdemPoissonRelease', 0),
+	             kinetic=e.get('kinetic', 0.0),
+	             total=O.energy.total())
 
 
 lastReport, vtkNext, cracks = time.time(), 0.0, rdem.CrackExport(os.path.join(cli.out, 'vtk', ''))
@@ -186,6 +189,7 @@ results = dict(input=vars(cli), structure=repr(structure), blocks=len(ids), pga=
                wallSeconds=runTime, microsecondsPerBlockStep=1e6 * runTime / max(1, O.iter * len(ids)), history=history)
 with open(os.path.join(cli.out, 'results.json'), 'w') as f:
 	json.dump(results, f, indent=1)
+plot.saveDataTxt(os.path.join(cli.out, 'history.txt'))
 
 fig, axes = plt.subplots(3, 1, figsize=(7, 8), sharex=True)
 axes[0].plot(history['t'], [a / G for a in history['groundAcc']])

@@ -19,7 +19,7 @@ How to run
     build/bin/yade -n scripts/rocking.py --pulse sine --amplitude 3 --period 0.5 --duration 3
     build/bin/yade -n scripts/rocking.py --help
 
-Outputs (in --out, default output/rocking): results.json, rocking.png (rotation against time with Housner's amplitudes,
+Outputs (in --out, default output/rocking): results.json, history.txt (yade.plot's saveDataTxt), rocking.png (rotation against time with Housner's amplitudes,
 ground motion, energy), ParaView files in vtk/.
 """
 import argparse
@@ -51,7 +51,7 @@ if not 0 <= cli.theta0 < 1:
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
-from yade import O, VTKRecorder
+from yade import O, VTKRecorder, plot
 import rdem
 from rdem import ground_motion as gm
 from rdem.scenes import RockingBlock
@@ -68,17 +68,20 @@ if cli.pulse != 'none':
 	motion = gm.GroundMotion(x=record)
 	rdem.earthquake.shaker(motion, ids=[rock.base], mode=cli.mode)
 O.trackEnergy = True
-history = dict(t=[], theta=[], groundAcc=[], groundDisp=[], energy=[], kinetic=[])
 shaker = [e for e in O.engines if type(e).__name__ == 'RdemGroundShaker']
+# yade.plot keeps the history (plot.data): live curves with plot.plot() in a YADE with a GUI, history.txt by saveDataTxt.
+plot.reset()
+plot.plots = {'t': ('theta', ), 't ': ('energy', 'kinetic')}
+history = plot.data
 
 
 def record():
-	history['t'].append(O.time)
-	history['theta'].append(rock.angle())
-	history['groundAcc'].append(shaker[0].accelerationAt(O.time)[0] if shaker else 0.0)
-	history['groundDisp'].append(shaker[0].displacementAt(O.time)[0] if shaker else 0.0)
-	history['energy'].append(O.energy.total())
-	history['kinetic'].append(O.energy['kinetic'] if 'kinetic' in O.energy.keys() else 0.0)
+	plot.addData(t=O.time,
+	             theta=rock.angle(),
+	             groundAcc=shaker[0].accelerationAt(O.time)[0] if shaker else 0.0,
+	             groundDisp=shaker[0].displacementAt(O.time)[0] if shaker else 0.0,
+	             energy=O.energy.total(),
+	             kinetic=O.energy['kinetic'] if 'kinetic' in O.energy.keys() else 0.0)
 
 
 wall0, lastReport, vtkNext = time.time(), time.time(), 0.0
@@ -113,6 +116,7 @@ results = dict(input=vars(cli), alpha=alpha, eta=rock.eta(), housnerEnergyRatio=
                steps=O.iter, wallSeconds=wall, history=history)
 with open(os.path.join(cli.out, 'results.json'), 'w') as f:
 	json.dump(results, f, indent=1)
+plot.saveDataTxt(os.path.join(cli.out, 'history.txt'))
 
 fig, axes = plt.subplots(3, 1, figsize=(7, 8), sharex=True)
 axes[0].plot(history['t'], history['theta'], label='model')

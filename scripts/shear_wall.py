@@ -31,7 +31,7 @@ How to run
     build/bin/yade -n scripts/shear_wall.py --help                every option
 
 Outputs (in --out, default output/shear_wall): results.json (inputs, peak load and drift, initial stiffness, first
-crack, cracks by joint/brick and mode, energy balance, cost), load_drift.png (load against drift with the measured
+crack, cracks by joint/brick and mode, energy balance, cost), history.txt (yade.plot's saveDataTxt), load_drift.png (load against drift with the measured
 peaks, energy, broken springs), cracks.png (the front of the wall with every broken spring, coloured by mode, at the
 peak and at the end), ParaView files in vtk/ (blocks.*.vtu from YADE's VTKRecorder, cracks.pvd).
 """
@@ -121,7 +121,7 @@ except argparse.ArgumentTypeError as e:
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
-from yade import O, VTKRecorder
+from yade import O, VTKRecorder, plot
 from yade.wrapper import RdemMat, RdemJoint
 from rdem import walltest
 
@@ -175,29 +175,29 @@ print('shear_wall: %s; sigma0 %.3g MPa (N = %.1f kN), %s ends; time step %.3g s,
 # 3. Recording -------------------------------------------------------------------------------------------------------
 ENERGIES = ('rdemElastic', 'rdemPoisson', 'rdemBondBreak', 'rdemDashpot', 'rdemFriction', 'rdemPoissonRelease', 'rdemFractureTension', 'rdemFractureShear',
             'rdemCrushing', 'nonviscDamp', 'kinetic', 'gravWork')
-history = dict(t=[], drift=[], shear=[], baseShear=[], axial=[], rotation=[], vertical=[], tension=[], shearBreaks=[], workH=[], workV=[],
-               **{e: [] for e in ENERGIES})
+# yade.plot keeps the history (plot.data): live curves with plot.plot() in a YADE with a GUI, history.txt by saveDataTxt.
+plot.reset()
+plot.plots = {'drift': ('shear', 'baseShear'), 't': ('tension', 'shearBreaks')}
+history = plot.data
 state = dict(peak=None, peakCracks=None, first=None, report=time.time(), iter=O.iter, vtkNext=0.0)
 cracks = rdem.CrackExport(os.path.join(cli.out, 'vtk', ''))
 
 
 def record(t):
-	h = history
-	h['t'].append(O.time)
-	h['drift'].append(t.drift())
-	h['shear'].append(t.shear())
-	h['baseShear'].append(t.baseShear())
-	h['axial'].append(t.axialLoad())
-	h['rotation'].append(t.topRotation())
-	h['vertical'].append(t.verticalDisplacement())
 	nt, ns = rdem.breakCounts()
-	h['tension'].append(nt)
-	h['shearBreaks'].append(ns)
-	h['workH'].append(t.work['horizontal'])
-	h['workV'].append(t.work['vertical'])
 	keys = O.energy.keys()
-	for e in ENERGIES:
-		h[e].append(O.energy[e] if e in keys else 0.0)
+	plot.addData(t=O.time,
+	             drift=t.drift(),
+	             shear=t.shear(),
+	             baseShear=t.baseShear(),
+	             axial=t.axialLoad(),
+	             rotation=t.topRotation(),
+	             vertical=t.verticalDisplacement(),
+	             tension=nt,
+	             shearBreaks=ns,
+	             workH=t.work['horizontal'],
+	             workV=t.work['vertical'],
+	             **{e: O.energy[e] if e in keys else 0.0 for e in ENERGIES})
 
 
 def onStep(t):
@@ -297,6 +297,7 @@ results = dict(input=vars(cli), sigma0=sigma0, axialForce=test.axialForce, block
                cost=cost, comparison=comparison, history=h)
 with open(os.path.join(cli.out, 'results.json'), 'w') as f:
 	json.dump(results, f, indent=1)
+plot.saveDataTxt(os.path.join(cli.out, 'history.txt'))
 
 # 6. Figures ----------------------------------------------------------------------------------------------------------
 drift = [100 * d for d in h['drift']]

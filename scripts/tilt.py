@@ -20,7 +20,7 @@ How to run
     build/bin/yade -n scripts/tilt.py --height 0.825 --step 0.05          15 courses (12.31°), finer steps
     build/bin/yade -n scripts/tilt.py --help
 
-Outputs (in --out, default output/tilt): results.json, tilt.png (the wall's lean against the tilt and against time, the
+Outputs (in --out, default output/tilt): results.json, history.txt (yade.plot's saveDataTxt), tilt.png (the wall's lean against the tilt and against time, the
 limit-analysis angle), ParaView files in vtk/ (the blocks).
 """
 import argparse
@@ -59,7 +59,7 @@ if len(cli.brick) != 3 or min(cli.brick) <= 0:
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
-from yade import O, VTKRecorder
+from yade import O, VTKRecorder, plot
 from rdem.earthquake import DryWall
 
 os.makedirs(os.path.join(cli.out, 'vtk'), exist_ok=True)
@@ -74,7 +74,10 @@ print('tilt: %d bricks in %d courses, %.3g x %.3g x %.3g m; limit analysis: %s a
        math.degrees(limit.angle), limit.multiplier),
       flush=True)
 
-history = dict(t=[], tilt=[], lean=[], uplift=[])
+# yade.plot keeps the history (plot.data): live curves with plot.plot() in a YADE with a GUI, history.txt by saveDataTxt.
+plot.reset()
+plot.plots = {'tilt': ('lean', 'uplift')}
+history = plot.data
 state = dict(vtkNext=0.0, report=time.time())
 
 
@@ -87,10 +90,7 @@ def advance(duration, theta0, theta1, ramp):
 		wall.tilt(theta)
 		for _ in range(20):
 			O.step()
-		history['t'].append(O.time)
-		history['tilt'].append(theta)
-		history['lean'].append(wall.lean())
-		history['uplift'].append(wall.lean(wall.courses[0]))
+		plot.addData(t=O.time, tilt=theta, lean=wall.lean(), uplift=wall.lean(wall.courses[0]))
 		if cli.vtk_every > 0 and O.time >= state['vtkNext']:
 			VTKRecorder(fileName=os.path.join(cli.out, 'vtk', 'blocks.'), recorders=['boxes'])()
 			state['vtkNext'] += cli.vtk_every
@@ -132,6 +132,7 @@ results = dict(input=vars(cli), blocks=len(wall.ids), courses=len(wall.courses),
                history=history)
 with open(os.path.join(cli.out, 'results.json'), 'w') as f:
 	json.dump(results, f, indent=1)
+plot.saveDataTxt(os.path.join(cli.out, 'history.txt'))
 
 fig, axes = plt.subplots(2, 1, figsize=(7, 7))
 axes[0].plot([math.degrees(a) for a in history['tilt']], history['lean'], '.', ms=2, label='wall (mean of all blocks)')

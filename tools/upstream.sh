@@ -10,15 +10,18 @@
 # A full YADE build: about an hour on two cores, so not part of CI. Cached outside the checkout in
 # ${YADE_RDEM_CACHE:-~/.cache/yade-rdem}/upstream-2025.2.0/ (source, builds, install, logs); rerun to redo it all.
 # Prints a summary and writes it to summary.txt there; exit status non-zero if a step failed.
-# Usage: tools/upstream.sh                 all four steps
-#        tools/upstream.sh --long-double   steps 1 and 4 only (minutes: the plugin's files, not YADE's)
+# Usage: tools/upstream.sh                 all four steps, from a fresh tree
+#        tools/upstream.sh --long-double   steps 1 and 4 only
+#        tools/upstream.sh --refresh       all four steps on the tree and builds of an earlier run: the plugin's files
+#                                          copied in again, then only what depends on them rebuilt (minutes)
 set -euo pipefail
-full=1
+full=1 refresh=0
 case ${1:-} in
 --long-double) full=0 ;;
+--refresh) refresh=1 ;;
 "") ;;
 *)
-	echo "usage: $0 [--long-double]" >&2
+	echo "usage: $0 [--long-double|--refresh]" >&2
 	exit 2
 	;;
 esac
@@ -35,19 +38,25 @@ log() { echo "upstream: $*" | tee -a "$root/summary.txt" >&2; }
 : >"$root/summary.txt"
 log "$(date -u +%F' '%H:%M) UTC, yade-rdem $(git -C "$here" rev-parse --short HEAD)$(git -C "$here" diff --quiet HEAD || echo ' (with uncommitted changes)')"
 
-# 1. The merged tree.
-rm -rf "$src" "$root/trunk-$YADE_VERSION"
-tar -C "$root" -xjf "$yade_cache/download/yade_$YADE_VERSION.orig.tar.bz2"
-mv "$root/trunk-$YADE_VERSION" "$src"
+# 1. The merged tree. With --refresh, the plugin's files are replaced in the tree of an earlier run; YADE's own files
+# keep the times the tarball gave them, so make rebuilds only what depends on the plugin.
+if ((refresh)); then
+	[[ -f $root/build/CMakeCache.txt && -d $src/pkg/rdem ]] || { log "--refresh: no earlier run in $root (run $0 first)"; exit 1; }
+	rm -rf "$src/pkg/rdem" "$src/py/rdem"
+else
+	rm -rf "$src" "$root/trunk-$YADE_VERSION"
+	tar -C "$root" -xjf "$yade_cache/download/yade_$YADE_VERSION.orig.tar.bz2"
+	mv "$root/trunk-$YADE_VERSION" "$src"
+	cat >>"$src/py/CMakeLists.txt" <<'EOF'
+FILE(GLOB filesPYRdem "${CMAKE_CURRENT_SOURCE_DIR}/rdem/*.py")
+INSTALL(FILES ${filesPYRdem} DESTINATION ${YADE_PY_PATH}/yade/rdem)
+EOF
+fi
 cp -r "$here/pkg/rdem" "$src/pkg/rdem"
 mkdir -p "$src/py/rdem"
 cp "$here"/py/rdem/*.py "$src/py/rdem/"
 cp "$here"/scripts/checks-and-tests/checks/*.py "$src/scripts/checks-and-tests/checks/"
-cat >>"$src/py/CMakeLists.txt" <<'EOF'
-FILE(GLOB filesPYRdem "${CMAKE_CURRENT_SOURCE_DIR}/rdem/*.py")
-INSTALL(FILES ${filesPYRdem} DESTINATION ${YADE_PY_PATH}/yade/rdem)
-EOF
-# bib entries YADE's doc/references.bib does not have yet (by key)
+# bib entries YADE's doc/references.bib does not have yet (by key; so a --refresh adds only new ones)
 python3 - "$here/doc/references.bib" "$src/doc/references.bib" <<'EOF'
 import re, sys
 ours, theirs = open(sys.argv[1]).read(), open(sys.argv[2]).read()
@@ -65,7 +74,7 @@ status=0
 if ((full)); then
 	# 2. Build with YADE's useful errors, same features as the cached YADE.
 	build=$root/build install=$root/install
-	rm -rf "$build" "$install"
+	((refresh)) || rm -rf "$build" "$install"
 	cmake -S "$src" -B "$build" -DCMAKE_INSTALL_PREFIX="$install" "${options[@]}" -DENABLE_USEFUL_ERRORS=ON >"$root/configure.log" 2>&1 ||
 		{ log "configure failed: $root/configure.log"; exit 1; }
 	start=$(date +%s)
@@ -97,7 +106,7 @@ fi
 # default: with it off, YADE 2025.2.0's own lib/high-precision/RealIO.hpp does not compile for long double
 # (toStringHP<Complex>, measured 2026-11-24).
 build_ld=$root/build-long-double
-rm -rf "$build_ld"
+((refresh)) || rm -rf "$build_ld"
 cmake -S "$src" -B "$build_ld" "${options[@]}" -DENABLE_USEFUL_ERRORS=ON -DREAL_PRECISION_BITS=80 -DENABLE_MULTI_REAL_HP=ON >"$root/configure-long-double.log" 2>&1 ||
 	{ log "long-double configure failed: $root/configure-long-double.log"; exit 1; }
 start=$(date +%s)
