@@ -124,7 +124,7 @@ if vtkEvery:
 
 # 4. Run --------------------------------------------------------------------------------------------------------------
 # With YADE's viewer (a YADE built with GUI, started without -n) a 3D view shows the blocks and the broken springs beside
-# the controller YADE opens; gui.run keeps both drawing while the script waits. Headless, gui.run is O.run(n, True).
+# the controller YADE opens; gui.run keeps both drawing while the script waits. Headless, gui.run is rdem.run(n).
 if gui.available():
 	gui.view()
 wallRun = time.time()

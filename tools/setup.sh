@@ -4,8 +4,8 @@
 # First run on a new machine: about an hour (YADE itself); afterwards, with the cache: about a minute.
 #
 # Usage: tools/setup.sh [--gui|--no-gui]
-#   --gui     YADE with its Qt viewer (a YADE build of its own, cached beside the headless one; README, "The viewer")
-#   --no-gui  headless YADE (the default)
+#   --gui     YADE with its Qt viewer (the default; README, "The viewer")
+#   --no-gui  headless YADE (a YADE build of its own, cached beside the GUI one: no Qt, no OpenGL)
 # Without either, a build/ configured before keeps its choice.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -22,8 +22,8 @@ for arg in "$@"; do
 	esac
 done
 if [[ -z $variant ]]; then # keep the variant of an earlier configure of build/
-	variant=--no-gui
-	grep -qs '^RDEM_GUI:INTERNAL=ON' "$here/build/CMakeCache.txt" && variant=--gui
+	variant=--gui
+	grep -qs '^RDEM_GUI:INTERNAL=OFF' "$here/build/CMakeCache.txt" && variant=--no-gui
 fi
 
 "$here/tools/install-deps.sh"

@@ -9,13 +9,14 @@ without ``--gui``), ``yade -n`` or a missing display leave :func:`available` fal
     from rdem import gui
     if gui.available():
         gui.view()                  # a 3D view beside the controller YADE opens by itself
-    gui.run(nSteps)                 # O.run(nSteps, True), with the view drawing meanwhile
+    gui.run(nSteps)                 # rdem.run(nSteps); with a view, O.run(nSteps) while the view draws
 """
 import os
 import time
 
 import yade
 from yade import O
+from . import build
 
 
 def available():
@@ -69,11 +70,12 @@ def _processEvents():
 
 
 def run(nSteps, poll=0.05):
-	"""``O.run(nSteps, True)``; with the viewer, the Qt events are processed while the simulation thread runs, so the
-	view and the controller keep drawing (a script runs in Qt's thread before YADE's shell starts its event loop).
-	poll: seconds between two rounds of events."""
+	"""Make ``nSteps`` steps. Headless, :func:`rdem.run` (``O.step()`` in this thread: an engine's error is raised here
+	with its own type). With the viewer, ``O.run(nSteps)`` in YADE's simulation thread while the Qt events are
+	processed, so that the view and the controller keep drawing (a script runs in Qt's thread before YADE's shell
+	starts its event loop). poll: seconds between two rounds of events."""
 	if not available():
-		O.run(nSteps, True)
+		build.run(nSteps)
 		return
 	O.run(nSteps)
 	while O.running:
