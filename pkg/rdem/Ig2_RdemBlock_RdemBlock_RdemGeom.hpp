@@ -48,12 +48,17 @@ public:
 	        const shared_ptr<Interaction>& I) override;
 	/// Throws std::invalid_argument (Python: ValueError) for segmentsPerEdge < 1, contactSamplesPerEdge < 0, a negative bondGapTolerance or prefetchDistance < -1.
 	void postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom&);
+	/* Separating-axis tests saved so far by RdemGap certificates, summed over threads. Not an attribute: YADE's
+	   attribute macros instantiate boost::python::extract<OpenMPAccumulator<…>>, which gcc 12 flags with
+	   -Wmaybe-uninitialized (YADE's own HertzMindlin.hpp and ViscoelasticCapillarPM.hpp give the same warning). */
+	OpenMPAccumulator<Real> skippedTests;
+	Real                    skippedTestsPy() const { return skippedTests.get(); }
 	/// The sample grid of sampled contacts: contactSamplesPerEdge, or segmentsPerEdge if that is 0.
 	int contactSamples() const { return contactSamplesPerEdge > 0 ? contactSamplesPerEdge : segmentsPerEdge; }
 	/// How far each block has moved, set by RdemContactGate at each step of contact detection (null: pairs not skipped).
 	shared_ptr<const rdem::BodyTravel> travel;
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS(Ig2_RdemBlock_RdemBlock_RdemGeom,IGeomFunctor,R"""(Geometry functor of two :yref:`RdemBlock`, producing :yref:`RdemGeom`.
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Ig2_RdemBlock_RdemBlock_RdemGeom,IGeomFunctor,R"""(Geometry functor of two :yref:`RdemBlock`, producing :yref:`RdemGeom`.
 
 *Bonding.* Called through ``utils.createInteraction`` (``force=True``) on two blocks whose faces are parallel, aligned and within ``bondGapTolerance``, it cuts the shared rectangle into ``segmentsPerEdge``² segments and fixes their centres as material points of both blocks (paper §3.1, Fig. 2a): the face is stored in both body frames (:yref:`RdemGeom`). Blocks that share no face make ``createInteraction`` fail. Afterwards, every step, it computes the bond's current face normal and the relative displacements of the segments' material points from the blocks' states (:yref:`RdemGeom.normal`; paper eq. 14), which :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` turns into forces.
 
@@ -65,8 +70,11 @@ Not for periodic cells with shear (``shift2`` of the cell is honoured, the cell'
 		((Real,bondGapTolerance,1e-6,Attr::triggerPostLoad,"Largest gap or overlap between two faces that are bonded, relative to the smaller half-extent of the two blocks."))
 		((shared_ptr<RdemJoint>,joint,,,"The :yref:`RdemJoint` given to the bonds made from now on (by ``utils.createInteraction``), or None (default): blocks bonded directly. ``rdem.bond(..., joint=...)`` sets it for its bonds and resets it."))
 		((bool,skipApart,true,,"Test a pair of blocks found apart again only once they may have moved enough to touch (:yref:`RdemGap`, with the travel recorded by :yref:`RdemContactGate`): after the first crack, the collider's pairs of grid neighbours that are apart by a strain-sized gap cost a few loads per step instead of a separating-axis test (doc/performance.md). Exact: the pairs skipped are those the test would find apart, so results do not depend on it."))
-		((OpenMPAccumulator<Real>,skippedTests,,Attr::readonly,"Separating-axis tests saved so far by :yref:`RdemGap` certificates (pairs found apart and not tested again in a step); counted as a real number."))
 		((int,prefetchDistance,-1,Attr::triggerPostLoad,"How many interactions ahead of the one being processed this functor asks the processor to fetch the data of (interaction, geometry, physics, bodies and their states, in stages; ``pkg/rdem/RdemPrefetch.hpp``), to hide the memory latency of scenes larger than the cache (doc/performance.md). $-1$ (default): automatic, 8 once the interactions' data exceed the last-level cache, else off; 0: off; $>0$: always, at this distance. A hint only: results do not depend on it. $\\ge -1$."))
+		,
+		/* ctor */
+		,
+		.add_property("skippedTests",&Ig2_RdemBlock_RdemBlock_RdemGeom::skippedTestsPy,"Separating-axis tests saved so far by :yref:`RdemGap` certificates (pairs found apart and not tested again in a step), counted as a real number; not saved with the scene.")
 	);
 	// clang-format on
 	FUNCTOR2D(RdemBlock, RdemBlock);

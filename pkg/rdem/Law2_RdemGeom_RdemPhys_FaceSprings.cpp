@@ -425,6 +425,14 @@ Vector2r Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(
 	return Vector2r(invN > 0 ? share / (invN * dt) : inf, invS > 0 ? share / (invS * dt) : inf);
 }
 
+void Law2_RdemGeom_RdemPhys_FaceSprings::postLoad(Law2_RdemGeom_RdemPhys_FaceSprings&)
+{
+	tensionBreaks.reset();
+	shearBreaks.reset();
+	tensionBreaks += int(savedTensionBreaks);
+	shearBreaks += int(savedShearBreaks);
+}
+
 long Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(const Scene* scene)
 {
 	long n = 0;

@@ -52,6 +52,19 @@ public:
 		const std::lock_guard<std::mutex> lock(releasedMutex);
 		return releasedBonds;
 	}
+	/* Restoring springs broken so far in tension (eq. 15) and in shear (eq. 16), summed over threads. Not attributes:
+	   YADE's attribute macros instantiate boost::python::extract<OpenMPAccumulator<…>>, which gcc 12 flags with
+	   -Wmaybe-uninitialized (YADE's own HertzMindlin.hpp and ViscoelasticCapillarPM.hpp give the same warning); saved
+	   through savedTensionBreaks and savedShearBreaks (preSave, postLoad). */
+	OpenMPAccumulator<int> tensionBreaks, shearBreaks;
+	long                   tensionBreaksPy() const { return tensionBreaks.get(); }
+	long                   shearBreaksPy() const { return shearBreaks.get(); }
+	void                   preSave(Law2_RdemGeom_RdemPhys_FaceSprings&)
+	{
+		savedTensionBreaks = tensionBreaks.get();
+		savedShearBreaks   = shearBreaks.get();
+	}
+	void postLoad(Law2_RdemGeom_RdemPhys_FaceSprings&);
 	/// Number of interactions that started or stopped leaving deferred forces since the last takeActiveSetChanged.
 	OpenMPAccumulator<int> activeSetChanges;
 	// clang-format off
@@ -66,8 +79,8 @@ public:
 With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemElastic`` (springs, current value), ``rdemDashpot``, ``rdemFriction`` and ``rdemBondBreak`` (cumulated); with softening bonds also ``rdemFractureTension``, ``rdemFractureShear`` and ``rdemCrushing`` (cumulated).)""",
 		((bool,deferForces,false,,"Leave the forces and torques in :yref:`RdemPhys` (``force``, ``torque1``, ``torque2``) for :yref:`RdemForceAssembler`, which sums them per body in a fixed order, instead of adding them to the bodies in the order of the interaction container (which ``O.load`` and the collider change; ``rdem.engines()`` sets it). Needs an :yref:`RdemForceAssembler` after the :yref:`InteractionLoop`: without it the plugin's engines refuse to run (RuntimeError), and the law, which cannot throw from inside YADE's parallel loop, adds its forces directly."))
 		((bool,totalStress,false,,"Failure criteria (eqs. 15-16) on the total normal stress of the face: the springs' $\\sigma$ plus the normal stress the Poisson cells exert on it, $(c_1S_1+c_2S_2)/(w_nA)$ (:yref:`RdemState::cellStress`, :yref:`RdemPhys::cellCoef1`; doc/theory.md §5.6); it is the continuum's $\\sigma_{nn}$ of the face, zero on the head joints of a wall in uniform vertical compression. Needs Poisson cells (consistent formulation, :yref:`RdemPoissonEngine::elements` ``'cells'`` or ``'auto'`` on a layout that is not a grid). False (default): the springs' $\\sigma$ alone, the paper's criterion, whose lateral springs carry $M\\nu\\sigma/E$ in tension under uniaxial compression (the paper's splitting mechanism)."))
-		((OpenMPAccumulator<int>,tensionBreaks,,Attr::readonly,"Number of restoring springs broken in tension (eq. 15) so far."))
-		((OpenMPAccumulator<int>,shearBreaks,,Attr::readonly,"Number of restoring springs broken in shear (eq. 16) so far."))
+		((long,savedTensionBreaks,0,Attr::hidden,"``tensionBreaks`` when the scene was saved (restored on load)."))
+		((long,savedShearBreaks,0,Attr::hidden,"``shearBreaks`` when the scene was saved (restored on load)."))
 		((vector<shared_ptr<RdemReleasedBond>>,releasedBonds,,Attr::hidden,"The bonds released so far (Python: the read-only list ``releasedBonds``, without a converter of its own)."))
 		((int,elasticIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 		((int,dashpotIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
@@ -79,6 +92,8 @@ With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemElastic`` (springs, current
 		,
 		/* ctor */
 		,
+		.add_property("tensionBreaks",&Law2_RdemGeom_RdemPhys_FaceSprings::tensionBreaksPy,"Number of restoring springs broken in tension (eq. 15) so far (saved with the scene).")
+		.add_property("shearBreaks",&Law2_RdemGeom_RdemPhys_FaceSprings::shearBreaksPy,"Number of restoring springs broken in shear (eq. 16) so far (saved with the scene).")
 		.add_property("releasedBonds",&Law2_RdemGeom_RdemPhys_FaceSprings::releasedBondsPy,"The bonds released so far (every segment broken, none in contact; the interaction is then reset), step by step: the cracks that no interaction shows any more (:yref:`RdemReleasedBond`), drawn by :yref:`GlExtra_RdemReleasedBonds` and exported by ``rdem.export.CrackExport``.")
 	);
 	// clang-format on
