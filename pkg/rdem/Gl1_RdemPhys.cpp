@@ -54,17 +54,16 @@ void Gl1_RdemPhys::go(const shared_ptr<IPhys>& ip, const shared_ptr<Interaction>
 	const size_t    nSeg = g->nSegments();
 	// segState and segSigma are sized once, when the bond is made (Ip2_RdemMat_RdemMat_RdemPhys); segCrush with softening only.
 	if (p.segState.size() != nSeg || p.segSigma.size() != nSeg) return;
-	const bool crushable = p.segCrush.size() == nSeg;
-	Marks      marks(nSeg, rdem::SegmentMark::None);
-	bool       any = false; // most bonds are intact: nothing to draw, no GL state to change
+	const bool   crushable = p.segCrush.size() == nSeg;
+	Marks        marks(nSeg);
+	vector<bool> closed(nSeg);
+	bool         any = false; // most bonds are intact: nothing to draw, no GL state to change
 	for (size_t k = 0; k < nSeg; ++k) {
-		marks[k] = rdem::segmentMark<Real>(p.segState[k], crushable ? p.segCrush[k] : Real(0));
-		any      = any || marks[k] != rdem::SegmentMark::None;
+		marks[k]  = rdem::segmentMark<Real>(p.segState[k], crushable ? p.segCrush[k] : Real(0));
+		closed[k] = rdem::segmentInContact(p.segState[k], p.segSigma[k]);
+		any       = any || marks[k] != rdem::SegmentMark::None;
 	}
 	if (!any) return;
-	vector<bool> closed(nSeg);
-	for (size_t k = 0; k < nSeg; ++k)
-		closed[k] = rdem::segmentInContact(p.segState[k], p.segSigma[k]);
 	drawFace(scene, *b1, g->faceCentre1, g->segHalf1u, g->segHalf1v, g->samplesPerEdge, marks, closed, wire);
 }
 

@@ -118,7 +118,7 @@ namespace {
 	struct BondStep {
 		const Pair&                    pair;
 		const RdemGeom&                g;
-		Matrix3r                       R1;  ///< rotation of body 1 (softening keeps its shear in body 1's frame)
+		Matrix3r                       R1;  ///< rotation of body 1, for softening springs and offset bonds only (else identity)
 		Vector3r                       n;   ///< face normal from body 1 to body 2
 		rdem::BondKinematics<Real>     kin; ///< d and r₂ of the segments
 		Real                           A;   ///< area of a segment [m²]
@@ -135,7 +135,7 @@ namespace {
 		BondStep(const Pair& pr, RdemGeom& geom, const RdemPhys& p)
 		        : pair(pr)
 		        , g(geom)
-		        , R1(pr.s1.ori.toRotationMatrix())
+		        , R1(p.softening || p.centroidOffset != Vector3r::Zero() ? pr.s1.ori.toRotationMatrix() : Matrix3r::Identity())
 		        , n(geom.normal)
 		        , kin(geom.kin)
 		        , A(geom.segmentArea())
