@@ -39,7 +39,7 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, 'py'))
 from rdem import wall_database  # noqa: E402 (pure Python: also without YADE)
 
-LAUNCHER = os.path.join(ROOT, 'build', 'bin', 'yade')
+LAUNCHER = os.environ.get('RDEM_LAUNCHER', os.path.join(ROOT, 'build', 'bin', 'yade'))  # the tests name theirs
 SCRIPT = os.path.join(HERE, 'shear_wall.py')
 APART = os.path.join(ROOT, 'data', 'walls', 'statics-failures.csv')
 
