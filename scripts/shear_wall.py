@@ -104,6 +104,8 @@ r.add_argument('--ramp', type=float, default=None,
                help='duration of the velocity ramp at the start and at reversals [s] (default: %g mm of travel at --rate)' % (scheme['rampTravel'] * 1e3))
 r.add_argument('--compress-time', type=float, default=scheme['compressTime'], help='duration of the vertical-load ramp [s] (default %(default)g)')
 r.add_argument('--damping', type=float, default=scheme['damping'], help="Cundall's non-viscous damping of the integrator, in [0, 1) (default %(default)g)")
+r.add_argument('--inertia-scaling', choices=['on', 'off'], default='on' if scheme['inertiaScaling'] else 'off',
+               help="the masonry blocks' moments of inertia scaled by rdem.quasi_static.rotationalInertiaScale, masses unchanged (default %(default)s)")
 r.add_argument('--gravity', type=float, default=wall_database.GRAVITY, help='gravity along -z [m/s2] (default %(default)g; 0: none)')
 k = parser.add_argument_group('model')
 k.add_argument('--formulation', choices=['consistent', 'paper', 'off'], default='consistent', help="Poisson effect: consistent (cells), paper, off (default consistent)")
@@ -180,14 +182,15 @@ try:
 		rdem.poissonEngine().build(w.ids)
 	unbonded = walltest.unbondJoints(w, 'head') if cli.head_joints == 'unbonded' else set()
 	test = walltest.ShearWallTest(w, sigma0, boundary=boundary, shearSpan=cli.shear_span)
+	inertiaFactor = walltest.scaleRotationalInertia(w.masonry()) if cli.inertia_scaling == 'on' else 1.0
 	targets = [a * 1e-2 * w.layout.height for a in walltest.cycleTargets(amplitudes, cli.repeat)] if amplitudes else [cli.drift * 1e-2 * w.layout.height]
 except ValueError as e:
 	sys.exit('shear_wall: %s' % e)
 O.trackEnergy = True
 O.dt = rdem.timeStepper().safety * rdem.timeStepper().estimate()
 span = sum(abs(b - a) for a, b in zip([0.0] + targets[:-1], targets))
-print('shear_wall: %s; sigma0 %.3g MPa (N = %.1f kN), %s; time step %.3g s, about %d steps of loading; set-up %.1f s' %
-      (w, sigma0 * 1e-6, test.axialForce * 1e-3, 'H0/H = %g' % cli.shear_span, O.dt, span / (cli.rate * 1e-3) / O.dt, time.time() - setup0),
+print('shear_wall: %s; sigma0 %.3g MPa (N = %.1f kN), %s; rotational inertia x %.3g at most; time step %.3g s, about %d steps of loading; set-up %.1f s' %
+      (w, sigma0 * 1e-6, test.axialForce * 1e-3, 'H0/H = %g' % cli.shear_span, inertiaFactor, O.dt, span / (cli.rate * 1e-3) / O.dt, time.time() - setup0),
       flush=True)
 
 # 3. Recording -------------------------------------------------------------------------------------------------------

@@ -33,7 +33,7 @@ enough is checked by running it again at half the rate (scripts/shear_wall.py ``
 import math
 from yade import O, Vector3, Quaternion
 from yade.wrapper import ForceEngine, TorqueEngine, NewtonIntegrator
-from . import build  # relative: the package is also yade.rdem (doc/upstream.md)
+from . import build, quasi_static  # relative: the package is also yade.rdem (doc/upstream.md)
 
 BOUNDARIES = ('fixed', 'cantilever')
 #: The top beam's blocked degrees of freedom per boundary condition (z is free: the vertical load acts along it).
@@ -260,6 +260,20 @@ class ShearWallTest:
 			self.advance(chunk)
 			if record:
 				record(self)
+
+
+def scaleRotationalInertia(ids):
+	"""Multiply the principal moments of inertia of the blocks ``ids`` by :func:`rdem.quasi_static.rotationalInertiaScale`
+	of their half-extents (the rotational inertia scaling of the quasi-static scheme, doc/validation.md); their masses,
+	and so their weights and every static state, stay as they are. Call it before the time step is set (RdemTimeStepper
+	reads the inertias). Returns the largest factor applied."""
+	largest = 1.0
+	for i in ids:
+		b = O.bodies[i]
+		f = quasi_static.rotationalInertiaScale(b.shape.extents)
+		b.state.inertia = b.state.inertia * f
+		largest = max(largest, f)
+	return largest
 
 
 def unbondJoints(wall, kind='head'):
