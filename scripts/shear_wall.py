@@ -93,7 +93,11 @@ r.add_argument('--sigma0', type=float, default=spec['test']['sigma0'] * 1e-6, he
 r.add_argument('--shear-span', type=float, default=spec['test']['shearSpan'],
                help='shear span ratio H0/H: 0.5 keeps the top beam horizontal (both ends fixed), any other value lets it rotate under the moment '
                'V (H0 - H) at the masonry\'s top, 1 a cantilever (default %(default)g, the table\'s)')
-r.add_argument('--drift', type=float, default=scheme['drift'] * 100, help='monotonic test: end drift [%%] (default %(default)g)')
+r.add_argument('--drift', type=float, default=scheme['drift'] * 100,
+               help='monotonic test: the push ends past this drift [%%] once it is also past --past-peak times the drift of the smoothed peak so far '
+               '(default %(default)g)')
+r.add_argument('--past-peak', type=float, default=scheme['pastPeak'], help='see --drift (default %(default)g)')
+r.add_argument('--max-drift', type=float, default=scheme['maxDrift'] * 100, help='monotonic test: the push ends at this drift at the latest [%%] (default %(default)g)')
 r.add_argument('--cycles', type=str, default='', help='cyclic test instead: drift amplitudes [%%] separated by commas, e.g. 0.05,0.1,0.2 (default none)')
 r.add_argument('--repeat', type=int, default=1, help='cycles per amplitude (default 1)')
 r.add_argument('--stop-drop', type=float, default=scheme['stopDrop'],
@@ -123,7 +127,7 @@ o.add_argument('--out', default='output/shear_wall', help='output folder (defaul
 o.add_argument('--save', default='', help='save the scene at the end of the run to this file (O.save; e.g. for scripts/shear_wall_cost.py; default none)')
 o.add_argument('--vtk-every', type=float, default=0.05, help='ParaView output every this drift [%%] (default 0.05; 0 = none)')
 cli = parser.parse_args(sys.argv[1:])
-for name in ('rate', 'drift', 'beam', 'compress_time', 'brick_density', 'beam_density', 'shear_span', 'smooth'):
+for name in ('rate', 'drift', 'max_drift', 'past_peak', 'beam', 'compress_time', 'brick_density', 'beam_density', 'shear_span', 'smooth'):
 	if not getattr(cli, name) > 0:
 		sys.exit('--%s = %g: must be > 0' % (name.replace('_', '-'), getattr(cli, name)))
 if not 0 <= cli.stop_drop < 1:
@@ -183,7 +187,7 @@ try:
 	unbonded = walltest.unbondJoints(w, 'head') if cli.head_joints == 'unbonded' else set()
 	test = walltest.ShearWallTest(w, sigma0, boundary=boundary, shearSpan=cli.shear_span)
 	inertiaFactor = walltest.scaleRotationalInertia(w.masonry()) if cli.inertia_scaling == 'on' else 1.0
-	targets = [a * 1e-2 * w.layout.height for a in walltest.cycleTargets(amplitudes, cli.repeat)] if amplitudes else [cli.drift * 1e-2 * w.layout.height]
+	targets = [a * 1e-2 * w.layout.height for a in walltest.cycleTargets(amplitudes, cli.repeat)] if amplitudes else [cli.max_drift * 1e-2 * w.layout.height]
 except ValueError as e:
 	sys.exit('shear_wall: %s' % e)
 O.trackEnergy = True
@@ -200,7 +204,7 @@ ENERGIES = ('rdemElastic', 'rdemPoisson', 'rdemBondBreak', 'rdemDashpot', 'rdemF
 plot.reset()
 plot.plots = {'drift': ('shear', 'baseShear'), 't': ('tension', 'shearBreaks')}
 history = plot.data
-state = dict(peak=None, peakCracks=None, first=None, report=time.time(), iter=O.iter, vtkNext=0.0)
+state = dict(peak=None, peakCracks=None, first=None, report=time.time(), iter=O.iter, vtkNext=0.0, smoothPeak=0.0, smoothPeakDrift=0.0)
 cracks = rdem.CrackExport(os.path.join(cli.out, 'vtk', ''))
 
 
@@ -249,16 +253,22 @@ def onStep(t):
 
 
 def stop(t):
-	"""Monotonic test: the load, averaged over the last --smooth of drift (crack bursts make single samples spike), has
-	dropped by --stop-drop of the largest such average, once past the first crack (before it, the peak is the residual
-	of the vertical loading)."""
+	"""Monotonic test: ends once the load, averaged over the last --smooth of drift (crack bursts make single samples
+	spike), has dropped by --stop-drop of the largest such average (once past the first crack: before it, the peak is
+	the residual of the vertical loading), or once the drift is past both --drift and --past-peak times the drift of
+	that largest average (the peak is behind), or at --max-drift."""
 	if cli.max_wall > 0 and time.time() - t1 > cli.max_wall:
 		print('shear_wall: --max-wall %g s reached; results so far' % cli.max_wall, flush=True)
 		return True
+	if amplitudes:
+		return False
 	mean = abs(walltest.trailingMean(history['drift'], history['shear'], cli.smooth * 1e-2))
-	state['smoothPeak'] = max(state.get('smoothPeak', 0.0), mean)
-	return (not amplitudes and cli.stop_drop > 0 and state['first'] is not None and abs(state['peak']['driftPercent']) > 0.01
-	        and mean < (1 - cli.stop_drop) * state['smoothPeak'])
+	d = abs(history['drift'][-1])
+	if mean > state.get('smoothPeak', 0.0):
+		state['smoothPeak'], state['smoothPeakDrift'] = mean, d
+	dropped = cli.stop_drop > 0 and state['first'] is not None and abs(state['peak']['driftPercent']) > 0.01 and mean < (1 - cli.stop_drop) * state['smoothPeak']
+	behind = d * 100 >= cli.drift and d >= cli.past_peak * state['smoothPeakDrift']
+	return dropped or behind
 
 
 # 4. Run ----------------------------------------------------------------------------------------------------------------

@@ -54,10 +54,13 @@ RULES = {
                   'E_cm = 31 GPa), rigid against the wall'),
         'loading': ('monotonic push of the top beam to the positive side', 'the envelope of the cyclic test; compared with the mean of the '
                     'measured positive and negative peaks'),
-        'quasiStatic': (dict(rate=0.02, damping=0.2, inertiaScaling=False, rampTravel=1e-3, compressTime=0.02, drift=0.01, stopDrop=0.2, smoothDrift=2e-4),
+        'quasiStatic': (dict(rate=0.02, damping=0.2, inertiaScaling=False, rampTravel=1e-3, compressTime=0.02, drift=0.006, pastPeak=2.0, maxDrift=0.02,
+                             stopDrop=0.2, smoothDrift=2e-4),
                         'doc/validation.md, "Quasi-static loading in fewer steps": the top beam at rate [m/s], its velocity ramped up over rampTravel [m] '
-                        "of travel; Cundall's non-viscous damping; the blocks' rotational inertia scaled (rdem.quasi_static) or not; sigma0 ramped over compressTime [s] and held until the wall is at rest; the push "
-                        'ends at drift [-] or once the load averaged over smoothDrift [-] of drift has dropped by stopDrop of its peak'),
+                        "of travel; Cundall's non-viscous damping; the blocks' rotational inertia scaled (rdem.quasi_static) or not; sigma0 ramped over "
+                        'compressTime [s] and held until the wall is at rest; the push ends once the load averaged over smoothDrift [-] of drift has '
+                        'dropped by stopDrop of its peak, or once past drift [-] and pastPeak times the drift of that peak, or at maxDrift [-] (MI1 was '
+                        'validated to 0.6 % drift with a 20 % drop)'),
         'shearSpan': ('H0/H = 0.5: top beam kept horizontal; otherwise it rotates freely and carries the moment V (H0 - H)',
                       'the test set-ups of the table (H0/H, EESDWallsDB field #27); H0 = (H0/H) x the model height'),
 }

@@ -40,7 +40,7 @@ class Runner(unittest.TestCase):
 		with open(table, 'w') as f:
 			f.write(header + ','.join(cells[n] for n in names) + '\n')
 		launcher = os.environ.get('RDEM_LAUNCHER', os.path.join(ROOT, 'build', 'bin', 'yade'))
-		cmd = [launcher, '-n', '-x', os.path.join(ROOT, 'scripts', 'wall_database.py'), '--table', table, '--out', out, '--nice', '0', '--extra', '--drift 0.1']
+		cmd = [launcher, '-n', '-x', os.path.join(ROOT, 'scripts', 'wall_database.py'), '--table', table, '--out', out, '--nice', '0', '--extra', '--drift 0.1 --max-drift 0.1']
 		proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
 		self.assertEqual(proc.returncode, 0, proc.stdout[-3000:])
 		with open(os.path.join(out, 'walls.json')) as f:
