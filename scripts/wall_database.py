@@ -99,6 +99,7 @@ for name in names:
 		r = json.load(f)
 	spec = wall_database.model(rows[name])
 	c, cmp, fail = r['cost'], r['comparison'], r['failure']
+	fail['modelClass'] = wall_database.failureClass(fail['horizontalTensionArea'], fail['coreCourses'], fail['coreCoursesCracked'], fail['jointArea'])  # the rule as it is now
 	out.append(
 	        dict(wall=name, reference=spec['reference'], unit=rows[name]['Unit type'], sigma0MPa=spec['test']['sigma0'] * 1e-6, shearSpan=spec['test']['shearSpan'],
 	             measuredMeanKN=cmp['measuredMeanKN'], measuredPeakKN=cmp['measuredPeakKN'], modelPeakKN=cmp['smoothedPeakKN'], error=cmp['smoothedPeakError'],
