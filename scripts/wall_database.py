@@ -73,12 +73,13 @@ def run(name):
 	       ] + cli.extra.split()
 	print('wall_database: %s: %s' % (name, ' '.join(cmd[3:])), flush=True)
 	start = time.time()
-	proc = subprocess.run(cmd, env=dict(os.environ, OMP_NUM_THREADS='1'), stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
-	with open(os.path.join(folder(name), 'log.txt'), 'w') as f:
-		f.write(proc.stdout)
-	last = [l for l in proc.stdout.splitlines() if l.startswith('shear_wall:')]
-	print('wall_database: %s done in %.0f s, exit %d: %s' % (name, time.time() - start, proc.returncode, last[-2] if len(last) > 1 else proc.stdout[-2000:]),
-	      flush=True)
+	log = os.path.join(folder(name), 'log.txt')
+	with open(log, 'w') as f:  # the run's progress, as it comes
+		code = subprocess.run(cmd, env=dict(os.environ, OMP_NUM_THREADS='1'), stdout=f, stderr=subprocess.STDOUT).returncode
+	with open(log) as f:
+		text = f.read()
+	last = [l for l in text.splitlines() if l.startswith('shear_wall:')]
+	print('wall_database: %s done in %.0f s, exit %d: %s' % (name, time.time() - start, code, last[-2] if len(last) > 1 else text[-2000:]), flush=True)
 	return time.time() - start
 
 
