@@ -2,7 +2,7 @@
 """What a shear-wall run costs and what its accuracy depends on: scripts/shear_wall.py for a list of settings.
 
 Problem
-    The Magenes & Calvi wall MI1 (or MI2, --wall) of scripts/shear_wall.py is run once per setting, each in its own YADE
+    The Magenes & Calvi wall MI1 (or another wall of the table, --wall) of scripts/shear_wall.py is run once per setting, each in its own YADE
     process (one after the other, never two at once): a base setting (that of doc/validation.md: softening, bricks of
     two blocks along their length, 2x2 springs, Poisson cells, head joints without bond, but loaded at 40 mm/s), then
     one knob changed at a time: blocks per brick along its length (1, 4), springs per face edge (1, 3), the Poisson
