@@ -253,8 +253,10 @@ def failureClass(horizontalTensionArea, coreCourses, coreCoursesCracked, jointAr
 	"""The failure mode of a model wall, from its cracks at the end of the test (rule of doc/validation.md):
 
 	* *flexure* (rocking): in the bottom or the top tenth of the wall, the bed faces broken in tension add up to at least
-	  a quarter of one bed joint's area $L t$ (``horizontalTensionArea``: the larger of the two bands [m²],
-	  ``jointArea`` = $L t$ [m²]);
+	  half of one bed joint's area $L t$ (``horizontalTensionArea``: the larger of the two bands [m²], ``jointArea`` =
+	  $L t$ [m²]): a rocking wall opens its heel joint over most of its length. (First fixed at a quarter; raised to a
+	  half for every wall after CS01 and CS02, which failed in a diagonal stair-stepped crack as tested, opened 40 % of
+	  a bed joint next to the top and were classed hybrid; doc/validation.md.)
 	* *shear*: broken springs in at least half of the courses of the wall's core (the middle half of its length and of
 	  its height), as a diagonal crack through the core crosses each of them (``coreCourses`` courses, of which
 	  ``coreCoursesCracked`` hold a broken spring there).
@@ -263,6 +265,6 @@ def failureClass(horizontalTensionArea, coreCourses, coreCoursesCracked, jointAr
 	if not (coreCourses >= 1 and 0 <= coreCoursesCracked <= coreCourses and jointArea > 0 and horizontalTensionArea >= 0):
 		raise ValueError('failureClass: need coreCourses >= 1, 0 <= coreCoursesCracked <= coreCourses, jointArea > 0, horizontalTensionArea >= 0 '
 		                 '(got %r, %r, %r, %r)' % (coreCourses, coreCoursesCracked, jointArea, horizontalTensionArea))
-	flexure = horizontalTensionArea >= 0.25 * jointArea
+	flexure = horizontalTensionArea >= 0.5 * jointArea
 	shear = 2 * coreCoursesCracked >= coreCourses
 	return {(True, True): 'H', (True, False): 'S', (False, True): 'F', (False, False): '-'}[(shear, flexure)]

@@ -137,8 +137,8 @@ class FailureMode(unittest.TestCase):
 	def testClasses(self):
 		self.assertEqual(db.failureClass(0.0, 10, 5, 1.0), 'S')  # half of the core's courses cracked
 		self.assertEqual(db.failureClass(0.0, 10, 4, 1.0), '-')
-		self.assertEqual(db.failureClass(0.25, 10, 4, 1.0), 'F')  # a quarter of a bed joint opened
-		self.assertEqual(db.failureClass(0.2499, 10, 4, 1.0), '-')
+		self.assertEqual(db.failureClass(0.5, 10, 4, 1.0), 'F')  # half of a bed joint opened
+		self.assertEqual(db.failureClass(0.4999, 10, 4, 1.0), '-')
 		self.assertEqual(db.failureClass(0.5, 10, 10, 1.0), 'H')
 		with self.assertRaisesRegex(ValueError, '^failureClass'):
 			db.failureClass(0.0, 0, 0, 1.0)
