@@ -40,12 +40,12 @@ parser.add_argument('--span', type=float, default=0.4, help='distance between th
 parser.add_argument('--depth', type=float, default=0.1, help='beam depth D [m] (default 0.1)')
 parser.add_argument('--thickness', type=float, default=0.05, help='beam thickness B [m] (default 0.05)')
 parser.add_argument('--notch', type=float, default=0.25, help='notch depth / D (default 0.25)')
-parser.add_argument('--young', type=float, default=30e9, help='E [Pa] (default 30e9)')
-parser.add_argument('--ft', type=float, default=3e6, help='tensile strength [Pa] (default 3e6)')
+parser.add_argument('--young', type=float, default=30.0, help="Young's modulus E [GPa] (default 30)")
+parser.add_argument('--ft', type=float, default=3.0, help='tensile strength [MPa] (default 3)')
 parser.add_argument('--gf', type=float, default=100.0, help='mode-I fracture energy [J/m2] (default 100)')
-parser.add_argument('--speed', type=float, default=2e-3, help='loading speed [m/s] (default 2e-3)')
-parser.add_argument('--deflection', type=float, default=1.2e-4, help='deflection at which a run stops [m] (default 1.2e-4)')
-parser.add_argument('--stop-drop', type=float, default=0.5, help='stop a run once the load has fallen below this fraction of its peak, past a quarter of --deflection (default 0.5; 0: never)')
+parser.add_argument('--rate', type=float, default=2.0, help='loading rate: speed of the loaded blocks [mm/s] (default 2)')
+parser.add_argument('--end', type=float, default=0.12, help='deflection at which a run stops [mm] (default 0.12)')
+parser.add_argument('--stop-drop', type=float, default=0.5, help='stop a run once the load has fallen below this fraction of its peak, past a quarter of --end (default 0.5; 0: never)')
 parser.add_argument('--strength-cov', type=float, default=0.0, help='coefficient of variation of the strengths (rdem.engines(strengthCoV=); default 0: uniform)')
 parser.add_argument('--per-segment', action='store_true', help='with --strength-cov: one strength factor per segment (spring) instead of per bond')
 parser.add_argument('--seeds', type=int, nargs='+', default=[0], help='seeds of the strengths: one run per seed (default 0)')
@@ -53,7 +53,7 @@ parser.add_argument('--damping', type=float, default=0.2, help="Cundall's non-vi
 parser.add_argument('--out', default='output/notched_beam', help='output folder (default output/notched_beam)')
 parser.add_argument('--doc', action='store_true', help='also write the figure to doc/figures/notched_beam.png')
 cli = parser.parse_args(sys.argv[1:])
-for name in ('length', 'span', 'depth', 'thickness', 'young', 'ft', 'gf', 'speed', 'deflection'):
+for name in ('length', 'span', 'depth', 'thickness', 'young', 'ft', 'gf', 'rate', 'end'):
 	if not getattr(cli, name) > 0:
 		sys.exit('--%s = %g: must be > 0' % (name, getattr(cli, name)))
 if not cli.span < cli.length:
@@ -82,7 +82,7 @@ def build(ny, softening, seed):
 	O.reset()
 	b = cli.depth / ny
 	nx = 2 * int(round(cli.length / b / 2))  # even: mid-span is a block boundary
-	mat = O.materials.append(RdemMat(young=cli.young, poisson=0.2, density=2400, tensileStrength=cli.ft, cohesion=2 * cli.ft, fractureEnergy=cli.gf,
+	mat = O.materials.append(RdemMat(young=cli.young * 1e9, poisson=0.2, density=2400, tensileStrength=cli.ft * 1e6, cohesion=2 * cli.ft * 1e6, fractureEnergy=cli.gf,
 	                                 shearFractureEnergy=10 * cli.gf))
 	O.engines = rdem.engines(poisson=None, recontact=True, damping=cli.damping, softening=softening, strengthCoV=cli.strength_cov,
 	                         strengthPerSegment=cli.per_segment, seed=seed)
@@ -103,7 +103,7 @@ def build(ny, softening, seed):
 	loaded = [grid[(nx // 2 - 1, ny - 1)], grid[(nx // 2, ny - 1)]]
 	for i in loaded:
 		O.bodies[i].state.blockedDOFs = 'z'
-		O.bodies[i].state.vel = Vector3(0, 0, -cli.speed)
+		O.bodies[i].state.vel = Vector3(0, 0, -cli.rate * 1e-3)
 	span = (nx - 1 - 2 * ia) * b
 	return supports, loaded, span
 
@@ -122,14 +122,14 @@ def run(ny, softening, seed):
 	z0 = O.bodies[loaded[0]].state.pos[2]
 	hist = dict(deflection=[], load=[])
 	wall0, last = time.time(), time.time()
-	steps = int(cli.deflection / cli.speed / O.dt)
-	while z0 - O.bodies[loaded[0]].state.pos[2] < cli.deflection:
+	steps = int(cli.end / cli.rate / O.dt)
+	while z0 - O.bodies[loaded[0]].state.pos[2] < cli.end * 1e-3:
 		O.run(max(1, steps // 400), True)
 		hist['deflection'].append(z0 - O.bodies[loaded[0]].state.pos[2])
 		hist['load'].append(sum(O.forces.f(i)[2] for i in loaded))
 		if first is None and cracked(softening):
 			first = hist['load'][-1]
-		if hist['deflection'][-1] > cli.deflection / 4 and hist['load'][-1] < cli.stop_drop * max(hist['load']):  # past the start's vibrations
+		if hist['deflection'][-1] > cli.end * 1e-3 / 4 and hist['load'][-1] < cli.stop_drop * max(hist['load']):  # past the start's vibrations
 			break
 		if time.time() - last > 10:
 			last = time.time()

@@ -2,38 +2,39 @@
 """In-plane shear test of a masonry wall: constant vertical stress, then a horizontal displacement of the top beam.
 
 Problem
-    A brick wall (rdem.masonry.wall: any geometry, bond, joints, blocks per brick) between a fixed base beam and a top
-    beam of one rigid block. First the vertical stress σ0 is ramped up on the top beam and held until the wall is at rest;
-    then the top beam moves along the wall (monotonic, or cycles of growing drift) with the boundary condition of the
-    test: both ends fixed (--boundary fixed: the top beam stays horizontal, shear span H0 = H/2) or a cantilever
-    (--boundary cantilever: the top beam may rotate in the wall's plane, H0 = H). Quasi-static loading: the velocity of
-    the top beam is ramped up along a half cosine (--ramp) at the start and at every reversal, and Cundall's
-    non-viscous damping (--damping) takes out the vibrations; rerun at half --rate to check the peak load (doc/validation.md).
+    A wall of the validation set (data/walls/walls.csv, --wall: Magenes & Calvi 1992 MI1, Magenes et al. 2008 CS01-CS08,
+    Petry & Beyer 2014 PUP1-PUP6) between a fixed base beam and a top beam of one rigid block, built by the one rule set
+    of rdem.wall_database from its row of the table (geometry, bond, joints, materials, sigma0, shear span; each value
+    with its source, doc/validation.md "Fifteen walls"). First the vertical stress sigma0 is ramped up on the top beam
+    and held until the wall is at rest; then the top beam moves along the wall (monotonic, or cycles of growing drift):
+    kept horizontal (--shear-span 0.5: both ends fixed) or free to rotate in the wall's plane with the moment
+    V (H0 - H) at the masonry's top (any other --shear-span H0/H; 1: a cantilever). Quasi-static loading (doc/validation.md,
+    "Quasi-static loading in fewer steps"): the velocity of the top beam is ramped up along a half cosine (--ramp) at
+    the start and at every reversal, and Cundall's non-viscous damping (--damping) takes out the vibrations.
 
-    Defaults: the Magenes & Calvi (1992) walls (rdem.walltest.MAGENES_CALVI: one parameter set, every value with its
-    source): 1.55 × 2.005 × 0.38 m English bond of 250×120×55 mm bricks, 10 mm interface joints, E = 2991 MPa and ν = 0.25
-    for brick and mortar, bed and collar joints f_t = 0.15 MPa, c = 0.21 MPa, μ = 0.81, head joints without bond
-    (compression and friction only, Mann & Müller 1982: --head-joints), bricks f_t = 1.28 MPa, c = 1.79 MPa; concrete
-    beams; σ0 = 1.2 MPa (MI1; --wall MI2: 0.4 MPa), both ends fixed. Consistent Poisson formulation with cells, springs
-    breaking on the total stress of their face (doc/theory.md §5.6); brittle springs (the paper's law).
+    Defaults: the validated configuration of doc/validation.md for the wall chosen (MI1 unless --wall): the rule set's
+    geometry and materials, softening springs, two blocks per unit along its length, head joints by the rule set
+    (MI1: without bond, Mann & Müller 1982), the consistent Poisson formulation with cells and failure on the total stress
+    of a face, the loading scheme and the stop criteria of the validation. An option given changes that configuration
+    (the run is then no longer the validated one; results.json records every option).
 
 Expected result
-    Linear up to the first cracks in the joints at the wall's corners, then diagonal, stair-stepped cracking through the
-    bed and head joints (and bricks with several blocks per brick); the load peaks and drops. Magenes & Calvi measured
-    V_max = 269.6 / 259.6 kN (MI1) and 241.6 / 227.2 kN (MI2) in the two directions, at 0.20 / 0.18 % and 0.40 / 0.39 %
-    drift, with diagonal shear cracking.
+    MI1: linear up to the first cracks in the joints at the wall's corners, then diagonal, stair-stepped cracking through
+    the bed and head joints and bricks split along it; the load peaks at about 300 kN (doc/validation.md; measured
+    269.6 / 259.6 kN in the two directions at 0.20 / 0.18 % drift, diagonal shear cracking).
 
 How to run
-    build/bin/yade -n scripts/shear_wall.py                       MI1, monotonic to 0.6 % drift (a few minutes)
-    build/bin/yade -n scripts/shear_wall.py --wall MI2 --out output/shear_wall_MI2
-    build/bin/yade -n scripts/shear_wall.py --boundary cantilever --sigma0 0.5 --cycles 0.05,0.1,0.2
-    build/bin/yade -n -j2 scripts/shear_wall.py --blocks 2,1,1    two threads, bricks of two blocks
-    build/bin/yade -n scripts/shear_wall.py --help                every option
+    build/bin/yade -n scripts/shear_wall.py                        MI1, the figure of doc/validation.md
+    build/bin/yade -n scripts/shear_wall.py --wall PUP3 --out output/shear_wall_PUP3
+    build/bin/yade -n scripts/shear_wall.py --shear-span 1 --sigma0 0.5 --cycles 0.05,0.1,0.2
+    build/bin/yade -n scripts/wall_database.py                     every wall of the table, one after the other
+    build/bin/yade -n scripts/shear_wall.py --help                 every option
 
-Outputs (in --out, default output/shear_wall): results.json (inputs, peak load and drift, initial stiffness, first
-crack, cracks by joint/brick and mode, energy balance, cost), history.txt (yade.plot's saveDataTxt), load_drift.png (load against drift with the measured
-peaks, energy, broken springs), cracks.png (the front of the wall with every broken spring, coloured by mode, at the
-peak and at the end), ParaView files in vtk/ (blocks.*.vtu from YADE's VTKRecorder, cracks.pvd).
+Outputs (in --out, default output/shear_wall): results.json (inputs and the rule set's sources, peak load and drift,
+initial stiffness, first crack, cracks by joint/brick and mode, failure mode, energy balance, cost), history.txt
+(yade.plot's saveDataTxt), load_drift.png (load against drift with the measured peaks, energy, broken springs),
+cracks.png (the front of the wall with every broken spring, coloured by mode, at the peak and at the end), ParaView
+files in vtk/ (blocks.*.vtu from YADE's VTKRecorder, cracks.pvd).
 """
 import argparse
 import json
@@ -42,81 +43,103 @@ import os
 import sys
 import time
 import rdem  # before the options: rdem.masonry.addWallArguments
+from rdem import wall_database
 
+# 1. Options (defaults: the rule set of rdem.wall_database for --wall, so that --help shows the validated values) -------
+pre = argparse.ArgumentParser(add_help=False)
+pre.add_argument('--wall', default='MI1')
+pre.add_argument('--table', default=wall_database.TABLE)
+known, _ = pre.parse_known_args(sys.argv[1:])
+try:
+	rows = wall_database.readTable(known.table)
+except (OSError, ValueError) as e:
+	sys.exit('shear_wall: --table: %s' % e)
+if known.wall not in rows:
+	sys.exit('shear_wall: --wall = %r: must be one of %s (the specimens of --table)' % (known.wall, ', '.join(rows)))
+spec = wall_database.model(rows[known.wall])
+geo, mats, scheme = spec['geometry'], spec['materials'], wall_database.rule('quasiStatic')
+brk, jnt, bm = mats['brick'], mats['joint'], mats['beam']
 
-# 1. Options (defaults: rdem.walltest.MAGENES_CALVI, repeated here so that --help shows them) -------------------------
 parser = argparse.ArgumentParser(prog='yade scripts/shear_wall.py', description=__doc__.split('\n\n')[0])
-parser.add_argument('--wall', choices=['MI1', 'MI2', 'none'], default='MI1',
-                    help='a Magenes & Calvi (1992) wall: its sigma0 (unless --sigma0 is given) and its measured peaks for comparison; '
-                    'none: no measured values (default MI1)')
-rdem.masonry.addWallArguments(parser, length=1.55, height=2.005, thickness=0.38, bond='english', blocks=(1, 1, 1), beam=0.2)
-m = parser.add_argument_group('materials (stresses in MPa, moduli in GPa, densities in kg/m3)')
-m.add_argument('--brick-E', type=float, default=2.991, help="brick Young's modulus (default 2.991)")
-m.add_argument('--brick-nu', type=float, default=0.25, help="brick Poisson's ratio (default 0.25)")
-m.add_argument('--brick-ft', type=float, default=1.28, help='brick tensile strength (default 1.28)')
-m.add_argument('--brick-c', type=float, default=1.79, help='brick cohesion (default 1.79)')
-m.add_argument('--brick-mu', type=float, default=0.81, help='brick friction coefficient (default 0.81)')
-m.add_argument('--density', type=float, default=1800, help='brick (masonry) density (default 1800)')
-m.add_argument('--mortar-E', type=float, default=2.991, help="mortar Young's modulus (default 2.991)")
-m.add_argument('--mortar-nu', type=float, default=0.25, help="mortar Poisson's ratio (default 0.25)")
-m.add_argument('--bond-ft', type=float, default=0.15, help='tensile bond strength of the joints (default 0.15)')
-m.add_argument('--bond-c', type=float, default=0.21, help='cohesion of the joints (default 0.21)')
-m.add_argument('--bond-mu', type=float, default=0.81, help='friction coefficient of the joints (default 0.81)')
-m.add_argument('--bond-GfI', type=float, default=18.0, help='mode-I fracture energy of the joints [J/m2] (softening; default 18, LourencoRots1997)')
-m.add_argument('--bond-GfII', type=float, default=125.0, help='mode-II fracture energy of the joints [J/m2] (softening; default 125, LourencoRots1997)')
-m.add_argument('--bond-fc', type=float, default=7.92,
-               help='compressive strength of the joints\' cap (softening; default 7.92, the masonry strength f_m of the database; 0: no cap)')
-m.add_argument('--bond-Gfc', type=float, default=5000.0, help='compressive fracture energy of the cap [J/m2] (softening; default 5000, LourencoRots1997)')
-m.add_argument('--brick-GfI', type=float, default=80.0, help='mode-I fracture energy of the bricks [J/m2] (softening; default 80, LourencoRots1997)')
-m.add_argument('--brick-GfII', type=float, default=800.0, help='mode-II fracture energy of the bricks [J/m2] (softening; default 800 = 10 G_f^I)')
-m.add_argument('--brick-fc', type=float, default=19.72,
-               help='compressive strength of the bricks\' cap (softening; default 19.72, f_b of the database; 0: no cap)')
-m.add_argument('--beam-E', type=float, default=30.0, help="beams' Young's modulus (default 30, concrete)")
-m.add_argument('--beam-nu', type=float, default=0.2, help="beams' Poisson's ratio (default 0.2)")
-m.add_argument('--beam-density', type=float, default=2400, help="beams' density (default 2400)")
+parser.add_argument('--wall', choices=list(rows), default='MI1',
+                    help='the wall of --table: its model by the rule set, its sigma0 and shear span, its measured peaks for comparison (default MI1)')
+parser.add_argument('--table', default=wall_database.TABLE, help='table of walls in the columns of the EPFL database (default data/walls/walls.csv)')
+rdem.masonry.addWallArguments(parser, length=geo['length'], height=geo['height'], thickness=geo['thickness'], bond=geo['bond'], blocks=geo['blocksPerBrick'],
+                              beam=geo['beam'], brick=geo['brick'], joint=geo['joint'])
+m = parser.add_argument_group('materials (stresses in MPa, moduli in GPa, densities in kg/m3; defaults: the rule set for --wall)')
+m.add_argument('--brick-E', type=float, default=brk['young'] * 1e-9, help="brick Young's modulus (default %(default).4g)")
+m.add_argument('--brick-nu', type=float, default=brk['poisson'], help="brick Poisson's ratio (default %(default)g)")
+m.add_argument('--brick-ft', type=float, default=brk['tensileStrength'] * 1e-6, help='brick tensile strength (default %(default).4g)')
+m.add_argument('--brick-c', type=float, default=brk['cohesion'] * 1e-6, help='brick cohesion (default %(default).4g)')
+m.add_argument('--brick-mu', type=float, default=brk['mu'], help='brick friction coefficient (default %(default)g)')
+m.add_argument('--brick-density', type=float, default=brk['density'], help='brick (masonry) density (default %(default).4g)')
+m.add_argument('--mortar-E', type=float, default=jnt['young'] * 1e-9, help="mortar Young's modulus (default %(default).4g)")
+m.add_argument('--mortar-nu', type=float, default=jnt['poisson'], help="mortar Poisson's ratio (default %(default)g)")
+m.add_argument('--bond-ft', type=float, default=jnt['tensileStrength'] * 1e-6, help='tensile bond strength of the joints (default %(default).4g)')
+m.add_argument('--bond-c', type=float, default=jnt['cohesion'] * 1e-6, help='cohesion of the joints (default %(default).4g)')
+m.add_argument('--bond-mu', type=float, default=jnt['mu'], help='friction coefficient of the joints (default %(default)g)')
+m.add_argument('--bond-GfI', type=float, default=jnt['GfI'], help='mode-I fracture energy of the joints [J/m2] (softening; default %(default)g)')
+m.add_argument('--bond-GfII', type=float, default=jnt['GfII'], help='mode-II fracture energy of the joints [J/m2] (softening; default %(default)g)')
+m.add_argument('--bond-fc', type=float, default=jnt['fc'] * 1e-6, help="compressive strength of the joints' cap (softening; default %(default).4g, f_m; 0: no cap)")
+m.add_argument('--bond-Gfc', type=float, default=jnt['Gfc'], help='compressive fracture energy of the cap [J/m2] (softening; default %(default)g)')
+m.add_argument('--brick-GfI', type=float, default=brk['GfI'], help='mode-I fracture energy of the bricks [J/m2] (softening; default %(default)g)')
+m.add_argument('--brick-GfII', type=float, default=brk['GfII'], help='mode-II fracture energy of the bricks [J/m2] (softening; default %(default)g)')
+m.add_argument('--brick-fc', type=float, default=brk['fc'] * 1e-6, help="compressive strength of the bricks' cap (softening; default %(default).4g, f_b; 0: no cap)")
+m.add_argument('--beam-E', type=float, default=bm['young'] * 1e-9, help="beams' Young's modulus (default %(default)g, concrete)")
+m.add_argument('--beam-nu', type=float, default=bm['poisson'], help="beams' Poisson's ratio (default %(default)g)")
+m.add_argument('--beam-density', type=float, default=bm['density'], help="beams' density (default %(default)g)")
 r = parser.add_argument_group('test')
-r.add_argument('--sigma0', type=float, default=None, help='vertical stress on the masonry [MPa] (default: that of --wall, 1.2 for MI1)')
-r.add_argument('--boundary', choices=['fixed', 'cantilever'], default='fixed', help='top beam kept horizontal (fixed) or free to rotate (default fixed)')
-r.add_argument('--drift', type=float, default=0.6, help='monotonic test: end drift [%%] (default 0.6)')
+r.add_argument('--sigma0', type=float, default=spec['test']['sigma0'] * 1e-6, help='vertical stress on the masonry [MPa] (default %(default)g, the table\'s)')
+r.add_argument('--shear-span', type=float, default=spec['test']['shearSpan'],
+               help='shear span ratio H0/H: 0.5 keeps the top beam horizontal (both ends fixed), any other value lets it rotate under the moment '
+               'V (H0 - H) at the masonry\'s top, 1 a cantilever (default %(default)g, the table\'s)')
+r.add_argument('--drift', type=float, default=scheme['drift'] * 100,
+               help='monotonic test: the push ends past this drift [%%] once it is also past --past-peak times the drift of the smoothed peak so far '
+               '(default %(default)g)')
+r.add_argument('--past-peak', type=float, default=scheme['pastPeak'], help='see --drift (default %(default)g)')
+r.add_argument('--max-drift', type=float, default=scheme['maxDrift'] * 100, help='monotonic test: the push ends at this drift at the latest [%%] (default %(default)g)')
 r.add_argument('--cycles', type=str, default='', help='cyclic test instead: drift amplitudes [%%] separated by commas, e.g. 0.05,0.1,0.2 (default none)')
 r.add_argument('--repeat', type=int, default=1, help='cycles per amplitude (default 1)')
-r.add_argument('--stop-drop', type=float, default=0.3, help='monotonic test: stop once the load (averaged over --smooth samples) has dropped by this fraction of its peak (default 0.3; 0 = never)')
+r.add_argument('--stop-drop', type=float, default=scheme['stopDrop'],
+               help='monotonic test: stop once the load (averaged over --smooth) has dropped by this fraction of its peak (default %(default)g; 0 = never)')
 r.add_argument('--max-wall', type=float, default=0, help='end the loading after this wall-clock time [s] and write the results so far (default 0: no limit)')
-r.add_argument('--rate', type=float, default=10.0, help='speed of the top beam [mm/s] (default 10)')
-r.add_argument('--ramp', type=float, default=0.05, help='duration of the velocity ramp at the start and at reversals [s] (default 0.05)')
-r.add_argument('--compress-time', type=float, default=0.05, help='duration of the vertical-load ramp [s] (default 0.05)')
-r.add_argument('--damping', type=float, default=0.2, help="Cundall's non-viscous damping of the integrator, in [0, 1) (default 0.2)")
-r.add_argument('--gravity', type=float, default=9.81, help='gravity along -z [m/s2] (default 9.81; 0: none)')
+r.add_argument('--rate', type=float, default=scheme['rate'] * 1e3, help='speed of the top beam [mm/s] (default %(default)g)')
+r.add_argument('--ramp', type=float, default=None,
+               help='duration of the velocity ramp at the start and at reversals [s] (default: %g mm of travel at --rate)' % (scheme['rampTravel'] * 1e3))
+r.add_argument('--compress-time', type=float, default=scheme['compressTime'], help='duration of the vertical-load ramp [s] (default %(default)g)')
+r.add_argument('--damping', type=float, default=scheme['damping'], help="Cundall's non-viscous damping of the integrator, in [0, 1) (default %(default)g)")
+r.add_argument('--inertia-scaling', choices=['on', 'off'], default='on' if scheme['inertiaScaling'] else 'off',
+               help="the masonry blocks' moments of inertia scaled by rdem.quasi_static.rotationalInertiaScale, masses unchanged (default %(default)s)")
+r.add_argument('--gravity', type=float, default=wall_database.GRAVITY, help='gravity along -z [m/s2] (default %(default)g; 0: none)')
 k = parser.add_argument_group('model')
 k.add_argument('--formulation', choices=['consistent', 'paper', 'off'], default='consistent', help="Poisson effect: consistent (cells), paper, off (default consistent)")
 k.add_argument('--failure-stress', choices=['total', 'spring'], default='total', help='springs break on the total stress of their face (default) or their own')
 k.add_argument('--springs', type=int, default=2, help='springs per face edge (default 2)')
-k.add_argument('--softening', choices=['off', 'on'], default='off', help='softening law of the springs (issue #18; default off: brittle, the paper)')
-k.add_argument('--head-joints', choices=['unbonded', 'bonded'], default='unbonded',
-               help='head joints without bond (compression and friction only, MannMuller1982; default) or bonded like the bed joints')
-k.add_argument('--verlet', type=float, default=0.003,
-               help='sweep distance of the collider [m] once contacts can occur (default 0.003, about 5 %% of a course; 0: the collider runs every step)')
+k.add_argument('--softening', choices=['off', 'on'], default='on', help='softening law of the springs (default on; off: brittle, the paper)')
+k.add_argument('--head-joints', choices=['unbonded', 'bonded'], default=jnt['headJoints'],
+               help='head joints without bond (compression and friction only, MannMuller1982) or bonded like the bed joints (default %(default)s, the rule set)')
+k.add_argument('--verlet', type=float, default=0.003, help='sweep distance of the collider [m] once contacts can occur (default 0.003; 0: the collider runs every step)')
 k.add_argument('--safety', type=float, default=0.8, help='time step over its stable estimate (default 0.8)')
 o = parser.add_argument_group('output')
-o.add_argument('--smooth', type=int, default=21,
-               help='samples (of 100 steps) of the moving average for the smoothed peak, odd (default 21: about one first period of MI1)')
+o.add_argument('--smooth', type=float, default=scheme['smoothDrift'] * 100,
+               help='width of the centred moving average of the load for the smoothed peak and the stop criterion [%% drift] (default %(default)g)')
 o.add_argument('--out', default='output/shear_wall', help='output folder (default output/shear_wall)')
 o.add_argument('--save', default='', help='save the scene at the end of the run to this file (O.save; e.g. for scripts/shear_wall_cost.py; default none)')
 o.add_argument('--vtk-every', type=float, default=0.05, help='ParaView output every this drift [%%] (default 0.05; 0 = none)')
 cli = parser.parse_args(sys.argv[1:])
-for name in ('rate', 'drift', 'beam', 'compress_time', 'density', 'beam_density'):
+for name in ('rate', 'drift', 'max_drift', 'past_peak', 'beam', 'compress_time', 'brick_density', 'beam_density', 'shear_span', 'smooth'):
 	if not getattr(cli, name) > 0:
 		sys.exit('--%s = %g: must be > 0' % (name.replace('_', '-'), getattr(cli, name)))
-if not (cli.smooth >= 1 and cli.smooth % 2 == 1):
-	sys.exit('--smooth = %d: must be an odd integer >= 1' % cli.smooth)
 if not 0 <= cli.stop_drop < 1:
 	sys.exit('--stop-drop = %g: must be in [0, 1)' % cli.stop_drop)
-if cli.ramp < 0:
-	sys.exit('--ramp = %g: must be >= 0' % cli.ramp)
+ramp = cli.ramp if cli.ramp is not None else scheme['rampTravel'] / (cli.rate * 1e-3)
+if ramp < 0:
+	sys.exit('--ramp = %g: must be >= 0' % ramp)
 try:
 	amplitudes = rdem.masonry.numbers(cli.cycles) if cli.cycles else []
 except argparse.ArgumentTypeError as e:
 	sys.exit('--cycles: %s' % e)
+validated = all(getattr(cli, a.dest) == a.default for a in parser._actions if a.dest not in ('help', 'out', 'save', 'vtk_every', 'max_wall', 'wall', 'table'))
 
 import matplotlib
 matplotlib.use('Agg')
@@ -125,8 +148,9 @@ from yade import O, VTKRecorder, plot
 from yade.wrapper import RdemMat, RdemJoint
 from rdem import walltest
 
-measured = walltest.MAGENES_CALVI_WALLS.get(cli.wall)
-sigma0 = cli.sigma0 * 1e6 if cli.sigma0 is not None else (measured['sigma0'] if measured else 0.0)
+measured = spec['measured']
+sigma0 = cli.sigma0 * 1e6
+boundary = 'fixed' if cli.shear_span == 0.5 else 'cantilever'
 os.makedirs(os.path.join(cli.out, 'vtk'), exist_ok=True)
 
 # 2. Scene ------------------------------------------------------------------------------------------------------------
@@ -135,7 +159,7 @@ setup0 = time.time()
 try:
 	cap = lambda fc: fc * 1e6 if fc > 0 else float('inf')
 	brick = O.materials.append(
-	        RdemMat(young=cli.brick_E * 1e9, poisson=cli.brick_nu, density=cli.density, tensileStrength=cli.brick_ft * 1e6, cohesion=cli.brick_c * 1e6,
+	        RdemMat(young=cli.brick_E * 1e9, poisson=cli.brick_nu, density=cli.brick_density, tensileStrength=cli.brick_ft * 1e6, cohesion=cli.brick_c * 1e6,
 	                frictionAngle=math.atan(cli.brick_mu), fractureEnergy=cli.brick_GfI, shearFractureEnergy=cli.brick_GfII,
 	                compressiveStrength=cap(cli.brick_fc), compressiveFractureEnergy=cli.bond_Gfc, label='brick'))
 	beam = O.materials.append(
@@ -161,15 +185,16 @@ try:
 			rdem.poissonEngine().elements = 'cells'
 		rdem.poissonEngine().build(w.ids)
 	unbonded = walltest.unbondJoints(w, 'head') if cli.head_joints == 'unbonded' else set()
-	test = walltest.ShearWallTest(w, sigma0, boundary=cli.boundary)
-	targets = [a * 1e-2 * w.layout.height for a in walltest.cycleTargets(amplitudes, cli.repeat)] if amplitudes else [cli.drift * 1e-2 * w.layout.height]
+	test = walltest.ShearWallTest(w, sigma0, boundary=boundary, shearSpan=cli.shear_span)
+	inertiaFactor = walltest.scaleRotationalInertia(w.masonry()) if cli.inertia_scaling == 'on' else 1.0
+	targets = [a * 1e-2 * w.layout.height for a in walltest.cycleTargets(amplitudes, cli.repeat)] if amplitudes else [cli.max_drift * 1e-2 * w.layout.height]
 except ValueError as e:
 	sys.exit('shear_wall: %s' % e)
 O.trackEnergy = True
 O.dt = rdem.timeStepper().safety * rdem.timeStepper().estimate()
 span = sum(abs(b - a) for a, b in zip([0.0] + targets[:-1], targets))
-print('shear_wall: %s; sigma0 %.3g MPa (N = %.1f kN), %s ends; time step %.3g s, about %d steps of loading; set-up %.1f s' %
-      (w, sigma0 * 1e-6, test.axialForce * 1e-3, cli.boundary, O.dt, span / (cli.rate * 1e-3) / O.dt, time.time() - setup0),
+print('shear_wall: %s; sigma0 %.3g MPa (N = %.1f kN), %s; rotational inertia x %.3g at most; time step %.3g s, about %d steps of loading; set-up %.1f s' %
+      (w, sigma0 * 1e-6, test.axialForce * 1e-3, 'H0/H = %g' % cli.shear_span, inertiaFactor, O.dt, span / (cli.rate * 1e-3) / O.dt, time.time() - setup0),
       flush=True)
 
 # 3. Recording -------------------------------------------------------------------------------------------------------
@@ -179,7 +204,7 @@ ENERGIES = ('rdemElastic', 'rdemPoisson', 'rdemBondBreak', 'rdemDashpot', 'rdemF
 plot.reset()
 plot.plots = {'drift': ('shear', 'baseShear'), 't': ('tension', 'shearBreaks')}
 history = plot.data
-state = dict(peak=None, peakCracks=None, first=None, report=time.time(), iter=O.iter, vtkNext=0.0)
+state = dict(peak=None, peakCracks=None, first=None, report=time.time(), iter=O.iter, vtkNext=0.0, smoothPeak=0.0, smoothPeakDrift=0.0)
 cracks = rdem.CrackExport(os.path.join(cli.out, 'vtk', ''))
 
 
@@ -197,6 +222,8 @@ def record(t):
 	             shearBreaks=ns,
 	             workH=t.work['horizontal'],
 	             workV=t.work['vertical'],
+	             workM=t.work['moment'],
+	             moment=t.topMoment(),
 	             **{e: O.energy[e] if e in keys else 0.0 for e in ENERGIES})
 
 
@@ -226,17 +253,22 @@ def onStep(t):
 
 
 def stop(t):
-	"""Monotonic test: the load, averaged over the last --smooth samples (crack bursts make single samples spike), has
-	dropped by --stop-drop of the largest such average, once past the first crack (before it, the peak is the residual
-	of the vertical loading)."""
+	"""Monotonic test: ends once the load, averaged over the last --smooth of drift (crack bursts make single samples
+	spike), has dropped by --stop-drop of the largest such average (once past the first crack: before it, the peak is
+	the residual of the vertical loading), or once the drift is past both --drift and --past-peak times the drift of
+	that largest average (the peak is behind), or at --max-drift."""
 	if cli.max_wall > 0 and time.time() - t1 > cli.max_wall:
 		print('shear_wall: --max-wall %g s reached; results so far' % cli.max_wall, flush=True)
 		return True
-	recent = history['shear'][-cli.smooth:]
-	mean = abs(sum(recent) / len(recent))
-	state['smoothPeak'] = max(state.get('smoothPeak', 0.0), mean)
-	return (not amplitudes and cli.stop_drop > 0 and state['first'] is not None and abs(state['peak']['driftPercent']) > 0.01
-	        and mean < (1 - cli.stop_drop) * state['smoothPeak'])
+	if amplitudes:
+		return False
+	mean = abs(walltest.trailingMean(history['drift'], history['shear'], cli.smooth * 1e-2))
+	d = abs(history['drift'][-1])
+	if mean > state.get('smoothPeak', 0.0):
+		state['smoothPeak'], state['smoothPeakDrift'] = mean, d
+	dropped = cli.stop_drop > 0 and state['first'] is not None and abs(state['peak']['driftPercent']) > 0.01 and mean < (1 - cli.stop_drop) * state['smoothPeak']
+	behind = d * 100 >= cli.drift and d >= cli.past_peak * state['smoothPeakDrift']
+	return dropped or behind
 
 
 # 4. Run ----------------------------------------------------------------------------------------------------------------
@@ -252,7 +284,7 @@ cracks.snapshot = [row for row in rdem.bondSnapshot() if (min(row[0], row[1]), m
 state['breaks0'] = sum(rdem.breakCounts())
 onStep(test)
 t1 = time.time()
-pushSteps = test.push(targets, cli.rate * 1e-3, cli.ramp, record=onStep, stop=stop)
+pushSteps = test.push(targets, cli.rate * 1e-3, ramp, record=onStep, stop=stop)
 pushWall = time.time() - t1
 cracks.write()
 cracks.close()
@@ -265,31 +297,33 @@ if state['peakCracks'] is None:
 # 5. Results ----------------------------------------------------------------------------------------------------------
 h = history
 peak, first = state['peak'], state['first']
-smoothV, smoothDrift = walltest.smoothedPeak(h['drift'], h['shear'], cli.smooth)
-smoothed = dict(shearKN=smoothV * 1e-3, driftPercent=smoothDrift * 100, window=cli.smooth)
+smoothV, smoothDrift = walltest.smoothedPeakOverDrift(h['drift'], h['shear'], cli.smooth * 1e-2)
+smoothed = dict(shearKN=smoothV * 1e-3, driftPercent=smoothDrift * 100, widthPercent=cli.smooth)
 uFirst = first['driftPercent'] * 1e-2 * test.height if first else None
 stiffness = first['shearKN'] * 1e3 / uFirst if first and uFirst else float('nan')
-closedForm = (walltest.timoshenkoStiffness(cli.brick_E * 1e9, cli.brick_nu, w.layout.length, w.layout.thickness, w.layout.height, cli.boundary)
-              if (cli.brick_E, cli.brick_nu) == (cli.mortar_E, cli.mortar_nu) else None)
+closedForm = (walltest.timoshenkoStiffness(cli.brick_E * 1e9, cli.brick_nu, w.layout.length, w.layout.thickness, w.layout.height, boundary)
+              if (cli.brick_E, cli.brick_nu) == (cli.mortar_E, cli.mortar_nu) and cli.shear_span in (0.5, 1.0) else None)
 e0 = {e: h[e][0] for e in ENERGIES}  # energies when the horizontal loading began
 stored = {e: h[e][-1] for e in ENERGIES}
-external = h['workH'][-1] + h['workV'][-1]
+external = h['workH'][-1] + h['workV'][-1] + h['workM'][-1]
 accounted = sum(stored.values())
 crackCount = walltest.crackClasses(w, final)
 peakCount = walltest.crackClasses(w, state['peakCracks'])
+indicators = walltest.failureIndicators(w, final)
+failure = dict(modelClass=wall_database.failureClass(*indicators), horizontalTensionArea=indicators[0], coreCourses=indicators[1],
+               coreCoursesCracked=indicators[2], jointArea=indicators[3], measured=measured['failure'], measuredClass=measured['failureClass'])
 cost = dict(compressSteps=compressSteps, compressSeconds=compressWall, pushSteps=pushSteps, pushSeconds=pushWall, threads=O.numThreads,
             microsecondsPerBlockStep=1e6 * pushWall / max(1, pushSteps * len(w.ids)))
-comparison = None
-if measured:
-	mean = 0.5 * sum(measured['peak'])
-	comparison = dict(measuredPeakKN=[v * 1e-3 for v in measured['peak']], measuredMeanKN=mean * 1e-3, modelPeakKN=abs(peak['shearKN']),
-	                  peakError=abs(peak['shearKN']) * 1e3 / mean - 1, measuredDriftPercent=[d * 100 for d in measured['driftAtPeak']],
-	                  modelDriftPercent=abs(peak['driftPercent']), smoothedPeakKN=abs(smoothed['shearKN']), smoothedPeakError=abs(smoothV) / mean - 1,
-	                  smoothedDriftPercent=abs(smoothed['driftPercent']), measuredFailure=measured['failure'])
-results = dict(input=vars(cli), sigma0=sigma0, axialForce=test.axialForce, blocks=len(w.ids), bonds=w.nBonds, bricks=len(w.bricks), courses=len(w.courses),
-               joints={k: len(v) for k, v in w.joints.items()}, cells=rdem.poissonEngine().nCells if cli.formulation != 'off' else 0, timeStep=O.dt,
-               sources=walltest.MAGENES_CALVI['sources'], peak=peak, smoothedPeak=smoothed, firstCrack=first, initialStiffnessKNPerMm=stiffness * 1e-6,
-               timoshenkoStiffnessKNPerMm=closedForm * 1e-6 if closedForm else None, cracksAtPeak=peakCount, cracksAtEnd=crackCount,
+mean = measured['mean']
+comparison = dict(measuredPeakKN=[v * 1e-3 for v in measured['peak']], measuredMeanKN=mean * 1e-3, modelPeakKN=abs(peak['shearKN']),
+                  peakError=abs(peak['shearKN']) * 1e3 / mean - 1, measuredDriftPercent=[d * 100 for d in measured['driftAtPeak']],
+                  modelDriftPercent=abs(peak['driftPercent']), smoothedPeakKN=abs(smoothed['shearKN']), smoothedPeakError=abs(smoothV) / mean - 1,
+                  smoothedDriftPercent=abs(smoothed['driftPercent']), measuredFailure=measured['failure'], failure=failure)
+results = dict(input=vars(cli), validated=validated, wall=cli.wall, model=spec, sigma0=sigma0, shearSpan=cli.shear_span, axialForce=test.axialForce, blocks=len(w.ids),
+               bonds=w.nBonds, bricks=len(w.bricks), courses=len(w.courses), joints={k: len(v) for k, v in w.joints.items()},
+               cells=rdem.poissonEngine().nCells if cli.formulation != 'off' else 0, timeStep=O.dt, rules={k: v[1] for k, v in wall_database.RULES.items()},
+               peak=peak, smoothedPeak=smoothed, firstCrack=first, initialStiffnessKNPerMm=stiffness * 1e-6,
+               timoshenkoStiffnessKNPerMm=closedForm * 1e-6 if closedForm else None, cracksAtPeak=peakCount, cracksAtEnd=crackCount, failure=failure,
                brokenSprings=dict(tension=h['tension'][-1] - h['tension'][0], shear=h['shearBreaks'][-1] - h['shearBreaks'][0]),
                settlementMm=-h['vertical'][0] * 1e3, largestTopRotation=max(abs(r) for r in h['rotation']),
                largestShearImbalance=max(abs(a - b) for a, b in zip(h['shear'], h['baseShear'])) / max(1.0, max(abs(v) for v in h['shear'])),
@@ -308,13 +342,12 @@ ax.plot(drift, [1e-3 * v for v in h['baseShear']], '-', color='0.6', lw=0.8, lab
 ax.plot([peak['driftPercent']], [peak['shearKN']], 'ko', label='model peak %.1f kN at %.3f %%' % (peak['shearKN'], peak['driftPercent']))
 if first:
 	ax.plot([first['driftPercent']], [first['shearKN']], 'o', color='tab:orange', label='first broken spring, %.1f kN' % first['shearKN'])
-if measured:
-	for sign, V, d in zip((1, -1), measured['peak'], measured['driftAtPeak']):
-		ax.plot([sign * 100 * d], [sign * 1e-3 * V], 's', color='tab:green', label='measured peak %s%.1f kN at %.3f %%' % ('+' if sign > 0 else '-', 1e-3 * V, 100 * d))
-	if not amplitudes:  # a monotonic run against the envelope: the negative peak mirrored
-		ax.plot([100 * measured['driftAtPeak'][1]], [1e-3 * measured['peak'][1]], 's', mfc='none', color='tab:green', label='measured peak -, mirrored')
+for sign, V, d in zip((1, -1), measured['peak'], measured['driftAtPeak']):
+	ax.plot([sign * 100 * d], [sign * 1e-3 * V], 's', color='tab:green', label='measured peak %s%.1f kN at %.3f %%' % ('+' if sign > 0 else '-', 1e-3 * V, 100 * d))
+if not amplitudes:  # a monotonic run against the envelope: the negative peak mirrored
+	ax.plot([100 * measured['driftAtPeak'][1]], [1e-3 * measured['peak'][1]], 's', mfc='none', color='tab:green', label='measured peak -, mirrored')
 ax.set_ylabel('horizontal load V [kN]')
-ax.set_title('%s: sigma0 = %.2f MPa, %s ends, %s' % (cli.wall if measured else 'wall', sigma0 * 1e-6, cli.boundary,
+ax.set_title('%s%s: sigma0 = %.2f MPa, H0/H = %g, %s' % (cli.wall, '' if validated else ' (options changed)', sigma0 * 1e-6, cli.shear_span,
                                                    'softening' if cli.softening == 'on' else 'brittle springs'))
 ax.legend(fontsize=7)
 ax = axes[1]
@@ -322,7 +355,7 @@ dissipated = [
         sum(h[e][k] for e in ('rdemBondBreak', 'rdemDashpot', 'rdemFriction', 'rdemPoissonRelease', 'rdemFractureTension', 'rdemFractureShear', 'rdemCrushing', 'nonviscDamp'))
         for k in range(len(drift))
 ]
-ax.plot(drift, [a + b for a, b in zip(h['workH'], h['workV'])], 'k-', label='work of the actuator and the vertical load')
+ax.plot(drift, [a + b + c for a, b, c in zip(h['workH'], h['workV'], h['workM'])], 'k-', label='work of the actuator, the vertical load and the couple')
 ax.plot(drift, [a + b for a, b in zip(h['rdemElastic'], h['rdemPoisson'])], label='elastic (springs and cells)')
 ax.plot(drift, dissipated, label='dissipated (breaks, fracture, crushing, dashpots, friction, damping)')
 ax.plot(drift, h['nonviscDamp'], ':', label="of which Cundall's damping")
@@ -373,7 +406,10 @@ axes[1].legend(fontsize=7, loc='upper right')
 fig.tight_layout()
 fig.savefig(os.path.join(cli.out, 'cracks.png'), dpi=120)
 
-print('shear_wall: smoothed peak (%d samples) %.1f kN at %.3f %% drift' % (cli.smooth, smoothed['shearKN'], smoothed['driftPercent']), flush=True)
+print('shear_wall: %s: smoothed peak (over %g %% drift) %.1f kN at %.3f %% drift (measured mean %.1f kN: %+.1f %%); failure mode %s (measured %s)' %
+      (cli.wall, cli.smooth, smoothed['shearKN'], smoothed['driftPercent'], mean * 1e-3, 100 * comparison['smoothedPeakError'], failure['modelClass'],
+       measured['failure']),
+      flush=True)
 print('shear_wall: peak %.1f kN at %.3f %% drift%s; first broken spring at %s; initial stiffness %.1f kN/mm%s; cracks at the end: joints %s, bricks %s; '
       'energy balance %s; %d + %d steps in %.1f + %.1f s (%.3f us per block-step, %d threads); results in %s' %
       (peak['shearKN'], peak['driftPercent'], (' (measured mean %.1f kN: %+.1f %%)' % (comparison['measuredMeanKN'], 100 * comparison['peakError'])) if comparison else '',

@@ -21,7 +21,7 @@ import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 
-#: Measured peaks (kN) and drifts at the peaks (%), + and -, of Magenes & Calvi (1992) (rdem.walltest.MAGENES_CALVI_WALLS).
+#: Measured peaks (kN) and drifts at the peaks (%), + and -, of Magenes & Calvi (1992) (data/walls/walls.csv and statics-failures.csv, read by rdem.wall_database).
 MEASURED = {'MI1': ((269.55, 259.63), (0.1995, 0.1795)), 'MI2': ((241.62, 227.21), (0.4005, 0.3866))}
 LINE = re.compile(r'step\s+(\d+)\s+drift\s+([-+\d.]+) %\s+V\s+([-+\d.]+) kN \(base\s+([-+\d.]+)\).*tension (\d+), shear (\d+)')
 COLOURS = {1: 'tab:red', 2: 'tab:blue', 3: '0.4'}

@@ -86,7 +86,7 @@ def openings(text):
 	return [numbers(r, 4) for r in filter(None, text.split(';'))]
 
 
-def addWallArguments(parser, length, height, thickness, bond, blocks, beam):
+def addWallArguments(parser, length, height, thickness, bond, blocks, beam, brick=(0.25, 0.12, 0.055), joint=0.01):
 	"""The options of a wall's geometry (lengths in m) in an argument group of ``parser``, with these defaults:
 	--length, --height, --thickness, --brick, --joint, --bond, --mortar, --blocks, --openings (parsed by :func:`openings`)
 	and --beam, the arguments of :func:`wall` as scripts/wall.py and scripts/shear_wall.py take them."""
@@ -94,8 +94,8 @@ def addWallArguments(parser, length, height, thickness, bond, blocks, beam):
 	g.add_argument('--length', type=float, default=length, help='masonry length (default %(default)g)')
 	g.add_argument('--height', type=float, default=height, help='masonry height between the beams (default %(default)g)')
 	g.add_argument('--thickness', type=float, default=thickness, help='masonry thickness (default %(default)g)')
-	g.add_argument('--brick', type=lambda s: numbers(s, 3), default=[0.25, 0.12, 0.055], help='brick length,width,height (default 0.25,0.12,0.055)')
-	g.add_argument('--joint', type=float, default=0.01, help='mortar joint thickness (default 0.01)')
+	g.add_argument('--brick', type=lambda s: numbers(s, 3), default=list(brick), help='brick length,width,height (default %s)' % ','.join('%g' % v for v in brick))
+	g.add_argument('--joint', type=float, default=joint, help='mortar joint thickness (default %(default)g)')
 	g.add_argument('--bond', choices=['stack', 'running', 'english', 'flemish'], default=bond, help='bond pattern (default %(default)s)')
 	g.add_argument('--mortar', choices=['interface', 'layer'], default='interface', help='joint model: interface (zero-thickness joints in series) or '
 	               'layer (mortar blocks, needed for the Poisson mismatch of mortar and brick); default interface')

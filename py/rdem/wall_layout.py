@@ -202,9 +202,13 @@ def _stackCourse(k, quarters, modules):
 
 def _runningCourse(k, quarters, modules):
 	"""Running (stretcher) bond: even courses ``quarters/4`` stretchers, odd courses a half bat, one stretcher less and
-	a half bat (offset $L/2$); every wythe alike."""
+	a half bat (offset $L/2$); a length of a whole number of stretchers and a half: even courses the stretchers and a half
+	bat at the far end, odd courses a half bat first. Every wythe alike."""
 	n = quarters // 4
-	codes = 'S' * n if k % 2 == 0 else 'B' + 'S' * (n - 1) + 'B'
+	if quarters % 4:
+		codes = 'S' * n + 'B' if k % 2 == 0 else 'B' + 'S' * n
+	else:
+		codes = 'S' * n if k % 2 == 0 else 'B' + 'S' * (n - 1) + 'B'
 	return [p for j in range(modules) for p in _row(codes, j)]
 
 
@@ -259,7 +263,8 @@ _COURSE_FUNCTIONS = {'stack': _stackCourse, 'running': _runningCourse, 'english'
 # Valid wall lengths per bond, as quarter modules Q (length + t = Q*L/4): (predicate, description).
 _LENGTH_RULES = {
         'stack': (lambda Q: Q >= 4 and Q % 4 == 0, 'n*l + (n-1)*t, n >= 1 bricks per course'),
-        'running': (lambda Q: Q >= 4 and Q % 4 == 0, 'n*l + (n-1)*t, n >= 1 bricks per course (half bats at both ends of odd courses)'),
+        'running': (lambda Q: Q >= 4 and Q % 2 == 0, 'n*l + (n-1)*t or (n+1/2)*(l+t) - t, n >= 1 bricks per course (half bats at both ends of '
+                    'odd courses, or at one end of every course)'),
         'english': (lambda Q: Q >= 8 and Q % 4 == 0, 'n*l + (n-1)*t, n >= 2 stretchers per stretcher course'),
         'flemish': (lambda Q: Q >= 10 and Q % 6 in (0, 4), 'length + t = (1 + 1.5*m)*(l + t) (queen closers at both ends) or (1.5 + 1.5*m)*(l + t) '
                     '(three-quarter bats at the far end), m >= 1'),

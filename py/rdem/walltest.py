@@ -21,7 +21,9 @@ Boundary conditions of the top beam, one rigid block (``beamBlocks=1``): it is g
 held along $y$, and free along $z$ under the constant vertical force $N = \\sigma_0 L t$ (less its own weight, so that
 the masonry carries exactly $N$ at its top). ``'fixed'``: both ends fixed against rotation (the top beam never rotates,
 the shear span is $H_0 = H/2$, as in Magenes & Calvi 1992); ``'cantilever'``: the top beam may rotate in the wall's
-plane (about $y$), so that no moment acts at the top ($H_0 = H$). The base beam is fixed.
+plane (about $y$) and carries a couple that makes the moment at the masonry's top $V (H_0 - H)$, the shear span $H_0$
+given as ``shearSpan`` $= H_0/H$ (default 1: no moment at the top, a cantilever; 1.5: Petry & Beyer 2014's walls, whose
+actuators held that ratio). The base beam is fixed.
 
 Quasi-static loading: the top beam's velocity rises from 0 to ``rate`` along a half cosine over ``ramp`` seconds at the
 start and at every reversal, and Cundall's non-viscous damping of :yref:`NewtonIntegrator` (``rdem.engines(damping=...)``)
@@ -30,8 +32,8 @@ enough is checked by running it again at half the rate (scripts/shear_wall.py ``
 """
 import math
 from yade import O, Vector3, Quaternion
-from yade.wrapper import ForceEngine, NewtonIntegrator
-from . import build  # relative: the package is also yade.rdem (doc/upstream.md)
+from yade.wrapper import ForceEngine, TorqueEngine, NewtonIntegrator
+from . import build, quasi_static  # relative: the package is also yade.rdem (doc/upstream.md)
 
 BOUNDARIES = ('fixed', 'cantilever')
 #: The top beam's blocked degrees of freedom per boundary condition (z is free: the vertical load acts along it).
@@ -91,24 +93,32 @@ class ShearWallTest:
 
 	:param sigma0: vertical stress on the masonry's top [Pa], >= 0 (compression positive).
 	:param boundary: ``'fixed'`` or ``'cantilever'`` (module docstring).
+	:param shearSpan: $H_0/H$ with ``boundary='cantilever'`` (default 1); with ``'fixed'`` it is 0.5 (None or 0.5).
 
 	:ivar top: id of the top beam; :ivar base: ids of the base beam's blocks; :ivar height: $H$ [m];
 	:ivar area: $L t$, the masonry's horizontal cross-section [m²]; :ivar axialForce: $N = \\sigma_0 L t$ [N].
-	:ivar work: work of the actuator on the top beam, $\\int V\\,du$, and of the applied vertical force (the top beam's
-	    weight is in YADE's ``gravWork``), since the test began [J] (``{'horizontal': ..., 'vertical': ...}``), by the
-	    trapezoid rule over the chunks of :meth:`advance` (the force is held constant within a chunk except while it is
-	    ramped).
+	:ivar work: work of the actuator on the top beam, $\\int V\\,du$, of the applied vertical force (the top beam's
+	    weight is in YADE's ``gravWork``) and of the couple on the top beam, since the test began [J] (``{'horizontal': ...,
+	    'vertical': ..., 'moment': ...}``), by the trapezoid rule over the chunks of :meth:`advance` (the force is held
+	    constant within a chunk except while it is ramped).
 	"""
 
-	def __init__(self, wall, sigma0, boundary='fixed'):
+	def __init__(self, wall, sigma0, boundary='fixed', shearSpan=None):
 		if boundary not in BOUNDARIES:
 			raise ValueError('boundary = %r: must be one of %s' % (boundary, ', '.join(repr(b) for b in BOUNDARIES)))
+		if shearSpan is None:
+			shearSpan = 0.5 if boundary == 'fixed' else 1.0
+		if boundary == 'fixed' and shearSpan != 0.5:
+			raise ValueError("shearSpan = %r: with boundary='fixed' the shear span ratio is 0.5 (the top beam kept horizontal); "
+			                 "use boundary='cantilever' for another" % (shearSpan, ))
+		if not (math.isfinite(shearSpan) and shearSpan > 0):
+			raise ValueError('shearSpan = %r: must be finite and > 0 (H0/H)' % (shearSpan, ))
 		if not (math.isfinite(sigma0) and sigma0 >= 0):
 			raise ValueError('sigma0 = %r: must be finite and >= 0 [Pa] (compression positive)' % (sigma0, ))
 		if not wall.beams['base'] or len(wall.beams['top']) != 1:
 			raise ValueError('wall: a shear test needs a base beam and a top beam of one block (rdem.masonry.wall(baseBeam=..., topBeam=..., '
 			                 'beamBlocks=1)); this wall has %d base and %d top beam blocks' % (len(wall.beams['base']), len(wall.beams['top'])))
-		self.wall, self.sigma0, self.boundary = wall, float(sigma0), boundary
+		self.wall, self.sigma0, self.boundary, self.shearSpan = wall, float(sigma0), boundary, float(shearSpan)
 		self.top, self.base = wall.beams['top'][0], list(wall.beams['base'])
 		lay = wall.layout
 		self.height, self.area = lay.height, lay.length * lay.thickness
@@ -126,9 +136,14 @@ class ShearWallTest:
 		self._load = ForceEngine(ids=[self.top], force=Vector3.Zero)
 		engines = O.engines
 		k = next(k for k, e in enumerate(engines) if isinstance(e, NewtonIntegrator))
-		O.engines = engines[:k] + [self._load] + engines[k:]  # after the force assembler, before the integrator
+		# The couple that makes the moment at the masonry's top V (H0 - H): the actuator's force acts at the beam's centroid,
+		# half the beam's height b above the masonry, which adds V b/2 (both about +y, tilting the top towards +x).
+		self._couple = TorqueEngine(ids=[self.top], moment=Vector3.Zero) if boundary == 'cantilever' else None
+		lever = wall.layout.topBeam or 0.0
+		self._coupleArm = self.shearSpan * self.height - self.height - lever / 2
+		O.engines = engines[:k] + [self._load] + ([self._couple] if self._couple else []) + engines[k:]  # after the force assembler, before the integrator
 		self.origin = Vector3(s.pos)
-		self.work = {'horizontal': 0.0, 'vertical': 0.0}
+		self.work = {'horizontal': 0.0, 'vertical': 0.0, 'moment': 0.0}
 		self._last = None
 
 	# Measurements -----------------------------------------------------------------------------------------------------
@@ -169,14 +184,23 @@ class ShearWallTest:
 	def _setLoad(self, fraction):
 		self._load.force = Vector3(0, 0, -(fraction * self.axialForce - self._weight))
 
+	def topMoment(self):
+		"""The moment the test applies to the masonry's top about $+y$ [N·m]: $V (H_0 - H)$ with the couple of a
+		cantilever as set for the last chunk (0 with both ends fixed, where the top beam's rotation is held instead)."""
+		return self._couple.moment[1] + self.shear() * (self.wall.layout.topBeam or 0.0) / 2 if self._couple else 0.0
+
 	def advance(self, steps):
-		"""Run ``steps`` steps and add the work of the actuator and of the vertical load over them (trapezoid rule on
-		the values before and after)."""
-		before = (self.topDisplacement(), self.shear(), self.verticalDisplacement(), self._load.force[2])
+		"""Run ``steps`` steps and add the work of the actuator, of the vertical load and of the couple over them
+		(trapezoid rule on the values before and after). A cantilever's couple is set from the shear before the chunk."""
+		if self._couple:
+			self._couple.moment = Vector3(0, self.shear() * self._coupleArm, 0)
+		before = (self.topDisplacement(), self.shear(), self.verticalDisplacement(), self._load.force[2], self.topRotation(),
+		          self._couple.moment[1] if self._couple else 0.0)
 		O.run(int(steps), True)
-		u, V, w, F = self.topDisplacement(), self.shear(), self.verticalDisplacement(), self._load.force[2]
+		u, V, w, F, r = self.topDisplacement(), self.shear(), self.verticalDisplacement(), self._load.force[2], self.topRotation()
 		self.work['horizontal'] += 0.5 * (before[1] + V) * (u - before[0])
 		self.work['vertical'] += 0.5 * (before[3] + F) * (w - before[2])
+		self.work['moment'] += before[5] * (r - before[4])
 
 	def compress(self, duration, tolerance=1e-4, chunk=200, maxTime=None, report=None):
 		"""Apply $\\sigma_0$: the vertical load grows along a half cosine from 0 to $N$ over ``duration`` [s] while the top
@@ -238,6 +262,20 @@ class ShearWallTest:
 				record(self)
 
 
+def scaleRotationalInertia(ids):
+	"""Multiply the principal moments of inertia of the blocks ``ids`` by :func:`rdem.quasi_static.rotationalInertiaScale`
+	of their half-extents (the rotational inertia scaling of the quasi-static scheme, doc/validation.md); their masses,
+	and so their weights and every static state, stay as they are. Call it before the time step is set (RdemTimeStepper
+	reads the inertias). Returns the largest factor applied."""
+	largest = 1.0
+	for i in ids:
+		b = O.bodies[i]
+		f = quasi_static.rotationalInertiaScale(b.shape.extents)
+		b.state.inertia = b.state.inertia * f
+		largest = max(largest, f)
+	return largest
+
+
 def unbondJoints(wall, kind='head'):
 	"""Start the joints of one ``kind`` of ``wall`` (``'head'``, ``'bed'``, ``'collar'`` or ``'beam'``, the keys of
 	``wall.joints``) without bond: every restoring spring of their bonds in the broken state, so that these joints carry
@@ -275,6 +313,74 @@ def smoothedPeak(drift, shear, window):
 	return best
 
 
+def travel(drift):
+	"""The drift travelled up to each sample, $\\sum |\\Delta d|$ (monotonic also through the reversals of a cyclic
+	test), in the units of ``drift``."""
+	out, total = [], 0.0
+	for k, d in enumerate(drift):
+		total += abs(d - drift[k - 1]) if k else 0.0
+		out.append(total)
+	return out
+
+
+def smoothedPeakOverDrift(drift, shear, width):
+	"""As :func:`smoothedPeak`, the moving average centred on each sample taken over the samples within ``width``/2 of
+	drift travelled (:func:`travel`) on either side instead of a number of samples, so that it means the same whatever
+	the time step and the loading rate. Returns (V, drift) in the units given; ValueError for ``width`` <= 0 or lists
+	that are empty or of different lengths."""
+	if not (math.isfinite(width) and width > 0):
+		raise ValueError('width = %r: must be finite and > 0 (drift)' % (width, ))
+	if not shear or len(drift) != len(shear):
+		raise ValueError('drift and shear: must be non-empty lists of the same length (%d, %d)' % (len(drift), len(shear)))
+	s = travel(drift)
+	best, lo, hi, total = None, 0, 0, 0.0
+	for k in range(len(shear)):
+		while hi < len(shear) and s[hi] <= s[k] + width / 2:
+			total += shear[hi]
+			hi += 1
+		while s[lo] < s[k] - width / 2:
+			total -= shear[lo]
+			lo += 1
+		v = total / (hi - lo)
+		if best is None or abs(v) > abs(best[0]):
+			best = (v, drift[k])
+	return best
+
+
+def trailingMean(drift, shear, width):
+	"""The mean of ``shear`` over the last samples within ``width`` of drift travelled (:func:`travel`) of the last one:
+	the load a stop criterion compares with its peak, without the spikes of single samples."""
+	s = travel(drift)
+	part = [v for v, x in zip(shear, s) if x >= s[-1] - width]
+	return sum(part) / len(part)
+
+
+def failureIndicators(wall, segments):
+	"""What :func:`rdem.wall_database.failureClass` decides the failure mode from, for the broken springs ``segments``
+	(:func:`rdem.measure.brokenSegments`) of ``wall`` (the masonry from $z = 0$ to $H$, $x = 0$ to $L$):
+	``(horizontalTensionArea, coreCourses, coreCoursesCracked, jointArea)``: the larger of the areas [m²] of the bed
+	faces (normal within 25° of $z$) broken in tension or released in the bottom and in the top tenth of the wall, the
+	number of courses whose middle lies in the core (the middle half of the height), how many of them hold a broken
+	spring in the core (the middle half of the length too), and $L t$."""
+	lay = wall.layout
+	L, H = lay.length, lay.height
+	pitch = lay.brick[2] + lay.joint
+	bands = [0.0, 0.0]
+	cracked = set()
+	for sg in segments:
+		x, z = sg['point'][0], sg['point'][2]
+		if abs(sg['normal'][2]) > 0.9 and sg['state'] in (1, 3):
+			area = 4 * sg['halfSizes'][0] * sg['halfSizes'][1]
+			if z < 0.1 * H:
+				bands[0] += area
+			elif z > 0.9 * H:
+				bands[1] += area
+		if L / 4 < x < 3 * L / 4 and H / 4 < z < 3 * H / 4:
+			cracked.add(int(math.floor((z + lay.joint / 2) / pitch)))
+	core = [k for k in range(lay.courseCount) if H / 4 <= k * pitch + lay.brick[2] / 2 <= 3 * H / 4]
+	return max(bands), len(core), len(cracked.intersection(core)), L * lay.thickness
+
+
 def crackClasses(wall, segments):
 	"""The broken segments ``segments`` (:func:`rdem.measure.brokenSegments`) counted by where and how they broke:
 	``{'joint': {'tension': n, 'shear': n, 'released': n}, 'brick': {...}}``; *joint* = bed, head, collar and beam joints,
@@ -290,49 +396,3 @@ def crackClasses(wall, segments):
 		if sg.get('released', sg['state'] == 3):
 			out[where]['released'] += 1
 	return out
-
-
-#: One parameter set for the Magenes & Calvi (1992) walls MI1 and MI2 (doc/validation.md §2), every value with its
-#: source. Lengths m, stresses and moduli Pa, densities kg/m³; ``mu`` a friction coefficient.
-MAGENES_CALVI = {
-        'geometry': dict(length=1.55, height=2.005, thickness=0.38, brick=(0.25, 0.12, 0.055), joint=0.01, bond='english', beam=0.2),
-        'brick': dict(young=2991e6, poisson=0.25, density=1800, tensileStrength=1.28e6, cohesion=1.79e6, mu=0.81),
-        'joint': dict(young=2991e6, poisson=0.25, tensileStrength=0.15e6, cohesion=0.21e6, mu=0.81, headJoints='unbonded'),
-        'beam': dict(young=30e9, poisson=0.2, density=2400),
-        'softening': dict(jointGfI=18.0, jointGfII=125.0, jointFc=7.92e6, Gfc=5000.0, brickGfI=80.0, brickGfII=800.0, brickFc=19.72e6, residual=0.2),
-        'sources': {
-                'brick 250x120x55 mm, 31 courses, H = 2.0 m, t = 0.38 m (one and a half bricks)': 'MagenesCalvi1992 via the EPFL database',
-                'length 1.55 m (tested: 1.5 m)': 'the nearest length of English bond with whole 250 mm bricks and 10 mm joints (1.29 or 1.55 m); '
-                'the database gives no bond, English bond is the usual bond of a one-and-a-half-brick wall',
-                'height 2.005 m': '31 courses of 55 mm bricks and 10 mm joints (tested: 2.0 m)',
-                'joint thickness 10 mm': 'assumed: the usual thickness of a bed joint (not in the database)',
-                'E = 2991 MPa for brick and mortar': 'the masonry modulus of the database; brick and mortar moduli are not given, so both get the '
-                'masonry modulus and the model wall has exactly the measured E',
-                'nu = 0.25 for brick and mortar': 'EN1996-1-1 (Eurocode 6) 3.7.3: G = 0.4 E, i.e. nu = 0.25',
-                'joint cohesion 0.21 MPa, friction 0.81': 'f_v0 and mu of the database (MagenesCalvi1992)',
-                'head joints without bond (--head-joints unbonded)': 'MannMuller1982: head joints are not compressed while their mortar '
-                'hardens and shrink away from the bricks, so they carry no bond; they keep compression and friction (contact springs)',
-                'joint tensile bond strength 0.15 MPa': 'c = 1.4 f_t (LourencoRots1997, the TU Eindhoven walls: f_t = 0.25, c = 0.35 MPa), '
-                'so f_t = 0.21/1.4',
-                'brick tensile strength 1.28 MPa': '0.065 f_b, f_b = 19.72 MPa (database): the middle of the range 0.03-0.10 of the ratio of a '
-                "unit's tensile to compressive strength (attributed to Schubert1988 via Lourenco1996, ch. 2; not verified: neither text was available to the project)",
-                'brick cohesion 1.79 MPa, friction 0.81': 'c = 1.4 f_t as for the joints (LourencoRots1997, potential cracks in the units); friction '
-                'of the joints (database)',
-                'density 1800 kg/m3': 'assumed, solid clay brick masonry (self-weight 0.035 MPa at the base)',
-                'softening (--softening on): joint G_f^I 18 J/m2, G_f^II 125 J/m2, cap G_fc 5000 J/m2': 'the interface values of '
-                'LourencoRots1997 for the TU Eindhoven walls (not measured by MagenesCalvi1992); the residual friction equals the initial',
-                'softening: joint cap f_c = 7.92 MPa, residual 0.2 f_c': 'f_m, the masonry compressive strength of the database (the cap of the '
-                'interface model is a masonry strength, LourencoRots1997); residual fraction: the default of RdemJoint, assumed',
-                'softening: brick G_f^I 80 J/m2, G_f^II 800 J/m2, cap f_c = 19.72 MPa': 'G_f^I of the units of LourencoRots1997 (potential cracks '
-                'in the bricks); G_f^II = 10 G_f^I assumed; f_c = f_b of the database',
-                'beams: concrete, E = 30 GPa, nu = 0.2, 2400 kg/m3, 0.2 m tall': 'assumed: reinforced concrete beams (EN1992-1-1 Table 3.1, C25/30: '
-                'E_cm = 31 GPa); they are rigid against the wall (0.2 % of its compliance)',
-        }
-}
-
-#: The walls of Magenes & Calvi (1992): vertical stress and the measured peaks (EPFL-ENAC/eesd-modern-masonry-walls-db,
-#: rows "Magenes & Calvi (1992)"; ../shared/reference/masonry-benchmarks.md). Both ends fixed.
-MAGENES_CALVI_WALLS = {
-        'MI1': dict(sigma0=1.2e6, peak=(269.55e3, 259.63e3), driftAtPeak=(0.1995e-2, 0.1795e-2), failure='shear (diagonal cracking)'),
-        'MI2': dict(sigma0=0.4e6, peak=(241.62e3, 227.21e3), driftAtPeak=(0.4005e-2, 0.3866e-2), failure='shear (diagonal cracking)'),
-}

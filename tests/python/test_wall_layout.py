@@ -102,6 +102,8 @@ PATTERNS = [
         ('stack', TWO, LENGTH, {'stretcher': 22}, {'stretcher': 22}),
         ('running', ONE, LENGTH, {'stretcher': 11}, {'stretcher': 10, 'half bat': 2}),
         ('running', TWO, LENGTH, {'stretcher': 22}, {'stretcher': 20, 'half bat': 4}),
+        # 2.98 = 11.5 modules - t: a half bat at the end of even courses, at the start of odd ones
+        ('running', ONE, 2.98, {'stretcher': 11, 'half bat': 1}, {'stretcher': 11, 'half bat': 1}),
         # one brick: stretchers front and back / header, queen closer, 17 headers, queen closer, header
         ('english', TWO, LENGTH, {'stretcher': 22}, {'header': 21, 'queen closer': 2}),
         # one and a half bricks: front stretchers + header run behind / header run + back stretchers
@@ -485,7 +487,7 @@ class Validation(unittest.TestCase):
 
 	def testLength(self):
 		self.refused('length', 0, -1, float('nan'), float('inf'), '2.85', 2.86, 0.2)
-		with self.assertRaisesRegex(ValueError, r'length = 2\.86: .* nearest valid values: 2\.85 and 3\.11'):
+		with self.assertRaisesRegex(ValueError, r'length = 2\.86: .* nearest valid values: 2\.85 and 2\.98'):
 			wallLayout(2.86, HEIGHT, ONE)
 		with self.assertRaisesRegex(ValueError, r'length = 1\.1: .* nearest valid values: 1\.03 and 1\.16'):
 			wallLayout(1.1, HEIGHT, TWO, bond='flemish')

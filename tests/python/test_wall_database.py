@@ -1,0 +1,148 @@
+"""rdem.wall_database: the validation set's table, the rule set's numbers, the statics check and the failure-mode rule.
+
+The expected numbers are worked by hand from the rules of doc/validation.md ("Fifteen walls") and the table's cells
+(data/walls/walls.csv); every comparison is exact to round-off (1e-12 relative) unless stated.
+"""
+import math
+import os
+import sys
+import unittest
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'py'))
+from rdem import wall_database as db  # noqa: E402
+
+REL = 1e-12
+
+
+class Table(unittest.TestCase):
+
+	def setUp(self):
+		self.rows = db.readTable()
+
+	def testRows(self):
+		self.assertEqual(list(self.rows), ['CS0%d' % i for i in range(1, 9)] + ['MI1'] + ['PUP%d' % i for i in range(1, 7)])
+		mi1 = self.rows['MI1']
+		self.assertEqual((mi1['sigma0 [MPa]'], mi1['Em [MPa]'], mi1['mu [-]'], mi1['Failure mode']), (1.2, 2991.0, 0.81, 'S'))
+		self.assertIsNone(self.rows['CS01']['Em [MPa]'])  # NaN in the table
+		self.assertIsNone(self.rows['CS01']['mu [-]'])
+		self.assertEqual(self.rows['CS01']['Void Ratio [%]'], 0.0)  # 'solid'
+		self.assertEqual(self.rows['PUP1']['Void Ratio [%]'], 0.493)
+
+	def testMissingColumn(self):
+		import tempfile
+		with tempfile.NamedTemporaryFile('w', suffix='.csv', delete=False) as f:
+			f.write('Specimen name,H [m]\nX,2\n')
+		try:
+			with self.assertRaisesRegex(ValueError, 'columns missing: .*L \\[m\\]'):
+				db.readTable(f.name)
+		finally:
+			os.unlink(f.name)
+
+
+class Rules(unittest.TestCase):
+
+	def setUp(self):
+		self.rows = db.readTable()
+
+	def testGeometryMI1(self):
+		# English bond, 10 mm joints: 6 stretchers (6*0.25 + 5*0.01 = 1.55 m), 31 courses (31*0.065 - 0.01 = 2.005 m),
+		# l + t + w = 0.38 m: the configuration doc/validation.md validated
+		g = db.geometry(self.rows['MI1'])
+		self.assertEqual((g['bond'], g['joint'], g['blocksPerBrick'], g['courses']), ('english', 0.01, (2, 1, 1), 31))
+		for key, value in (('length', 1.55), ('height', 2.005), ('thickness', 0.38)):
+			self.assertAlmostEqual(g[key], value, delta=1e-12)
+		self.assertAlmostEqual(g['deviation']['length'], 1.55 / 1.5 - 1, delta=1e-12)
+
+	def testGeometryOneWythe(self):
+		# CS: 248 mm units, 2 mm thin-layer joints: 10 half modules of 0.125 m less a joint = 1.248 m, 10 courses of
+		# 0.25 m less a joint = 2.498 m; units 248 mm tall: 2 blocks up (round(2*248/248)).
+		g = db.geometry(self.rows['CS01'])
+		self.assertEqual((g['bond'], g['joint'], g['blocksPerBrick']), ('running', 0.002, (2, 1, 2)))
+		self.assertAlmostEqual(g['length'], 1.248, delta=1e-12)
+		self.assertAlmostEqual(g['height'], 2.498, delta=1e-12)
+		# PUP: 300 mm units, 10 mm joints: 13 half modules (6 1/2 units) = 13*0.155 - 0.01 = 2.005 m; the units 195 mm
+		# wide are taken as the wall's 0.2 m; 11 courses of 0.2 m less a joint = 2.19 m (tested 2.25 m: -2.7 %)
+		g = db.geometry(self.rows['PUP1'])
+		self.assertEqual((g['bond'], g['brick'], g['blocksPerBrick']), ('running', (0.3, 0.2, 0.19), (2, 1, 1)))
+		self.assertAlmostEqual(g['length'], 2.005, delta=1e-12)
+		self.assertAlmostEqual(g['height'], 2.19, delta=1e-12)
+		self.assertAlmostEqual(g['deviation']['height'], 2.19 / 2.25 - 1, delta=1e-12)
+
+	def testMaterials(self):
+		m = db.materials(self.rows['MI1'])
+		b, j = m['brick'], m['joint']
+		self.assertEqual((b['young'], j['young'], b['poisson'], b['density']), (2991e6, 2991e6, 0.25, 1800.0))
+		self.assertAlmostEqual(b['tensileStrength'] / (0.065 * 19.72e6), 1, delta=REL)
+		self.assertAlmostEqual(b['cohesion'] / (1.4 * 0.065 * 19.72e6), 1, delta=REL)
+		self.assertAlmostEqual(j['tensileStrength'] / 0.15e6, 1, delta=REL)  # 0.21/1.4
+		self.assertEqual((j['cohesion'], j['mu'], j['fc'], b['fc'], j['headJoints']), (0.21e6, 0.81, 7.92e6, 19.72e6, 'unbonded'))
+		self.assertEqual((j['GfI'], j['GfII'], b['GfI'], b['GfII'], j['Gfc'], j['residual']), (18.0, 125.0, 80.0, 800.0, 5000.0, 0.2))
+		# CS: no E_m, no mu in the table: E = 1000 f_m / 1.2, mu = 0.75; thin-layer filled head joints bonded (CS05 only)
+		m = db.materials(self.rows['CS01'])
+		self.assertAlmostEqual(m['brick']['young'] / (1000 / 1.2 * 19.39744268e6), 1, delta=REL)
+		self.assertEqual(m['joint']['mu'], 0.75)
+		self.assertEqual(m['joint']['headJoints'], 'unbonded')
+		self.assertEqual(db.materials(self.rows['CS05'])['joint']['headJoints'], 'bonded')
+		# hollow clay, 49.3 % voids: an equivalent solid of 0.507 times the density
+		self.assertAlmostEqual(db.materials(self.rows['PUP1'])['brick']['density'], 1800 * 0.507, delta=1e-9)
+
+	def testTest(self):
+		self.assertEqual(db.model(self.rows['MI1'])['test'], dict(sigma0=1.2e6, shearSpan=0.5, boundary='fixed'))
+		self.assertEqual(db.model(self.rows['CS06'])['test'], dict(sigma0=1e6, shearSpan=1.0, boundary='cantilever'))
+		self.assertEqual(db.model(self.rows['PUP3'])['test']['shearSpan'], 1.5)
+		m = db.model(self.rows['MI1'])['measured']
+		self.assertEqual(m['mean'], (269.55e3 + 259.63e3) / 2)
+		self.assertEqual((m['failure'], m['failureClass']), ('S', 'S'))
+		self.assertEqual(db.measured(self.rows['PUP4'])['failureClass'], 'H')
+
+
+class Statics(unittest.TestCase):
+
+	def testBound(self):
+		# worked by hand: N = 100, W = 10, L = 2, H = 1
+		self.assertAlmostEqual(db.rockingBound(100, 10, 2, 1, 0.5), 210 * 2 / 2, delta=1e-12)  # (2N + W) L / (2H)
+		self.assertAlmostEqual(db.rockingBound(100, 10, 2, 1, 1.0), 110 * 2 / 2, delta=1e-12)  # (N + W) L / (2H)
+		self.assertAlmostEqual(db.rockingBound(100, 10, 2, 1, 1.5), 110 * 2 / 3, delta=1e-12)  # base governs: 73.3 < 200
+		self.assertAlmostEqual(db.rockingBound(100, 10, 2, 1, 0.75), 110 * 2 / 1.5, delta=1e-12)  # 146.7 < 400
+		self.assertAlmostEqual(db.rockingBound(100, 10, 2, 1, 0.4), 100 * 2 / 1.2, delta=1e-12)  # the top governs: 166.7 < 275
+		for name, args in (('N', (-1, 0, 1, 1, 1)), ('W', (1, float('nan'), 1, 1, 1)), ('length', (1, 0, 0, 1, 1)), ('shearSpan', (1, 0, 1, 1, 0))):
+			with self.assertRaisesRegex(ValueError, '^' + name):
+				db.rockingBound(*args)
+
+	def testEveryWallPasses(self):
+		for name, row in db.readTable().items():
+			check = db.staticsCheck(row)
+			self.assertTrue(check['passes'], '%s: %s' % (name, check))
+			self.assertLess(check['ratio'], 0.95)
+
+	def testMI2Fails(self):
+		# MI2 of the database: MI1's wall at sigma0 = 0.4 MPa, peaks 241.62 / 227.21 kN. doc/validation.md: bound
+		# 178.5 kN (N = 0.4 MPa * 1.5 * 0.38 = 228 kN, W = 1800 * 9.81 * 1.5 * 2.0 * 0.38 = 20.13 kN), ratio 1.31,
+		# sigma0 needed 0.53 MPa.
+		row = dict(db.readTable()['MI1'])
+		row.update({'sigma0 [MPa]': 0.4, 'Vmax+ [kN]': 241.62, 'Vmax- [kN]': 227.21})
+		check = db.staticsCheck(row)
+		W = 1800 * 9.81 * 1.5 * 2.0 * 0.38
+		self.assertAlmostEqual(check['bound'], (2 * 228e3 + W) * 1.5 / 4, delta=1e-6)
+		self.assertAlmostEqual(check['bound'], 178.5e3, delta=0.05e3)
+		self.assertFalse(check['passes'])
+		self.assertAlmostEqual(check['ratio'], 234.415e3 / check['bound'], delta=1e-12)
+		# the bound at the sigma0 needed equals the measured mean
+		self.assertAlmostEqual(db.rockingBound(check['sigma0Needed'] * 0.57, W, 1.5, 2.0, 0.5), 234.415e3, delta=1e-6)
+		self.assertAlmostEqual(check['sigma0Needed'] * 1e-6, 0.53, delta=0.005)
+
+
+class FailureMode(unittest.TestCase):
+
+	def testClasses(self):
+		self.assertEqual(db.failureClass(0.0, 10, 5, 1.0), 'S')  # half of the core's courses cracked
+		self.assertEqual(db.failureClass(0.0, 10, 4, 1.0), '-')
+		self.assertEqual(db.failureClass(0.5, 10, 4, 1.0), 'F')  # half of a bed joint opened
+		self.assertEqual(db.failureClass(0.4999, 10, 4, 1.0), '-')
+		self.assertEqual(db.failureClass(0.5, 10, 10, 1.0), 'H')
+		with self.assertRaisesRegex(ValueError, '^failureClass'):
+			db.failureClass(0.0, 0, 0, 1.0)
+
+
+if __name__ == '__main__':
+	unittest.main()
