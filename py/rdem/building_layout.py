@@ -316,10 +316,9 @@ def _junctions(walls, s):
 		w.v0 = w.start[1 - k] - w.thickness / 2
 		n = (w.length + s.t) / q
 		if abs(n - round(n)) > 1e-6 or round(n) < 4:
-			m = max(4, int(round(n)))
+			below, above = max(4, int(math.floor(n))), max(4, int(math.ceil(n)))
 			raise ValueError('plan: wall %s is %s m long from end to end (junction squares included); a wall must be n*(l+t)/4 - t long, n >= 4 '
-			                 '(nearest: %s or %s m): move its end points by %s m' % (w.name, _fmt(w.length), _fmt((m - 1) * q - s.t), _fmt((m + 1) * q - s.t),
-			                                                                         _fmt(q)))
+			                 '(nearest: %s or %s m)' % (w.name, _fmt(w.length), _fmt(below * q - s.t), _fmt(above * q - s.t)))
 	for kind, i, j, p in junctions:
 		if kind == 'T':
 			stem, bar = walls[i], walls[j]
@@ -395,12 +394,19 @@ def _boundary(w, walls, k, row, atStart, tol):
 	return 2
 
 
-def _fill(a, b, phase, period, header, where):
+def _fill(a, b, phase, period, header, where, avoid=(), shift=1):
 	"""The pieces ``(q0, q1, name)`` of one row (or header row pair) from quarter ``a`` to ``b``: joints on the grid
 	``phase + n*period`` and at both ends. Stretcher rows: 4 quarters a stretcher, 3 a three-quarter bat, 2 a half bat; a
 	piece one quarter long is merged with its neighbour (1 + 4 = half bat at the end + three-quarter bat, which keeps a
-	quarter lap with the courses above and below). Header rows: 2 a header, 1 a queen closer."""
+	quarter lap with the courses above and below). Header rows: 2 a header, 1 a queen closer. A joint that would fall on
+	one of the quarters ``avoid`` (where the courses above and below have the face of a wall running through this one) is
+	replaced by two, ``shift`` quarters to either side."""
 	cuts = [a] + [g for g in range(a + 1, b) if (g - phase) % period == 0] + [b]
+	for e in avoid:  # a joint where the courses above and below have the side of a wall running through: move it aside
+		if e in cuts[1:-1]:
+			i = cuts.index(e)
+			if cuts[i - 1] + 2 <= e - shift and e + shift + 2 <= cuts[i + 1]:
+				cuts[i:i + 1] = [e - shift, e + shift]
 	pieces = [[cuts[i], cuts[i + 1]] for i in range(len(cuts) - 1)]
 	names = _HEADER_PIECES if header else _STRETCHER_PIECES
 	if not header:
@@ -428,6 +434,8 @@ def _courseUnits(w, walls, storey, k, s):
 	else:
 		groups = [(range(0, 2), 1, 2, True)]
 	gaps = [] if own else [(p, p + 2 * walls[j].rows) for j, p in w.stems]
+	avoid = [e for j, p in w.stems for e in (p, p + 2 * walls[j].rows)] if own else []
+	shift = 1 if w.bond == 'running' else 2
 	z0 = storey.z0 + (k - storey.firstCourse) * s.C
 	units = []
 	for rows, phase, period, header in groups:
@@ -440,7 +448,7 @@ def _courseUnits(w, walls, storey, k, s):
 			lo = g1
 		intervals.append((lo, b.pop()))
 		for i0, i1 in intervals:
-			for q0, q1, piece in _fill(i0, i1, phase, period, header, 'wall %s, course %d' % (w.name, k)):
+			for q0, q1, piece in _fill(i0, i1, phase, period, header, 'wall %s, course %d' % (w.name, k), avoid, shift):
 				nlo, nhi = (q0 * q, rows[0] * W, z0), (q1 * q - t, rows[-1] * W + W - t, z0 + s.h)
 				glo, ghi = w.toGlobal(nlo, nhi)
 				local = 'header' if header else 'stretcher'
@@ -626,7 +634,7 @@ def buildingLayout(plan,
                    floors='slab',
                    slabThickness=0.15,
                    slabBlock=0.6,
-                   joistSection=(0.1, 0.185),
+                   joistSection=(0.1, 0.195),
                    joistSpacing=0.6,
                    joistDirection='auto',
                    joistBearing=None,
@@ -650,7 +658,7 @@ def buildingLayout(plan,
 	:param blocksPerBrick: as :func:`rdem.wall_layout.wallLayout`.
 	:param openings: ``(wall, storey, u0, z0, width, height)``: wall name or index, storey index, the opening from $u_0$
 	    along the wall (from its outer end at ``start``) and $z_0$ above the storey's floor [m]. Each gets a lintel
-	    ``lintelHeight`` high (default two courses, $2h + t$) bearing ``lintelBearing`` (default $(l + t)/2$) on each jamb.
+	    ``lintelHeight`` high (default two courses, $2(h + t)$) bearing ``lintelBearing`` (default $(l + t)/2$) on each jamb.
 	:param floors: ``'slab'`` (an RC slab over the whole plan, ``slabThickness`` thick, pieces of at most ``slabBlock``
 	    cut at every wall face; the next storey stands on it), ``'joists'`` (timber joists of ``joistSection`` (width,
 	    depth) at about ``joistSpacing`` along ``joistDirection`` (``'x'``, ``'y'`` or ``'auto'``: the shorter span of the
@@ -688,7 +696,7 @@ def buildingLayout(plan,
 	slabThickness = _positive('slabThickness', slabThickness)
 	slabBlock = _positive('slabBlock', slabBlock)
 	baseHeight = _positive('baseHeight', baseHeight)
-	lintelHeight = 2 * h + t if lintelHeight is None else _positive('lintelHeight', lintelHeight)
+	lintelHeight = 2 * s.C if lintelHeight is None else _positive('lintelHeight', lintelHeight)
 	lintelBearing = 2 * s.q if lintelBearing is None else _positive('lintelBearing', lintelBearing)
 	for name, value in (('floorLoad', floorLoad), ('roofLoad', roofLoad)):
 		if not (_finite(value) and value >= 0):
