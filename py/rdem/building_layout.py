@@ -172,6 +172,28 @@ class BuildingLayout:
 		"""Bounding box ``(lo, hi)`` of all blocks [m]."""
 		return (tuple(min(b[0][d] for b in self.blocks) for d in range(3)), tuple(max(b[1][d] for b in self.blocks) for d in range(3)))
 
+	def sketch(self, course, window=None):
+		"""ASCII plan of the bricks and bats of global ``course``, one character per $q/2 = (l + t)/8$ square, $y$ up:
+		each brick drawn with the first letter of its wall's name, upper and lower case alternating from brick to brick
+		along each row of the wall so that the head joints show. ``window``: ``(x0, x1, y0, y1)`` [m] to draw (default: everything)."""
+		(x0, y0, _), (x1, y1, _) = self.bounds()
+		if window is not None:
+			x0, x1, y0, y1 = window
+		step = (self.brick[0] + self.joint) / 8
+		nx, ny = int(round((x1 - x0) / step)), int(round((y1 - y0) / step))
+		rows = [[' '] * nx for _ in range(ny)]
+		key = lambda i: (self.unitWall[i], self.units[i].lo[1 - self.walls[self.unitWall[i]].along], self.units[i].lo[self.walls[self.unitWall[i]].along])
+		units = sorted((i for i in self.unitsOf('masonry') if self.units[i].course == course), key=key)
+		for n, i in enumerate(units):
+			u, letter = self.units[i], self.walls[self.unitWall[i]].name[0]
+			letter = letter.upper() if n % 2 == 0 else letter.lower()
+			for ix in range(nx):
+				for iy in range(ny):
+					x, y = x0 + (ix + 0.5) * step, y0 + (iy + 0.5) * step
+					if u.lo[0] < x < u.hi[0] and u.lo[1] < y < u.hi[1]:
+						rows[iy][ix] = letter
+		return '\n'.join(''.join(r).rstrip() for r in reversed(rows))
+
 	def __repr__(self):
 		c = self.counts()
 		return 'BuildingLayout(%d walls, %d storeys: %d units, %d blocks, %d pairs; %d bricks and bats, %d lintels, %d slab pieces, %d joists)' % (
