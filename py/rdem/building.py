@@ -111,10 +111,10 @@ def building(plan,
 	:param brickMaterial: :yref:`RdemMat` of the bricks. :param jointMaterial: :yref:`RdemJoint` of the mortar (copied
 	    per kind of joint, :attr:`Building.jointOf`).
 	:param slabMaterial, lintelMaterial: :yref:`RdemMat` of the RC slabs and lintels; default reinforced concrete kept
-	    elastic: $E$ = 30 GPa, $\\nu$ = 0.2, 2500 kg/m³, unbreakable (EN 1992-1-1 Table 3.1, C30/37: $E_{cm}$ = 33 GPa,
-	    cracked less; 2500 kg/m³ with its steel).
-	:param timberMaterial: :yref:`RdemMat` of the joists; default softwood C24 (EN 338: $E_{0,mean}$ = 11 GPa, 420 kg/m³
-	    mean density; $\\nu$ = 0.3), unbreakable, friction coefficient 0.5 against the masonry.
+	    elastic: $E$ = 30 GPa, $\\nu$ = 0.2, 2500 kg/m³, unbreakable ([EN1992-1-1]_ Table 3.1: C30/37 has $E_{cm}$ = 33 GPa,
+	    taken lower for cracking; [EN1991-1-1]_ Table A.1: 25 kN/m³ for reinforced concrete).
+	:param timberMaterial: :yref:`RdemMat` of the joists; default softwood C24 ([EN338]_: $E_{0,mean}$ = 11 GPa, 420 kg/m³
+	    mean density; $\\nu$ = 0.3, assumed), unbreakable, friction coefficient 0.5 against the masonry (assumed).
 	:param beamMaterial: of the base beam; default the brick's elastic constants and density, unbreakable.
 	:param ties: bond the joists to their seats with ``tieJoint`` (an :yref:`RdemJoint`; default the mortar joint's
 	    properties with zero thickness): steel ties or anchored joists; ``False``: they rest by friction only.
