@@ -23,7 +23,7 @@ import math
 import numbers
 from collections import Counter
 
-from .wall_layout import Unit, _cutByBoxes, _blockCounts, _subdivide, _snap, _touching, _finite, _fmt, _modular, _positive
+from .wall_layout import Unit, _cutByBoxes, _blockCounts, _subdivide, _snap, _touching, _cuts, _finite, _fmt, _modular, _positive
 
 BONDS = ('running', 'english')
 FLOORS = ('slab', 'joists', 'none')
@@ -516,14 +516,6 @@ def _grow(units, t, tol):
 			lo[d] -= grow.get((i, d, 0), 0.0)
 			hi[d] += grow.get((i, d, 1), 0.0)
 		u.lo, u.hi = tuple(lo), tuple(hi)
-
-
-def _cuts(values, tol):
-	out = []
-	for v in sorted(values):
-		if not out or v - out[-1] > tol:
-			out.append(v)
-	return out
 
 
 def _planGrid(walls, size, tol):
