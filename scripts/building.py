@@ -37,7 +37,7 @@ import os
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+HERE = os.path.dirname(os.path.abspath(sys.argv[0]))  # this script's folder (under YADE, __file__ names YADE's launcher)
 parser = argparse.ArgumentParser(prog='yade scripts/building.py', description=__doc__.split('\n\n')[0])
 g = parser.add_argument_group('ground motion')
 g.add_argument('--record', default=os.path.join(HERE, '..', 'data', 'records', 'elcentro-1940-ns.txt'),
@@ -47,8 +47,9 @@ g.add_argument('--record-y', default=None, help='record along y (same formats; d
 g.add_argument('--record-z', default=None, help='record along z, vertical (default none)')
 g.add_argument('--pga', type=float, default=0.5, help='peak ground acceleration along x after scaling [g] (default 0.5); the other components keep '
                'their ratio to it')
-g.add_argument('--start', type=float, default=1.5, help='time of the record where the run starts [s] (default 1.5, before the peak at 2.02 s)')
-g.add_argument('--duration', type=float, default=1.5, help='simulated time of ground motion [s] (default 1.5)')
+g.add_argument('--start', type=float, default=1.9, help='time of the record where the run starts [s]: the first sign change of the acceleration from '
+               'there (default 1.9, before the peak at 2.02 s)')
+g.add_argument('--duration', type=float, default=0.25, help='simulated time of ground motion [s] (default 0.25)')
 h = parser.add_argument_group('house')
 h.add_argument('--big', action='store_true', help='the two-storey house of 18 843 blocks instead of the small one')
 h.add_argument('--bond-ft', type=float, default=0.2, help='tensile bond strength of the joints [MPa] (default 0.2)')
@@ -92,7 +93,14 @@ try:
 		if path:
 			records[axis] = readRecord(path)
 	factor = cli.pga * G / records['x'].pga
-	records = {a: rec.baselineCorrected(2).scaled(factor).cut(cli.start, cli.start + cli.duration).startingAt(0.0) for a, rec in records.items()}
+	records = {a: rec.baselineCorrected(2).scaled(factor) for a, rec in records.items()}
+	# start where the x acceleration changes sign at or after --start, so that the base does not jerk at the first step
+	ax, tx = records['x'].acc, records['x'].times()
+	k0 = next((k for k in range(len(ax) - 1) if tx[k] >= cli.start - 1e-9 and ax[k] * ax[k + 1] <= 0), None)
+	if k0 is None:
+		raise ValueError('--start = %g: no sign change of the acceleration after it' % cli.start)
+	start = float(tx[k0])
+	records = {a: rec.cut(start, start + cli.duration + rec.dt).startingAt(0.0) for a, rec in records.items()}
 except (ValueError, FileNotFoundError) as e:
 	sys.exit('building: %s' % e)
 motion = gm.GroundMotion(**records)
@@ -138,17 +146,19 @@ print('building: %r, built in %.1f s; settling %.3g s under gravity' % (b, build
 newton = rdem.newtonIntegrator()
 while O.time < cli.settle:
 	rdem.run(100)
-settleReaction = sum(O.forces.f(i)[2] for i in b.base) / b.weight()
+settleReaction = -sum(O.forces.f(i)[2] for i in b.base) / b.weight()  # the base's upward reaction over the weight
 newton.damping = 0.0
 shaker = rdem.earthquake.shaker(motion, ids=b.base)
 shaker.times = [x + O.time for x in shaker.times]  # the motion starts now
+settleBreaks = sum(rdem.breakCounts())
 O.trackEnergy = True
-t0, step0 = O.time, O.iter
 snapshot = rdem.bondSnapshot()
+rdem.run(1)  # the energies exist from here on (the springs' elastic energy, a current value, appears at once)
+t0, step0 = O.time, O.iter
 ref = {i: Vector3(O.bodies[i].state.pos) for i in b.ids}
 base0 = Vector3(O.bodies[b.base[0]].state.pos)
-print('building: settled (base reaction %.5f of the weight); %s, PGA %.3g g along x%s, %.3g s from t = %.3g s of the record; step %.3g s' %
-      (settleReaction, records['x'].name, cli.pga, ''.join(', %s %.3g g' % (a, r.pga / G) for a, r in records.items() if a != 'x'), cli.duration, cli.start,
+print('building: settled (base reaction %.5f of the weight, %d springs broken); %s, PGA %.3g g along x%s, %.3g s from t = %.3g s of the record; step %.3g s' %
+      (settleReaction, settleBreaks, records['x'].name, cli.pga, ''.join(', %s %.3g g' % (a, r.pga / G) for a, r in records.items() if a != 'x'), cli.duration, start,
        O.dt), flush=True)
 
 # 3. What is watched: per wall and storey, the top course's middle third; per junction, the pairs across it -----------------
@@ -239,6 +249,11 @@ plot.saveDataTxt(os.path.join(cli.out, 'history.txt'))
 broken = rdem.brokenSegments(snapshot)
 brokenPairs = {(s['id1'], s['id2']) for s in broken} | {(s['id2'], s['id1']) for s in broken}
 wallOf = {bid: lay.unitWall[lay.blockUnit[k]] for k, bid in enumerate(b.ids)}
+kindOf = {p: kind for kind, pairs in b.joints.items() for p in pairs}
+brokenByKind = {}
+for s in broken:
+	kind = kindOf.get((s['id1'], s['id2']), kindOf.get((s['id2'], s['id1']), 'contact'))
+	brokenByKind[kind] = brokenByKind.get(kind, 0) + 1
 walls = {}
 for w in lay.walls:
 	own = [(i, j) for kind in ('bed', 'head', 'collar') for i, j in b.joints.get(kind, []) if wallOf[i] == w.index and wallOf[j] == w.index]
@@ -258,7 +273,8 @@ inputMax = max(max(abs(x) for x in history['input']), 1e-30)
 steps = O.iter - step0
 results = dict(input=vars(cli), building=repr(b), blocks=len(b.ids), bonds=b.nBonds, layout=lay.counts(), weight=b.weight(), settleReaction=settleReaction,
                records={a: dict(name=r.name, pga=r.pga, dt=r.dt, duration=r.duration) for a, r in records.items()}, timeStep=O.dt, steps=steps,
-               brokenSprings=history['breaks'][-1], walls=walls, junctions=corners,
+               brokenSprings=history['breaks'][-1], settleBreaks=settleBreaks, brokenSpringsByJoint=brokenByKind, motionStart=start, walls=walls,
+               junctions=corners,
                energy=dict(inputMax=inputMax, finalError=(E[-1] - E[0]) / inputMax, maxRise=max(E[k] - min(E[:k + 1]) for k in range(len(E))) / inputMax),
                buildSeconds=buildSeconds, runSeconds=runSeconds, threads=getattr(O, 'numThreads', None), microsecondsPerBlockStep=1e6 * runSeconds / max(1, steps * len(b.ids)),
                wallSecondsPerSimulatedSecond=runSeconds / (O.time - t0))

@@ -128,7 +128,7 @@ def building(plan,
 	brick = _material(brickMaterial, 'brickMaterial')
 	if len(origin) != 3 or not all(math.isfinite(c) for c in origin):
 		raise ValueError('origin = %r: must be 3 finite numbers [m]' % (origin, ))
-	if ties not in (True, False):
+	if not isinstance(ties, bool):
 		raise ValueError('ties = %r: must be True or False' % (ties, ))
 	if tieJoint is not None and not isinstance(tieJoint, RdemJoint):
 		raise ValueError('tieJoint = %r: must be an RdemJoint or None' % (tieJoint, ))
