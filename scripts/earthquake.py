@@ -45,12 +45,13 @@ g.add_argument('--direction', choices=['x', 'y'], default='y', help='x: in the w
 g.add_argument('--mode', choices=['prescribed', 'inertial'], default='prescribed', help='base motion or inertial load (default prescribed)')
 w = parser.add_argument_group('structure (m)')
 w.add_argument('--structure', choices=['wall', 'building'], default='wall',
-               help='a free-standing wall on a base beam, or a one-storey box of four walls with a door and a window (default wall)')
+               help='a free-standing wall on a base beam, or a one-storey box of four walls with a door and a window (default wall; '
+               'scripts/building.py shakes whole buildings)')
 w.add_argument('--length', type=float, default=1.03, help='length of the wall, or of the front and back walls (default 1.03)')
-w.add_argument('--width', type=float, default=0.75, help='building: depth of the plan, side walls included (default 0.75)')
+w.add_argument('--width', type=float, default=0.77, help='building: depth of the plan, side walls included (default 0.77)')
 w.add_argument('--height', type=float, default=1.225, help='height (default 1.225: 19 courses)')
 w.add_argument('--thickness', type=float, default=0.12, help='thickness (default 0.12)')
-w.add_argument('--bond', choices=['stack', 'running', 'english', 'flemish'], default='running', help='bond pattern (default running)')
+w.add_argument('--bond', choices=['stack', 'running', 'english', 'flemish'], default='running', help='bond pattern (default running; a building: running or english)')
 w.add_argument('--blocks', type=lambda s: [int(x) for x in s.split(',')], default=[1, 1, 1], help='blocks per brick (default 1,1,1)')
 w.add_argument('--bond-ft', type=float, default=0.2, help='tensile bond strength of the joints [MPa] (default 0.2)')
 w.add_argument('--bond-c', type=float, default=0.3, help='cohesion of the joints [MPa] (default 0.3)')
@@ -110,17 +111,18 @@ def makeWall():
 
 
 def makeBuilding():
-	"""Four walls with a door (front) and a window (back) between a base and a roof slab; springs break on their own
-	stresses (no Poisson cells: the rocking and overturning of walls do not depend on them). Returns (the building, its
-	block ids, the base slab's, the walls' top courses')."""
+	"""Four walls bonded at the corners (rdem.masonry.building) with a door (front) and a window (back) on a base beam
+	under a roof slab; springs break on their own stresses (no Poisson cells: the rocking and overturning of walls do not
+	depend on them). Returns (the building, its block ids, the base beam's, the walls' top courses')."""
 	O.engines = rdem.engines(poisson=None, contactSamples=1, gravity=(0, 0, -9.81), damping=0.5)
-	L, C = 0.26, 0.065  # modules of the default brick and joint along a wall and up it [m]
-	courses = int(round((cli.height + 0.01) / C))
-	door = (L - 0.005, 0.0, 2 * L, (2 * courses // 3) * C - 0.005)
-	window = (L - 0.005, (courses // 3) * C - 0.005, 2 * L, (courses // 3) * C)
-	b = rdem.earthquake.building(cli.length, cli.width, cli.height, brick, joint, thickness=cli.thickness, bond=cli.bond,
-	                             openings={'front': [door], 'back': [window]})
-	return b, b.ids, b.base, b.top
+	q, C, t = 0.065, 0.065, 0.01  # quarter module (l + t)/4, course h + t and joint of the default brick [m]
+	courses = int(round((cli.height + t) / C))
+	door = ('front', 0, 4 * q - t / 2, 0.0, 8 * q, (2 * courses // 3) * C - t / 2)
+	window = ('back', 0, 4 * q - t / 2, (courses // 3) * C - t / 2, 8 * q, (courses // 3) * C)
+	b = rdem.masonry.building((cli.length, cli.width), [cli.height], brick, joint, thickness=cli.thickness, bond=cli.bond, openings=[door, window],
+	                          floors='slab', baseHeight=0.1)
+	top = [i for name in b.walls for i in b.of(name) if O.bodies[i].state.pos[2] > cli.height - C]
+	return b, b.ids, b.base, top
 
 
 try:

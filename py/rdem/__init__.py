@@ -15,10 +15,13 @@ Modules: :mod:`rdem.build` (blocks, bonds, engine lists), :mod:`rdem.measure` (s
 :mod:`rdem.export` (ParaView files of cracks and Poisson elements), :mod:`rdem.scenes` (the paper's compression test),
 :mod:`rdem.batch` (cases of a study in fresh YADE processes), :mod:`rdem.wall_layout` (masonry wall geometry: bricks,
 mortar and their touching pairs as plain boxes; pure Python: without YADE, ``import rdem`` gives only this module),
-:mod:`rdem.ground_motion` (earthquake records, their velocity and displacement, baseline correction, synthetic pulses;
-numpy only; without YADE ``import rdem`` gives it and rdem.wall_layout).
+:mod:`rdem.building_layout` (buildings: walls bonded at corners and T-junctions, storeys, openings, floors; pure Python),
+:mod:`rdem.building` (``rdem.masonry.building``: a building as a scene), :mod:`rdem.ground_motion` (earthquake records,
+their velocity and displacement, baseline correction, synthetic pulses; numpy only; without YADE ``import rdem`` gives
+it, rdem.wall_layout and rdem.building_layout).
 """
 from .wall_layout import wallLayout, WallLayout
+from .building_layout import buildingLayout, BuildingLayout
 from . import ground_motion
 
 try:
@@ -34,7 +37,7 @@ if _yade is not None:
 	from .measure import segmentTable, bondSnapshot, brokenSegments, breakCounts, apparentPoisson
 	from .export import CrackExport
 
-__all__ = ['wallLayout', 'WallLayout', 'ground_motion'] + ([
+__all__ = ['wallLayout', 'WallLayout', 'buildingLayout', 'BuildingLayout', 'ground_motion'] + ([
         'block', 'blockGrid', 'bond', 'bondPairs', 'masonry', 'earthquake', 'engines', 'run', 'poissonEngine', 'newtonIntegrator', 'timeStepper', 'law', 'geomFunctor', 'contactGate', 'segmentTable', 'bondSnapshot', 'brokenSegments', 'breakCounts',
         'apparentPoisson', 'CrackExport'
 ] if _yade is not None else [])

@@ -534,6 +534,36 @@ def readColumns(path, units='g', timeColumn=0, accColumn=1, comments='#', delimi
 	return Record(dt, np.interp(tn, t, a), name=os.path.basename(where) if name is None else name, units=units, t0=t[0])
 
 
+def readValues(path, dt, units='g', comments='#', name=None):
+	"""Read a record from a text file of accelerations only, several per line (``8F10.5``, as the El Centro 1940 file
+	in data/records/), at the constant step ``dt``.
+
+	Lines are cut at ``comments`` (a string, or ``None``); the numbers of all lines, in order, are the samples.
+
+	:param path: the file.
+	:param dt: the time step [s] > 0 (such files state it in their header, which this reader does not parse).
+	:param units: of the values: ``'g'`` (:data:`G` = 9.80665 m/s²), ``'cm/s^2'`` or ``'m/s^2'``.
+	:param name: the record's name; default the file's first comment line, else the file's name.
+	:return: a :class:`Record` in m/s², ``t0 = 0``."""
+	dt = _positive('dt', dt, '[s]')
+	units = _unitName('units', units)
+	if comments is not None and not (isinstance(comments, str) and comments):
+		raise ValueError('comments = %r: must be a non-empty string or None' % (comments, ))
+	if name is not None and not isinstance(name, str):
+		raise ValueError('name = %r: must be a string or None' % (name, ))
+	lines = _readLines(path)
+	where = os.fspath(path)
+	values, title = [], None
+	for k, line in enumerate(lines, start=1):
+		if comments is not None and comments in line:
+			line, note = line.split(comments, 1)
+			title = note.strip() if title is None and note.strip() else title
+		values += _numbers(line, '%s, line %d' % (where, k))
+	if len(values) < 2:
+		raise ValueError('%s: needs at least 2 samples, found %d' % (where, len(values)))
+	return Record(dt, values, name=name if name is not None else (title or os.path.basename(where)), units=units)
+
+
 # ---------------------------------------------------------------------------------------------- synthetic inputs
 def _nodes(length, dt, what):
 	"""Times $0, \\Delta t, \\dots$ up to ``length`` (the last multiple of dt not after it), at least 2 of them."""

@@ -202,3 +202,6 @@ def wall(length,
 		byKind.setdefault(kind, []).append((ids[i], ids[j]))
 	nBonds = sum(build.bondPairs(pairs, joint=jointOf[kind]) for kind, pairs in sorted(byKind.items()))
 	return Wall(layout, ids, jointOf, nBonds)
+
+
+from .building import building, Building  # noqa: E402  (rdem.masonry.building: a whole building of such walls)

@@ -513,33 +513,45 @@ def _layerMortar(courseUnits, f):
 
 
 def _cutByOpenings(unit, openings, f, dropped):
-	"""The pieces of ``unit`` outside the ``openings`` (through the thickness): a box overlapping an opening is split at
-	the opening's edges into the parts left and right of it (full height) and below and above it. A piece that the cut
-	made shorter than $l/4$ along $x$ (or $h/4$ along $z$) goes to ``dropped``. Bricks whose own (nominal) box was cut
-	become bats; a piece's nominal box is the unit's cut the same way."""
+	"""The pieces of ``unit`` outside the ``openings`` (rectangles ``(x0, z0, width, height)`` through the whole thickness):
+	:func:`_cutByBoxes` with boxes spanning the thickness."""
+	return _cutByBoxes(unit, [((x0, -math.inf, z0), (x0 + ow, math.inf, z0 + oh)) for (x0, z0, ow, oh) in openings], f, dropped)
+
+
+def _cutByBoxes(unit, boxes, f, dropped):
+	"""The pieces of ``unit`` outside the ``boxes`` ``(lo, hi)`` [m]: a box overlapping one is split at the box's faces
+	into the parts left and right of it (whole height and depth), below and above it (within its $x$ range) and in front
+	of and behind it (within its $x$ and $z$ ranges). A piece that the cut made shorter than $l/4$ along $x$, $w/4$ along
+	$y$ or $h/4$ along $z$ goes to ``dropped``. Bricks whose own (nominal) box was cut become bats; a piece's nominal box
+	is the unit's cut the same way. ``f`` gives $l, w, h$ and the tolerance (a :class:`_Frame`)."""
 	tol, pieces = f.tol, [(unit.lo, unit.hi)]
-	for (x0, z0, ow, oh) in openings:
-		x1, z1, nxt = x0 + ow, z0 + oh, []
+	for (blo, bhi) in boxes:
+		nxt = []
 		for lo, hi in pieces:
-			mx0, mx1 = max(lo[0], x0), min(hi[0], x1)
-			if mx1 - mx0 <= tol or min(hi[2], z1) - max(lo[2], z0) <= tol:
+			mlo = tuple(max(lo[d], blo[d]) for d in range(3))
+			mhi = tuple(min(hi[d], bhi[d]) for d in range(3))
+			if any(mhi[d] - mlo[d] <= tol for d in range(3)):
 				nxt.append((lo, hi))
 				continue
-			if x0 - lo[0] > tol:
-				nxt.append((lo, (x0, hi[1], hi[2])))
-			if hi[0] - x1 > tol:
-				nxt.append(((x1, lo[1], lo[2]), hi))
-			if z0 - lo[2] > tol:
-				nxt.append(((mx0, lo[1], lo[2]), (mx1, hi[1], z0)))
-			if hi[2] - z1 > tol:
-				nxt.append(((mx0, lo[1], z1), (mx1, hi[1], hi[2])))
+			if blo[0] - lo[0] > tol:
+				nxt.append((lo, (blo[0], hi[1], hi[2])))
+			if hi[0] - bhi[0] > tol:
+				nxt.append(((bhi[0], lo[1], lo[2]), hi))
+			if blo[2] - lo[2] > tol:
+				nxt.append(((mlo[0], lo[1], lo[2]), (mhi[0], hi[1], blo[2])))
+			if hi[2] - bhi[2] > tol:
+				nxt.append(((mlo[0], lo[1], bhi[2]), (mhi[0], hi[1], hi[2])))
+			if blo[1] - lo[1] > tol:
+				nxt.append(((mlo[0], lo[1], mlo[2]), (mhi[0], blo[1], mhi[2])))
+			if hi[1] - bhi[1] > tol:
+				nxt.append(((mlo[0], bhi[1], mlo[2]), (mhi[0], hi[1], mhi[2])))
 		pieces = nxt
 	if pieces == [(unit.lo, unit.hi)]:
 		return [unit]
 	out = []
 	for lo, hi in pieces:
 		short = lambda d, minimum: hi[d] - lo[d] < unit.hi[d] - unit.lo[d] - tol and hi[d] - lo[d] < minimum - tol
-		if short(0, f.l / 4) or short(2, f.h / 4):
+		if short(0, f.l / 4) or short(1, f.w / 4) or short(2, f.h / 4):
 			dropped.append((lo, hi))
 			continue
 		nlo = tuple(max(a, b) for a, b in zip(unit.nominalLo, lo))

@@ -16,7 +16,9 @@ import warnings
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'py'))
-from rdem.ground_motion import G, UNITS, Record, GroundMotion, readAT2, readColumns, sinePulse, rickerWavelet, sweep, constant  # noqa: E402
+from rdem.ground_motion import G, UNITS, Record, GroundMotion, readAT2, readColumns, readValues, sinePulse, rickerWavelet, sweep, constant  # noqa: E402
+
+RECORDS = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'data', 'records')
 
 # 12 samples written as 5 + 5 + 2 per line, as PEER does (values in the file's units)
 AT2_VALUES = ['.1234E-02', '-.5678E-02', '.9012E-01', '-.3456E-01', '.7890E-02', '.2468E-02', '-.1357E-02', '.0000E+00', '.1111E+00', '-.2222E+00',
@@ -182,6 +184,50 @@ class ReadColumns(Files):
 			readColumns(path)
 		with self.assertRaisesRegex(FileNotFoundError, '^path = .*nowhere.txt.: no such file'):
 			readColumns(os.path.join(self.tmp.name, 'nowhere.txt'))
+
+
+class ReadValues(Files):
+
+	def testValuesInG(self):
+		path = self.write('v.txt', '#Some record\n#units g\n   0.10000  -0.20000   0.30000\n  -0.40000\n')
+		r = readValues(path, dt=0.01)
+		self.assertEqual((len(r), r.dt, r.name, r.units), (4, 0.01, 'Some record', 'g'))
+		np.testing.assert_array_equal(r.acc, np.array([0.1, -0.2, 0.3, -0.4]) * G)
+
+	def testArguments(self):
+		path = self.write('v.txt', '1 2 3\n')
+		with self.assertRaisesRegex(ValueError, r'dt = 0: must be a finite number > 0'):
+			readValues(path, dt=0)
+		with self.assertRaisesRegex(ValueError, r"units = 'furlong': must be one of"):
+			readValues(path, dt=0.01, units='furlong')
+		with self.assertRaisesRegex(ValueError, r'line 1: not a number'):
+			readValues(self.write('bad.txt', '1 x 3\n'), dt=0.01)
+		with self.assertRaisesRegex(ValueError, r'needs at least 2 samples, found 1'):
+			readValues(self.write('one.txt', '1\n'), dt=0.01)
+
+
+class ElCentro(unittest.TestCase):
+	"""The record in data/records/ (its README): El Centro 1940, north-south, 0.02 s, in g; its known figures."""
+
+	def testKnownFigures(self):
+		path = os.path.join(RECORDS, 'elcentro-1940-ns.txt')
+		if not os.path.exists(path):
+			self.skipTest('%s is not there: the record is not in the repository, data/records/README.md says where it comes from' % path)
+		r = readValues(path, dt=0.02)
+		self.assertEqual(len(r), 1560)  # 1559 stated in the header, plus a final 0
+		self.assertEqual(r.dt, 0.02)
+		self.assertAlmostEqual(r.duration, 31.18, delta=1e-12)
+		self.assertEqual(r.name, 'Data for El Centro 1940 North South Component (Peknold Version)')
+		self.assertAlmostEqual(r.pga / G, 0.31882, delta=1e-12)  # the published 0.319 g of this component, exactly as written
+		self.assertAlmostEqual(float(r.times()[np.argmax(np.abs(r.acc))]), 2.02, delta=1e-12)
+		# figures of this file, to catch a changed or truncated copy (computed here, not quoted from the literature): 5 % and
+		# 95 % of the Arias intensity (the integral of a^2) are reached at 1.66 s and 25.50 s (the samples where the
+		# cumulative sum first reaches them), the peak velocity of the record corrected with degree 2 is 0.36407 m/s
+		a2 = np.cumsum(r.acc**2)
+		t05, t95 = (float(r.times()[np.searchsorted(a2, f * a2[-1])]) for f in (0.05, 0.95))
+		self.assertAlmostEqual(t05, 1.66, delta=1e-9)
+		self.assertAlmostEqual(t95, 25.50, delta=1e-9)
+		self.assertAlmostEqual(r.baselineCorrected(2).pgv, 0.36407, delta=1e-5)
 
 
 class Integration(unittest.TestCase):
