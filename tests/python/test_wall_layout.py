@@ -537,16 +537,16 @@ class Validation(unittest.TestCase):
 		self.refused('beamBlocks', 0, 1.5, None, True)
 
 
-class Speed(unittest.TestCase):
+class Large(unittest.TestCase):
 
 	def testHundredThousandBlocks(self):
-		"""Running bond, 20.01 x 2.98 m (77 bricks, 46 courses), blocksPerBrick (4, 2, 4): 113 344 blocks."""
+		"""Running bond, 20.01 x 2.98 m (77 bricks, 46 courses), blocksPerBrick (4, 2, 4): 113 344 blocks. Its set-up time is
+		measured by scripts/masonry_cost.py (doc/masonry-cost.md), not asserted here: a test does not assert wall-clock time."""
 		start = time.perf_counter()
 		lay = wallLayout(20.01, 2.98, ONE, bond='running', blocksPerBrick=(4, 2, 4))
 		elapsed = time.perf_counter() - start
 		print('\n    wallLayout: %d blocks, %d pairs in %.2f s' % (len(lay.blocks), len(lay.pairs), elapsed), file=sys.stderr)
 		self.assertEqual(len(lay.blocks), 46 * 77 * 32)
-		self.assertLess(elapsed, 15.0)
 
 
 if __name__ == '__main__':
