@@ -1,0 +1,58 @@
+"""Every public function, class and method of the Python package rdem (py/rdem) has a docstring, since the user
+guide's reference (tools/docs.sh, doc/sphinx/reference/python.rst) is made from them. Read from the sources with ast,
+so that the modules that need YADE are checked too, without it. Public: a name that does not start with _, defined at
+module level or in a public class; a property or method counts once.
+(The plugin's C++ classes and attributes: tests/yade/test_docstrings.py.)"""
+import ast
+import glob
+import os
+import unittest
+
+PY = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'py', 'rdem')
+
+
+def undocumented(path):
+	"The public definitions of one module without a docstring, as 'module.name' or 'module.Class.name'."
+	tree = ast.parse(open(path, encoding='utf-8').read(), path)
+	mod = os.path.basename(path)[:-3]
+	out = [] if ast.get_docstring(tree) else [mod + ' (module)']
+	defs = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
+	for node in tree.body:
+		if not isinstance(node, defs) or node.name.startswith('_'):
+			continue
+		if not ast.get_docstring(node):
+			out.append('%s.%s' % (mod, node.name))
+		if isinstance(node, ast.ClassDef):
+			for sub in node.body:
+				if isinstance(sub, defs) and not sub.name.startswith('_') and not ast.get_docstring(sub):
+					setter = any(isinstance(d, ast.Attribute) and d.attr in ('setter', 'deleter') for d in sub.decorator_list)
+					if not setter:
+						out.append('%s.%s.%s' % (mod, node.name, sub.name))
+	return out
+
+
+class Docstrings(unittest.TestCase):
+
+	def test_modules_found(self):
+		# the check below must not pass because it found nothing
+		self.assertGreaterEqual(len(glob.glob(os.path.join(PY, '*.py'))), 10)
+
+	def test_every_public_definition_has_a_docstring(self):
+		missing = []
+		for path in sorted(glob.glob(os.path.join(PY, '*.py'))):
+			missing += undocumented(path)
+		self.assertEqual(missing, [], 'public definitions of py/rdem without a docstring (the reference is made from them): ' + ', '.join(missing))
+
+	def test_the_check_sees_a_missing_docstring(self):
+		import tempfile
+		with tempfile.NamedTemporaryFile('w', suffix='.py', delete=False) as f:
+			f.write('"""m"""\ndef a():\n\t"""a"""\ndef b():\n\tpass\nclass C:\n\t"""C"""\n\tdef m(self):\n\t\tpass\n\tdef _p(self):\n\t\tpass\n')
+		try:
+			mod = os.path.basename(f.name)[:-3]
+			self.assertEqual(undocumented(f.name), [mod + '.b', mod + '.C.m'])
+		finally:
+			os.unlink(f.name)
+
+
+if __name__ == '__main__':
+	unittest.main()
