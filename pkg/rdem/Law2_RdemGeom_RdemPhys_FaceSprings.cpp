@@ -26,7 +26,7 @@ CREATE_LOGGER(Law2_RdemGeom_RdemPhys_FaceSprings);
 
 /* How to read this file: Law2_RdemGeom_RdemPhys_FaceSprings::go (at the end) sends a bond to bondForces and a contact of
    blocks that are not bonded to sampledContactForces. A bond's segments run one of three laws each step: restoringSpring
-   (an intact segment, eqs. 14-16), softeningSpring (an intact segment of a softening bond, doc/theory.md §2.1) or
+   (an intact segment, eqs. 14-16), softeningSpring (an intact segment of a softening bond, doc/sphinx/rdemTheory.rst §2.1) or
    brokenSegment (its contact spring, eqs. 13, 17). The physics of a point is in pkg/rdem/math/FaceSprings.hpp
    (rdem::restoringStress, rdem::contactSpringForce) and pkg/rdem/math/Softening.hpp (rdem::softeningStep), unit-tested
    there; this file turns
@@ -71,7 +71,7 @@ namespace {
 		}
 	};
 
-	/* Offset correction of a bond's intact shear springs (rdem::offsetSlip, doc/theory.md §5.4): the slip ½(E₁ + E₂)δ
+	/* Offset correction of a bond's intact shear springs (rdem::offsetSlip, doc/sphinx/rdemTheory.rst §5.4): the slip ½(E₁ + E₂)δ
 	   that the blocks' cell strains (RdemState::strain, scaled by RdemState::cellScale, from RdemCellStrainUpdater) give
 	   two blocks whose centroids are offset by δ along the face, in global coordinates and in the tangent plane of n [m]. */
 	Vector3r
@@ -87,7 +87,7 @@ namespace {
 	/* Normal stress the Poisson cells of the two blocks exert on their bonded face, positive in tension [Pa]: the cell
 	   force on the bond, -(c₁S₁ + c₂S₂) on body 2 along n (RdemPoissonEngine), as a traction over the face's weighted
 	   area w_n A, from the cells' elastic stresses of this step (RdemState::cellStress, along each block's axis of the
-	   bond). Added to the springs' σ = k_n u_n it is the total σ_nn of the face (doc/theory.md §5.6). Zero without cells. */
+	   bond). Added to the springs' σ = k_n u_n it is the total σ_nn of the face (doc/sphinx/rdemTheory.rst §5.6). Zero without cells. */
 	Real cellNormalStress(const State& s1, const State& s2, const RdemGeom& g, const RdemPhys& p)
 	{
 		if (p.cellCoef1 == 0 && p.cellCoef2 == 0) return 0;
@@ -196,7 +196,7 @@ namespace {
 		return false;
 	}
 
-	/* The softening spring of intact segment i at (s, r) (rdem::softeningStep, doc/theory.md §2.1), with opening un and
+	/* The softening spring of intact segment i at (s, r) (rdem::softeningStep, doc/sphinx/rdemTheory.rst §2.1), with opening un and
 	   shear elongation ust [m]; its plastic slip is kept in body 1's frame, so that it turns with the pair. Adds its force
 	   -(w_n σ n + w_s τ)A and the dissipation of the step (weighted by w_n for tension and crushing, w_s for shear and
 	   friction, as the forces); returns false if it broke in this step (ξ reached 1): the contact spring takes over its
@@ -280,7 +280,7 @@ namespace {
 	   cells (it inlines alike). */
 	template <bool withCells> void segmentForces(BondStep& b, RdemPhys& p, Energies& e, Breaks& breaks)
 	{
-		const bool perSegment = !p.segStrengthFactor.empty(); // heterogeneous strengths per segment (doc/theory.md §2.2)
+		const bool perSegment = !p.segStrengthFactor.empty(); // heterogeneous strengths per segment (doc/sphinx/rdemTheory.rst §2.2)
 		const auto k          = b.k;
 		forSegments(b.g.samplesPerEdge, [&](size_t i, Real s, Real r) {
 			if (perSegment) b.k = rdem::scaledStrengths(k, p.segStrengthFactor[i]);
@@ -299,7 +299,7 @@ namespace {
 	template <bool withCells> void softeningSegmentForces(BondStep& b, RdemPhys& p, Energies& e, Breaks& breaks)
 	{
 		const auto k          = Ip2_RdemMat_RdemMat_RdemPhys::softeningConstants(p);
-		const bool perSegment = !p.segStrengthFactor.empty(); // heterogeneous strengths per segment (doc/theory.md §2.2)
+		const bool perSegment = !p.segStrengthFactor.empty(); // heterogeneous strengths per segment (doc/sphinx/rdemTheory.rst §2.2)
 		forSegments(b.g.samplesPerEdge, [&](size_t i, Real s, Real r) {
 			const Vector3r d  = b.kin.displacement(s, r);
 			const Real     un = d.dot(b.n);
@@ -361,7 +361,7 @@ namespace {
 		std::vector<Real>     offset;
 	};
 
-	/* Blocks that are not bonded, in contact at the sample points of RdemGeom (doc/theory.md §4): each point's contact
+	/* Blocks that are not bonded, in contact at the sample points of RdemGeom (doc/sphinx/rdemTheory.rst §4): each point's contact
 	   spring (rdem::contactSpringForce), its history kept by sample key for the samples in contact in the last step
 	   (RdemPhys::contactKey, matched by rdem::matchSortedKeys). A point that starts its contact already δ₀ deep
 	   entered through a gap of the sampling (a region of overlap that held no sample point, or a change of the pair's

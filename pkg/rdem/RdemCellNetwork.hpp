@@ -13,7 +13,7 @@
 
 namespace yade {
 
-/* The Poisson cells at run time (doc/theory.md §5.4): their bonds and blocks in compact arrays, built from the scene's
+/* The Poisson cells at run time (doc/sphinx/rdemTheory.rst §5.4): their bonds and blocks in compact arrays, built from the scene's
    interactions and states when they change (a new RdemPoissonEngine.build, bodies or interactions added or removed),
    then two passes per step that follow no pointer to an interaction: updateStrains before the interaction loop (the
    blocks' poses, the bonds' openings and normals, the cells' strains and elastic stresses, written to each block's

@@ -46,7 +46,7 @@ While every body is an :yref:`RdemBlock`, all blocks form **one** assembly conne
 
 Place it just before the collider (``rdem.engines()`` does); ``open=True`` forces the collider on.
 
-*Pairs found apart.* While open, the gate records at every step how far each block has moved since (a bound on the displacement of any of its points, ``rdem::rigidTravel``) and hands the record to :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom`, which then tests a pair of neighbours it found apart again only once the two blocks may have moved enough to touch (:yref:`Ig2_RdemBlock_RdemBlock_RdemGeom::skipApart`, doc/performance.md). A cost of a few tens of instructions per block and step.)""",
+*Pairs found apart.* While open, the gate records at every step how far each block has moved since (a bound on the displacement of any of its points, ``rdem::rigidTravel``) and hands the record to :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom`, which then tests a pair of neighbours it found apart again only once the two blocks may have moved enough to touch (:yref:`Ig2_RdemBlock_RdemBlock_RdemGeom::skipApart`). A cost of a few tens of instructions per block and step.)""",
 		((bool,open,false,,"Whether contact detection is on (latches once true)."))
 		((string,reason,"",Attr::readonly,"Why the gate opened (empty while closed)."))
 		((long,nBodies,-1,(Attr::readonly|Attr::noSave),"Number of bodies at the last topology check (-1: none yet)."))

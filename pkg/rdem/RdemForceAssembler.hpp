@@ -23,7 +23,7 @@ public:
 
 Floating-point sums depend on their order. The law alone adds its forces in the order of the interaction container, which ``O.load`` changes (interactions without geometry, e.g. released bonds, are not saved and come back at the end of the container when the collider finds the pair again); the sum of a body's forces then differs in the last bits and a reloaded run drifts from the uninterrupted one. Summed here in a fixed order, it continues bit for bit (tests/yade/test_save_load.py), and the result no longer depends on the number of threads. Place it right after the :yref:`InteractionLoop` (``rdem.engines()`` does).
 
-The per-body lists, sorted by the other body's id, are kept from step to step and rebuilt only when the law reports that an interaction started or stopped leaving forces, or when the number of bodies or interactions changed: a step costs one pass over the lists (doc/performance.md).)""");
+The per-body lists, sorted by the other body's id, are kept from step to step and rebuilt only when the law reports that an interaction started or stopped leaving forces, or when the number of bodies or interactions changed: a step costs one pass over the lists.)""");
 	// clang-format on
 
 private:

@@ -64,7 +64,7 @@ void RdemPoissonEngine::postLoad(RdemPoissonEngine&)
 void RdemPoissonEngine::prepare()
 {
 	/* Elements of the same shape, size, material and skin share one K_p: a regular grid has a handful of distinct
-	   matrices instead of one 4.6 kB matrix per element, and the product K_p·u runs from cache (doc/performance.md).
+	   matrices instead of one 4.6 kB matrix per element, and the product K_p·u runs from cache.
 	   Shapes are compared on node coordinates relative to node 0, rounded to 1e-10 of the element's diagonal, λ to 1e-12 of the largest. */
 	const size_t nEl = size_t(nElements());
 	stiffness.clear();

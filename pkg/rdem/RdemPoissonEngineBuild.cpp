@@ -142,7 +142,7 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 	scene                                 = Omega::instance().getScene().get();
 	const std::set<Body::id_t> ids        = collectBlocks(idsIn);
 	const bool                 consistent = Ip2_RdemMat_RdemMat_RdemPhys::formulationOf(scene) == rdem::SpringModulus::Consistent;
-	// The paper's springs E/(1-ν²) plus D_p are an indefinite tensor for ν > (3-√5)/2 ≈ 0.382 (doc/theory.md §5.3): an
+	// The paper's springs E/(1-ν²) plus D_p are an indefinite tensor for ν > (3-√5)/2 ≈ 0.382 (doc/sphinx/rdemTheory.rst §5.3): an
 	// explicit run would blow up, so refuse it with the way out.
 	const Real nuPaperMax = (3 - math::sqrt(Real(5))) / 2;
 	if (!consistent)
@@ -287,7 +287,7 @@ void RdemPoissonEngine::addHex8Element(const std::array<Body::id_t, 8>& n, const
 
 void RdemPoissonEngine::setHex8SpringWeights(const std::set<Body::id_t>& ids, const Neighbours& nbr, bool consistent)
 {
-	// Spring weights of the consistent formulation (doc/theory.md §5.2); 1 in the paper's.
+	// Spring weights of the consistent formulation (doc/sphinx/rdemTheory.rst §5.2); 1 in the paper's.
 	forEachBond(scene, ids, [&](const Interaction& I, const RdemGeom& g, RdemPhys& p) {
 		p.weightNormal = p.weightShear = 1;
 		if (!consistent) return;

@@ -177,7 +177,7 @@ namespace {
 		}
 	}
 
-	/* The contacts a free block without bonds can still make (contactBound, doc/theory.md §6): springs to fixed points at
+	/* The contacts a free block without bonds can still make (contactBound, doc/sphinx/rdemTheory.rst §6): springs to fixed points at
 	   the trapezoid sample grid of each of its six faces, at its own stiffness per area for its smallest half-extent
 	   (eq. 11). A flush contact with an equal block (springs in series, half as stiff, on half the mass in relative
 	   motion) has the same frequency; with a fixed block, this bound. */
@@ -336,7 +336,7 @@ void RdemTimeStepper::checkFixedDt(Scene* sc)
 	checkedDt            = sc->dt;
 	if (!(sc->dt > criticalDt)) return;
 	// above the springs' limit the run blows up; between it and the lower limit with the contact dashpots it may, but the
-	// dashpots' compression-only clamp and caps (Law2…::dashpotCap) often hold it (doc/stability.md): a warning
+	// dashpots' compression-only clamp and caps (Law2…::dashpotCap) often hold it: a warning
 	const bool         springs = sc->dt > springCriticalDt;
 	std::ostringstream msg;
 	msg << "O.dt = " << sc->dt << " s exceeds the critical time step " << (springs ? springCriticalDt : criticalDt) << " s ("
