@@ -13,7 +13,8 @@ PY = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'py', 
 
 def undocumented(path):
 	"The public definitions of one module without a docstring, as 'module.name' or 'module.Class.name'."
-	tree = ast.parse(open(path, encoding='utf-8').read(), path)
+	with open(path, encoding='utf-8') as f:
+		tree = ast.parse(f.read(), path)
 	mod = os.path.basename(path)[:-3]
 	out = [] if ast.get_docstring(tree) else [mod + ' (module)']
 	defs = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
