@@ -37,7 +37,7 @@ html_theme_options = {'page_width': '1200px', 'sidebar_width': '260px'}
 autodoc_member_order = 'bysource'
 autodoc_default_options = {'members': True, 'undoc-members': True}
 # the Markdown reports of doc/ point at files of the repository (scripts, tests) that are not pages of the guide
-suppress_warnings = ['myst.xref_missing', 'myst.header']
+suppress_warnings = ['myst.xref_missing', 'myst.header', 'ref.citation']
 
 YADE_WRAPPER = 'https://yade-dem.org/doc/yade.wrapper.html#yade.wrapper.'
 OURS = set(rdem_classes.classNames(root))
