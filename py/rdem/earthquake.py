@@ -59,7 +59,7 @@ def shaker(motion, ids=None, mode='prescribed', scale=1.0):
 
 class DryWall:
 	"""A free-standing brick wall laid dry (no mortar), one block per brick, on a fixed base block: every bed and head
-	joint and the wall's footing are contacts, sampled at the vertices (``contactSamples=1``, doc/theory.md §4.2), with
+	joint and the wall's footing are contacts, sampled at the vertices (``contactSamples=1``, :ref:`theory §4.2 <rdem-theory-4-2>`), with
 	critical dashpots (``dampingConstant``) and Coulomb friction; nothing is bonded. The masonry spans
 	$x\\in[0, L]$, $y\\in[0, t]$, $z\\in[0, H]$ (:func:`rdem.wall_layout.wallLayout` with ``joint=0``); the base
 	reaches ``baseMargin`` beyond the wall's foot on every side and beyond its head once it has fallen towards $+y$

@@ -135,7 +135,7 @@ class CompressionTest:
 
 
 class MasonryPrism:
-	"""A stack-bonded masonry prism with mortar layers of their own (the *layer* model, doc/theory.md §1.1, §5.5): ``courses``
+	"""A stack-bonded masonry prism with mortar layers of their own (the *layer* model, :ref:`theory §1.1 <rdem-theory-1-1>`, :ref:`theory §5.5 <rdem-theory-5-5>`): ``courses``
 	bricks of height ``brickHeight`` and ``courses - 1`` mortar layers of thickness ``mortarThickness``, all of the same
 	``width`` × ``width`` cross-section, each brick cut into ``blocks`` × ``blocks`` × ``blocksPerBrickHeight`` blocks and
 	each mortar layer into ``blocks`` × ``blocks`` × 1, between a bottom (fixed) and a top (loading) plate of one plate
@@ -144,7 +144,7 @@ class MasonryPrism:
 	:yref:`RdemJoint` interfaces of thickness 0 with the bond's strengths. Lengths in m, stresses in Pa, rate in m/s.
 
 	:meth:`lateralStrain` measures the lateral strain of the middle brick's interior, :meth:`closedForm` gives that of an
-	infinite stack of the same layers (doc/theory.md §5.5)."""
+	infinite stack of the same layers (:ref:`theory §5.5 <rdem-theory-5-5>`)."""
 
 	def __init__(self,
 	             brick,
@@ -271,7 +271,7 @@ class MasonryPrism:
 
 	def closedForm(self):
 		"""Lateral strain per unit compressive stress of an infinite stack of the prism's brick and mortar layers under uniform
-		vertical stress, bonded (equal lateral strain e in all layers, zero mean lateral stress) [1/Pa] (doc/theory.md §5.5):
+		vertical stress, bonded (equal lateral strain e in all layers, zero mean lateral stress) [1/Pa] (:ref:`theory §5.5 <rdem-theory-5-5>`):
 		e/σ = Σ t_i λ_i/M_i / Σ t_i (2(λ_i + μ_i) - 2λ_i²/M_i), over one period of the stack."""
 		num = den = 0.0
 		for m, t in ((self.brick, self.layers[0][2] - self.layers[0][1]), (self.mortar, self.layers[1][2] - self.layers[1][1])):
@@ -287,7 +287,7 @@ class RockingBlock:
 	``h`` and half-depth ``depth`` standing on a fixed base block, the two touching through sampled contacts only (no bond),
 	released at rest tilted by ``theta0`` about its +x corner (positive: resting on that corner). Contact springs with
 	critical dashpots (eq. 13, ``dampingConstant``) and Coulomb friction; the contact sample grid ``contactSamples`` (1: the
-	vertices, doc/theory.md §4.2). Lengths in m, angles in rad, SI units.
+	vertices, :ref:`theory §4.2 <rdem-theory-4-2>`). Lengths in m, angles in rad, SI units.
 
 	:meth:`angle` is the block's rotation about y (positive: tilted onto the +x corner)."""
 

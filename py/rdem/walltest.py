@@ -279,7 +279,7 @@ def scaleRotationalInertia(ids):
 def unbondJoints(wall, kind='head'):
 	"""Start the joints of one ``kind`` of ``wall`` (``'head'``, ``'bed'``, ``'collar'`` or ``'beam'``, the keys of
 	``wall.joints``) without bond: every restoring spring of their bonds in the broken state, so that these joints carry
-	compression and friction through their contact springs (doc/theory.md §3; with softening, the residual friction) and no
+	compression and friction through their contact springs (:ref:`theory §3 <rdem-theory-3>`; with softening, the residual friction) and no
 	tension or cohesion. For head joints this is the assumption of [MannMuller1982]_ in their theory of the stair-stepped
 	shear failure of masonry: head joints are not compressed while their mortar hardens, shrink away from the bricks and
 	transmit no bond. Returns the set of the pairs (smaller id, larger id) made so, to leave them out of the crack counts.
