@@ -139,8 +139,9 @@ class MasonryPrism:
 	bricks of height ``brickHeight`` and ``courses - 1`` mortar layers of thickness ``mortarThickness``, all of the same
 	``width`` × ``width`` cross-section, each brick cut into ``blocks`` × ``blocks`` × ``blocksPerBrickHeight`` blocks and
 	each mortar layer into ``blocks`` × ``blocks`` × 1, between a bottom (fixed) and a top (loading) plate of one plate
-	block per column (free across the load: frictionless platens). Consistent formulation with Poisson cells, springs
-	breaking on the total normal stress of their face (``failureStress='total'``); brick–mortar faces are
+	block per column (free across the load: frictionless platens). Consistent formulation with Poisson cells (what
+	:yref:`RdemPoissonEngine.elements` ``'auto'`` chooses for two materials), springs breaking on the total normal stress
+	of their face (``failureStress='total'``, or ``'spring'``: the paper's criterion, the default of ``rdem.engines``); brick–mortar faces are
 	:yref:`RdemJoint` interfaces of thickness 0 with the bond's strengths. Lengths in m, stresses in Pa, rate in m/s.
 
 	:meth:`lateralStrain` measures the lateral strain of the middle brick's interior, :meth:`closedForm` gives that of an
@@ -159,7 +160,8 @@ class MasonryPrism:
 	             plateHeight=0.02,
 	             rate=0.02,
 	             segmentsPerEdge=2,
-	             damping=0.0):
+	             damping=0.0,
+	             failureStress='total'):
 		for name, value in (('width', width), ('brickHeight', brickHeight), ('mortarThickness', mortarThickness), ('plateHeight', plateHeight), ('rate', rate)):
 			if not (math.isfinite(value) and value > 0):
 				raise ValueError('%s = %r: must be finite and > 0 [m, m/s]' % (name, value))
@@ -180,7 +182,7 @@ class MasonryPrism:
 		for m in (brick, mortar, self.plateMaterial):
 			if m.id < 0:
 				O.materials.append(m)
-		O.engines = build.engines(segmentsPerEdge=segmentsPerEdge, poisson='consistent', damping=damping, failureStress='total', recontact=True)
+		O.engines = build.engines(segmentsPerEdge=segmentsPerEdge, poisson='consistent', damping=damping, failureStress=failureStress, recontact=True)
 		d = width / blocks
 		z = 0.0
 		self.bottom = build.blockGrid((blocks, blocks, 1), (d, d, plateHeight), self.plateMaterial, origin=(0, 0, -plateHeight))
@@ -219,8 +221,7 @@ class MasonryPrism:
 		build.bondPairs(platePairs)
 		for i in self.bottom + self.top:
 			O.bodies[i].state.blockedDOFs = 'zXYZ'  # frictionless platens, before the cells: they are half cells
-		build.poissonEngine().elements = 'cells'
-		build.poissonEngine().build(self.ids)
+		build.poissonEngine().build(self.ids)  # 'auto': cells, since brick and mortar differ
 		for i in self.top:
 			O.bodies[i].state.vel = Vector3(0, 0, -rate)
 		self.area = width * width
