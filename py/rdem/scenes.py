@@ -287,13 +287,13 @@ class RockingBlock:
 	"""Housner's rigid block (Housner 1963, Bull. Seismol. Soc. Am. 53(2):403-417): a block of half-width ``b``, half-height
 	``h`` and half-depth ``depth`` standing on a fixed base block, the two touching through sampled contacts only (no bond),
 	released at rest tilted by ``theta0`` about its +x corner (positive: resting on that corner). Contact springs with
-	critical dashpots (eq. 13, ``dampingConstant``) and Coulomb friction; the contact sample grid ``contactSamples`` (1: the
-	vertices, doc/theory.md §4.2). Lengths in m, angles in rad, SI units.
+	critical dashpots (eq. 13, ``dampingConstant``) and Coulomb friction; the contact sample grid ``contactSamples`` (None:
+	``rdem.engines``' default, the vertices; doc/theory.md §4.2). Lengths in m, angles in rad, SI units.
 
 	:meth:`angle` is the block's rotation about y (positive: tilted onto the +x corner)."""
 
 	def __init__(self, b=0.1, h=0.5, depth=0.1, theta0=0.0, young=30e9, poisson=0.2, density=2500, friction=0.8, dampingConstant=1.0,
-	             contactSamples=1, gravity=9.81):
+	             contactSamples=None, gravity=9.81):
 		for name, value in (('b', b), ('h', h), ('depth', depth), ('young', young), ('density', density), ('gravity', gravity)):
 			if not (math.isfinite(value) and value > 0):
 				raise ValueError('%s = %r: must be finite and > 0' % (name, value))
@@ -306,7 +306,7 @@ class RockingBlock:
 		self.material = O.materials.append(
 		        RdemMat(young=young, poisson=poisson, density=density, tensileStrength=float('inf'), cohesion=float('inf'), frictionAngle=math.atan(friction),
 		                dampingNormal=dampingConstant, dampingShear=dampingConstant, label='block'))
-		O.engines = build.engines(poisson=None, recontact='always', contactSamples=contactSamples, gravity=(0, 0, -gravity))
+		O.engines = build.engines(poisson=None, recontact='always', gravity=(0, 0, -gravity), **({} if contactSamples is None else dict(contactSamples=contactSamples)))
 		# A base wide enough for the block to land on when it overturns either way (falling about a corner, it reaches 2h + b).
 		self.base = O.bodies.append(build.block((0, 0, -0.1), (2 * h + 2 * b + 0.2, depth + 0.2, 0.1), self.material, fixed=True))
 		q = Quaternion(Vector3(0, 1, 0), theta0)

@@ -115,6 +115,26 @@ class Contact(unittest.TestCase):
 		# and go; the defect fixed here created 1e5 times the inflow in one step)
 		self.assertLess(balance.growth, 1e-3 * inflow)
 
+	def testCrossedBeamsRest(self):
+		# rdem.engines' default samples the vertices; a beam laid across another (no corner of either on the other) has
+		# no vertex inside and takes the face grid of segmentsPerEdge = 2 instead
+		# (Ig2_RdemBlock_RdemBlock_RdemGeom.contactSamplesPerEdge). Without that it would fall through. It must rest on
+		# its contact springs: k = k_n * A_s with k_n = M/(l_A + l_B), M = E/(1 - nu^2) (the paper's springs, eq. 11-12),
+		# l = H, and A_s the sampled area: the three grid points of each face inside the other block, trapezoid weights
+		# 1/2, 1, 1/2 of a segment of 20 H^2, halved (both blocks sampled), 20 H^2 in all (the crossing itself is 4 H^2: the
+		# grid is coarse, the contact stiffer than a flush face of that area).
+		mat, base = self.scene(h=1.0, gravity=(0, 0, -9.81), dt=None)
+		O.bodies.erase(base)
+		lower = O.bodies.append(rdem.block((0, 0, 0), (10 * H, H, H), mat, fixed=True))
+		upper = O.bodies.append(rdem.block((0, 0, 2 * H), (H, 10 * H, H), mat))
+		while O.time < 0.03:  # the contact's period is 1.5 ms, critically damped
+			rdem.run(1000)
+		s = O.bodies[upper].state
+		overlap = 2 * H - (s.pos[2] - O.bodies[lower].state.pos[2])
+		static = s.mass * 9.81 / (30e9 / (1 - 0.2**2) / (2 * H) * 20 * H * H)
+		print('crossed beams: overlap %.4g m, static %.4g m, velocity %.3g m/s' % (overlap, static, s.vel.norm()))
+		self.assertAlmostEqual(overlap / static, 1, delta=0.01)  # at rest: the dashpots left 1e-3 of the first swing
+
 
 if __name__ == '__main__':
 	harness.run(Contact)
