@@ -246,7 +246,7 @@ def collapseScene(n, h=0.02):
 	O.reset()
 	mat = O.materials.append(RdemMat(young=30e9, poisson=0.2, density=2300, frictionAngle=math.atan(0.6), label='dry'))
 	tilt = math.radians(45)
-	O.engines = build.engines(poisson=None, gravity=(9.81 * math.sin(tilt), 0, -9.81 * math.cos(tilt)), verletDist=0.05 * h, contactSamples=1)
+	O.engines = build.engines(formulation=None, gravity=(9.81 * math.sin(tilt), 0, -9.81 * math.cos(tilt)), verletDist=0.05 * h, contactSamples=1)
 	O.bodies.append(build.block((1.5 * n * h, n * h / 2, -h / 2), (1.5 * n * h, n * h / 2 + h, h / 2), mat, fixed=True))
 	return len(build.blockGrid((n, n, n), (h, h, h), mat))
 

@@ -54,7 +54,7 @@ def wall(bond, bricks, courses, blocks=(1, 1, 1), thickness=2 * W + T, elements=
 	t = time.time()
 	brick = O.materials.append(RdemMat(young=16.7e9, poisson=0.15, density=1800, tensileStrength=float('inf'), cohesion=float('inf'), label='brick'))
 	joint = RdemJoint(young=2e9, poisson=0.25, tensileStrength=float('inf'), cohesion=float('inf'))
-	O.engines = rdem.engines(poisson='consistent', recontact=False)
+	O.engines = rdem.engines(formulation='consistent', recontact=False)
 	w = rdem.masonry.wall(bricks * (L + T) - T, courses * (H + T) - T, thickness, bond=bond, blocksPerBrick=blocks, baseBeam=0.1, topBeam=0.1,
 	                      brickMaterial=brick, jointMaterial=joint)
 	times['wall'] = time.time() - t

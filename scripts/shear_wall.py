@@ -170,7 +170,7 @@ try:
 	                  compressiveFractureEnergy=cli.bond_Gfc)
 	total = cli.failure_stress == 'total' and cli.formulation == 'consistent'
 	O.engines = rdem.engines(segmentsPerEdge=cli.springs,
-	                         poisson=None if cli.formulation == 'off' else cli.formulation,
+	                         formulation=None if cli.formulation == 'off' else cli.formulation,
 	                         damping=cli.damping,
 	                         gravity=(0, 0, -cli.gravity),
 	                         safety=cli.safety,

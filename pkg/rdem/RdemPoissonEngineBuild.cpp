@@ -152,7 +152,7 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 				throw std::invalid_argument(
 				        "RdemPoissonEngine.build: block " + std::to_string(id) + " has poisson = " + rdem::numberText(nu)
 				        + ", above 0.382 where the paper formulation (springs E/(1-nu^2) plus D_p) is not positive definite and a run"
-				          " blows up; use the consistent formulation, rdem.engines(poisson='consistent')");
+				          " blows up; use the consistent formulation, rdem.engines(formulation='consistent')");
 		}
 	const Neighbours nbr         = bondedNeighbours(ids);
 	const string     defect      = gridDefect(nbr);
@@ -199,7 +199,7 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 		        "RdemPoissonEngine.build: " + (defect.empty() ? string("elements = 'cells'") : defect)
 		        + "; Poisson cells, which work on any layout, belong to the consistent formulation (the paper's hexahedra need a grid of 2x2x2 "
 		          "groups): "
-		          "Ip2_RdemMat_RdemMat_RdemPhys.formulation = 'consistent', e.g. rdem.engines(poisson='consistent')");
+		          "Ip2_RdemMat_RdemMat_RdemPhys.formulation = 'consistent', e.g. rdem.engines(formulation='consistent')");
 	nodes.clear();
 	refPos.clear();
 	lambda.clear();
@@ -380,7 +380,7 @@ void RdemPoissonEngine::buildCells(const std::set<Body::id_t>& ids)
 	const long updater = rdem::engineIndex<RdemCellStrainUpdater>(scene), loop = rdem::engineIndex<InteractionLoop>(scene);
 	if (updater < 0 || (loop >= 0 && updater > loop))
 		throw std::invalid_argument("RdemPoissonEngine.build: Poisson cells need an RdemCellStrainUpdater before the InteractionLoop in O.engines "
-		                            "(rdem.engines(poisson='consistent') places it)");
+		                            "(rdem.engines(formulation='consistent') places it)");
 	for (Body::id_t id : ids)
 		if (!dynamic_cast<RdemState*>(Body::byId(id, scene)->state.get()))
 			throw std::invalid_argument(

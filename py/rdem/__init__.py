@@ -5,7 +5,7 @@ Typical use inside a YADE script (``yade script.py`` with the launcher made by t
     from yade import *
     import rdem
     mat = O.materials.append(RdemMat(young=30e9, poisson=0.2, density=2300, tensileStrength=4.5e6))
-    O.engines = rdem.engines(segmentsPerEdge=2, poisson='paper')
+    O.engines = rdem.engines(segmentsPerEdge=2, formulation='paper')
     ids = rdem.blockGrid((10, 10, 10), (0.02, 0.02, 0.02), material=mat)
     rdem.bond(ids)
     rdem.poissonEngine().build(ids)

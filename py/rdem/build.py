@@ -2,7 +2,7 @@
 
 Every effect is a separate piece of the engine list, so a scene pays only for what it uses: no collider when no spring
 can break (all strengths infinite) and ``recontact=False``, a collider kept dead by :yref:`RdemContactGate` until a
-spring breaks, no Poisson engine when ``poisson=None``.
+spring breaks, no Poisson engine when ``formulation=None``.
 """
 import math
 from yade import O, utils, Vector3, Quaternion
@@ -10,7 +10,7 @@ from yade.wrapper import (Body, RdemBlock, RdemMat, RdemJoint, ForceResetter, In
                           Ip2_RdemMat_RdemMat_RdemPhys, Law2_RdemGeom_RdemPhys_FaceSprings, RdemPoissonEngine, RdemCellStrainUpdater, RdemTimeStepper,
                           NewtonIntegrator, RdemContactGate, RdemFiniteGuard, RdemForceAssembler)
 
-#: The values of ``engines(poisson=...)``: the formulation of the springs (:yref:`Ip2_RdemMat_RdemMat_RdemPhys.formulation`, the
+#: The values of ``engines(formulation=...)``: the formulation of the springs (:yref:`Ip2_RdemMat_RdemMat_RdemPhys.formulation`, the
 #: scene's one setting) and whether there is a Poisson engine. Without one the springs are the paper's.
 POISSON_MODES = {None: ('paper', False), 'off': ('paper', False), 'paper': ('paper', True), 'consistent': ('consistent', True)}
 
@@ -96,7 +96,7 @@ def law():
 
 def poissonEngine():
 	"""The :yref:`RdemPoissonEngine` of the current engine list."""
-	return _engine(RdemPoissonEngine, ': make the engines with rdem.engines(poisson="paper" or "consistent")')
+	return _engine(RdemPoissonEngine, ': make the engines with rdem.engines(formulation="paper" or "consistent")')
 
 
 def contactGate():
@@ -230,7 +230,7 @@ def _aligned(a, b):
 
 
 def engines(segmentsPerEdge=2,
-            poisson='paper',
+            formulation='paper',
             corotational=False,
             recontact=True,
             damping=0.0,
@@ -245,11 +245,12 @@ def engines(segmentsPerEdge=2,
             strengthCoV=0.0,
             strengthPerSegment=False,
             stiffnessCoV=0.0,
-            seed=0):
+            seed=0,
+            **removed):
 	"""The engine list of a refined-DEM scene.
 
 	:param segmentsPerEdge: $n$, each bonded face carries $n\\times n$ springs (paper: 2).
-	:param poisson: ``'paper'`` (springs $E/(1-\\nu^2)$ + $D_p$ elements on $2\\times2\\times2$ grids, as published), ``'consistent'``
+	:param formulation: ``'paper'`` (springs $E/(1-\\nu^2)$ + $D_p$ elements on $2\\times2\\times2$ grids, as published), ``'consistent'``
 	    (springs $\\lambda+2\\mu$ + $D_p$ elements on grids, Poisson cells on any other layout: the full isotropic tensor, see
 	    doc/theory.md §5.2, §5.4) or ``None`` (refined DEM without the Poisson effect, springs as in the paper).
 	:param corotational: remove rigid rotations of the Poisson elements (needed for large rotations).
@@ -271,8 +272,10 @@ def engines(segmentsPerEdge=2,
 	    ``None``: ``segmentsPerEdge``.
 	:param failureStress: ``'spring'`` (default, the paper's): restoring springs break on their own stresses (eqs. 15-16);
 	    ``'total'``: on the total normal stress of the face, springs plus Poisson cells
-	    (:yref:`Law2_RdemGeom_RdemPhys_FaceSprings.totalStress`, doc/theory.md §5.6; needs ``poisson='consistent'`` and
-	    cells: set ``rdem.poissonEngine().elements = 'cells'`` before ``build`` on a grid).
+	    (:yref:`Law2_RdemGeom_RdemPhys_FaceSprings.totalStress`, doc/theory.md §5.6; needs ``formulation='consistent'`` and
+	    cells, which ``rdem.poissonEngine().build`` then chooses).
+	:param poisson: not a parameter (it was the formulation's name, which ``poisson``, Poisson's ratio everywhere else,
+	    made a surprise): refused with a TypeError naming ``formulation``.
 	:param softening: ``False`` (default): the paper's brittle springs; ``True``: softening springs (tension, cohesion and
 	    a compression cap that soften with the fracture energies of the :yref:`RdemJoint` or :yref:`RdemMat`, the energy per
 	    unit crack area independent of the block size: :yref:`Ip2_RdemMat_RdemMat_RdemPhys.softening`, doc/theory.md §2.1).
@@ -284,8 +287,13 @@ def engines(segmentsPerEdge=2,
 	:param seed: seed of the random factors; a fixed seed reproduces a scene bit for bit.
 	:param finiteGuard: append :yref:`RdemFiniteGuard` after the integrator: the run stops at the first NaN or infinite
 	    position, velocity or force, naming the body and interactions (costs < 1 % of a step)."""
-	if poisson not in POISSON_MODES:
-		raise ValueError('poisson = %r: must be one of %s' % (poisson, sorted(k for k in POISSON_MODES if k)))
+	if 'poisson' in removed:
+		raise TypeError("rdem.engines(poisson=%r): the formulation's keyword is formulation=, e.g. rdem.engines(formulation=%r) "
+		                "('paper', 'consistent' or None); poisson is Poisson's ratio (RdemMat.poisson)" % (removed['poisson'], removed['poisson']))
+	if removed:
+		raise TypeError('rdem.engines() got an unexpected keyword argument %r' % sorted(removed)[0])
+	if formulation not in POISSON_MODES:
+		raise ValueError('formulation = %r: must be one of %s or None' % (formulation, sorted(k for k in POISSON_MODES if k)))
 	if not (isinstance(segmentsPerEdge, int) and segmentsPerEdge >= 1):
 		raise ValueError('segmentsPerEdge = %r: must be an integer >= 1' % (segmentsPerEdge, ))
 	if not (0 <= damping < 1):
@@ -300,9 +308,9 @@ def engines(segmentsPerEdge=2,
 		raise ValueError('gravity = %r: must be 3 finite numbers [m/s2]' % (gravity, ))
 	if failureStress not in ('spring', 'total'):
 		raise ValueError("failureStress = %r: must be 'spring' or 'total'" % (failureStress, ))
-	if failureStress == 'total' and poisson != 'consistent':
-		raise ValueError("failureStress = 'total' needs poisson = 'consistent' (the total stress of a face comes from the Poisson cells), not %r" % (poisson, ))
-	formulation, withPoisson = POISSON_MODES[poisson]
+	if failureStress == 'total' and formulation != 'consistent':
+		raise ValueError("failureStress = 'total' needs formulation = 'consistent' (the total stress of a face comes from the Poisson cells), not %r" % (formulation, ))
+	formulation, withPoisson = POISSON_MODES[formulation]
 	if contactSamples is not None and not (isinstance(contactSamples, int) and contactSamples >= 1):
 		raise ValueError('contactSamples = %r: must be an integer >= 1 (or None: segmentsPerEdge)' % (contactSamples, ))
 	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0)], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), strengthCoV=strengthCoV, strengthPerSegment=bool(strengthPerSegment), stiffnessCoV=stiffnessCoV, seed=int(seed))],

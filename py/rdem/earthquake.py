@@ -92,7 +92,7 @@ class DryWall:
 		self.material = O.materials.append(
 		        RdemMat(young=young, poisson=poisson, density=density, tensileStrength=float('inf'), cohesion=float('inf'), frictionAngle=math.atan(friction),
 		                dampingNormal=dampingConstant, dampingShear=dampingConstant, label='brick'))
-		O.engines = build.engines(poisson=None, recontact='always', contactSamples=contactSamples, gravity=(0, 0, -gravity))
+		O.engines = build.engines(formulation=None, recontact='always', contactSamples=contactSamples, gravity=(0, 0, -gravity))
 		L, H, t = self.layout.length, self.layout.height, self.layout.thickness
 		margin, depth = baseMargin, 0.05  # [m] the base reaches this far beyond the wall's foot and its head once fallen; its thickness
 		lo, hi = Vector3(-margin, -margin, -depth), Vector3(L + margin, t + H + margin, 0)

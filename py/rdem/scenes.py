@@ -76,7 +76,7 @@ class CompressionTest:
 		breakable = tensileStrength < float('inf') or cohesion < float('inf')
 		h = size / blocksPerEdge
 		O.engines = build.engines(segmentsPerEdge=segmentsPerEdge,
-		                          poisson=formulation,
+		                          formulation=formulation,
 		                          corotational=corotational,
 		                          recontact=breakable,
 		                          dt=dt,
@@ -182,7 +182,7 @@ class MasonryPrism:
 		for m in (brick, mortar, self.plateMaterial):
 			if m.id < 0:
 				O.materials.append(m)
-		O.engines = build.engines(segmentsPerEdge=segmentsPerEdge, poisson='consistent', damping=damping, failureStress=failureStress, recontact=True)
+		O.engines = build.engines(segmentsPerEdge=segmentsPerEdge, formulation='consistent', damping=damping, failureStress=failureStress, recontact=True)
 		d = width / blocks
 		z = 0.0
 		self.bottom = build.blockGrid((blocks, blocks, 1), (d, d, plateHeight), self.plateMaterial, origin=(0, 0, -plateHeight))
@@ -306,7 +306,7 @@ class RockingBlock:
 		self.material = O.materials.append(
 		        RdemMat(young=young, poisson=poisson, density=density, tensileStrength=float('inf'), cohesion=float('inf'), frictionAngle=math.atan(friction),
 		                dampingNormal=dampingConstant, dampingShear=dampingConstant, label='block'))
-		O.engines = build.engines(poisson=None, recontact='always', gravity=(0, 0, -gravity), **({} if contactSamples is None else dict(contactSamples=contactSamples)))
+		O.engines = build.engines(formulation=None, recontact='always', gravity=(0, 0, -gravity), **({} if contactSamples is None else dict(contactSamples=contactSamples)))
 		# A base wide enough for the block to land on when it overturns either way (falling about a corner, it reaches 2h + b).
 		self.base = O.bodies.append(build.block((0, 0, -0.1), (2 * h + 2 * b + 0.2, depth + 0.2, 0.1), self.material, fixed=True))
 		q = Quaternion(Vector3(0, 1, 0), theta0)

@@ -4,7 +4,7 @@ beam and a top beam, a constant vertical stress $\\sigma_0$ applied first, then 
 
 Typical use (scripts/shear_wall.py does all of it with every parameter an option)::
 
-    O.engines = rdem.engines(poisson='consistent', failureStress='total', damping=0.2)
+    O.engines = rdem.engines(formulation='consistent', failureStress='total', damping=0.2)
     w = rdem.masonry.wall(1.55, 2.005, 0.38, bond='english', baseBeam=0.2, topBeam=0.2, brickMaterial=brick, jointMaterial=mortar,
                           beamMaterial=concrete)
     rdem.poissonEngine().build(w.ids)

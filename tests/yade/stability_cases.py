@@ -167,7 +167,7 @@ def grid(nu=0.2, formulation='consistent', counts=(3, 3, 3), corotational=False,
 	O.reset()
 	mat = O.materials.append(RdemMat(young=E, poisson=nu, tensileStrength=tensileStrength, cohesion=cohesion))
 	breakable = tensileStrength < INF or cohesion < INF
-	O.engines = rdem.engines(poisson=formulation, corotational=corotational, recontact=breakable, dt=1e-9)
+	O.engines = rdem.engines(formulation=formulation, corotational=corotational, recontact=breakable, dt=1e-9)
 	ids = rdem.blockGrid(counts, (2 * H, ) * 3, mat)
 	rdem.bond(ids)
 	if formulation:
@@ -182,7 +182,7 @@ def brickMortar(contrast, nx=3, ny=2):
 	O.reset()
 	brick = O.materials.append(RdemMat(young=E, poisson=0.2, tensileStrength=INF, label='brick'))
 	mortar = O.materials.append(RdemMat(young=E / contrast, poisson=0.2, tensileStrength=INF, label='mortar'))
-	O.engines = rdem.engines(poisson='consistent', recontact=False, dt=1e-9)
+	O.engines = rdem.engines(formulation='consistent', recontact=False, dt=1e-9)
 	ids, z = [], 0.0
 	for mat, height in ((brick, 0.02), (mortar, 0.004), (brick, 0.02), (mortar, 0.004), (brick, 0.02)):
 		ids += rdem.blockGrid((nx, ny, 1), (0.04, 0.02, height), mat, origin=(0, 0, z))

@@ -20,7 +20,7 @@ class Assembly(unittest.TestCase):
 	def bar(self, n=6, nu=NU):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=E, poisson=nu, tensileStrength=float('inf')))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=False, damping=0.3)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=False, damping=0.3)
 		ids = rdem.blockGrid((n, 1, 1), (2 * H, ) * 3, material=mat)
 		rdem.bond(ids)
 		return ids
@@ -58,7 +58,7 @@ class Assembly(unittest.TestCase):
 		# all blocks sum to zero every step, and the spring energy is reported.
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=E, poisson=NU, tensileStrength=float('inf')))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson='paper', recontact=False, safety=0.5)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation='paper', recontact=False, safety=0.5)
 		ids = rdem.blockGrid((3, 3, 3), (2 * H, ) * 3, material=mat)
 		rdem.bond(ids)
 		rdem.poissonEngine().build(ids)

@@ -48,7 +48,7 @@ class Building(unittest.TestCase):
 
 	def setUp(self):
 		harness.freshScene()
-		O.engines = rdem.engines(poisson=None, recontact=True, contactSamples=1, gravity=(0, 0, -9.81))
+		O.engines = rdem.engines(formulation=None, recontact=True, contactSamples=1, gravity=(0, 0, -9.81))
 
 	def testBlocksAndBonds(self):
 		b = house()

@@ -20,7 +20,7 @@ class Contact(unittest.TestCase):
 	def scene(self, h=1.0, phi=math.atan(0.624), gravity=(0, 0, 0), dt=2e-8):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=30e9, poisson=0.2, density=RHO, frictionAngle=phi, dampingNormal=h, dampingShear=h))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=True, gravity=gravity, dt=dt)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=True, gravity=gravity, dt=dt)
 		base = O.bodies.append(rdem.block((0, 0, 0), (H, H, H), mat, fixed=True))
 		return mat, base
 

@@ -14,7 +14,7 @@ class ContactGate(unittest.TestCase):
 	def scene(self, ft=float('inf'), recontact=True):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=E, poisson=NU, tensileStrength=ft))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=recontact, dt=1e-8)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=recontact, dt=1e-8)
 		return mat
 
 	def gate(self):

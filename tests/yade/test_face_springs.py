@@ -22,7 +22,7 @@ class TwoBlocks(unittest.TestCase):
 	def setUp(self):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=E, poisson=NU, density=2300, tensileStrength=float('inf')))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=False, dt=1e-9)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=False, dt=1e-9)
 		self.ids = rdem.blockGrid((2, 1, 1), (2 * A_HALF, ) * 3, material=mat)
 		self.assertEqual(rdem.bond(self.ids), 1)
 		for i in self.ids:

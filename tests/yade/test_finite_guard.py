@@ -15,7 +15,7 @@ class FiniteGuard(unittest.TestCase):
 	def grid(self, guard=True):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(tensileStrength=float('inf')))
-		O.engines = rdem.engines(poisson='paper', recontact=False, dt=1e-7, finiteGuard=guard)
+		O.engines = rdem.engines(formulation='paper', recontact=False, dt=1e-7, finiteGuard=guard)
 		ids = rdem.blockGrid((3, 3, 3), (0.02, 0.02, 0.02), mat)
 		rdem.bond(ids)
 		rdem.poissonEngine().build(ids)

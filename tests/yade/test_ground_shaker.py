@@ -19,7 +19,7 @@ from rdem import ground_motion as gm
 def scene():
 	harness.freshScene()
 	mat = O.materials.append(RdemMat(young=30e9, poisson=0.2, density=2500, tensileStrength=float('inf'), cohesion=float('inf')))
-	O.engines = rdem.engines(poisson=None, recontact=False, gravity=(0, 0, -9.81))
+	O.engines = rdem.engines(formulation=None, recontact=False, gravity=(0, 0, -9.81))
 	base = O.bodies.append(rdem.block((0, 0, -0.05), (0.3, 0.3, 0.05), mat))
 	top = O.bodies.append(rdem.block((0, 0, 0.1), (0.1, 0.1, 0.1), mat))
 	rdem.bond([base, top])

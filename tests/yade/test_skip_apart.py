@@ -49,7 +49,7 @@ class SkipApart(unittest.TestCase):
 		# Two loose cubes of side 2H side by side along x, a gap apart [m], the second moving towards the first [m/s].
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=E, poisson=NU))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, dt=1e-6, verletDist=0.1 * H)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, dt=1e-6, verletDist=0.1 * H)
 		a = O.bodies.append(rdem.block((0, 0, 0), (H, H, H), mat))
 		b = O.bodies.append(rdem.block((2 * H + gap, 0, 0), (H, H, H), mat))
 		O.bodies[b].state.vel = Vector3(-speed, 0, 0)
