@@ -73,8 +73,8 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, Vector3, VTKRecorder, plot
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
-from rdem import ground_motion as gm
+from yade import rdem
+from yade.rdem import ground_motion as gm
 
 G = gm.G
 q, C, t = 0.065, 0.065, 0.01  # quarter module (l + t)/4, course h + t and joint of the 250x120x55 mm brick [m]

@@ -69,8 +69,8 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, Vector3, VTKRecorder, plot
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
-from rdem import ground_motion as gm
+from yade import rdem
+from yade.rdem import ground_motion as gm
 
 os.makedirs(os.path.join(cli.out, 'vtk'), exist_ok=True)
 G = gm.G

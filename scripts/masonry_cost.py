@@ -42,7 +42,7 @@ for name in ('bricks', 'courses', 'steps', 'rounds'):
 
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
+from yade import rdem
 
 L, W, H, T = 0.25, 0.12, 0.055, 0.01
 
@@ -81,7 +81,7 @@ def cube():
 	"""The paper's scene with the consistent formulation (rdem.scenes.CompressionTest, 10³ blocks and two plates, 891
 	hexahedra): a 2×2×2 grid with about one element per block, elastic."""
 	O.reset()
-	from rdem.scenes import CompressionTest
+	from yade.rdem.scenes import CompressionTest
 	test = CompressionTest(blocksPerEdge=10, formulation='consistent', tensileStrength=float('inf'))
 	O.step()
 	return _Ids(test.ids)

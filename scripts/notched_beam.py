@@ -72,7 +72,7 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, Vector3, VTKRecorder
 from yade.wrapper import RdemMat
-import rdem
+from yade import rdem
 
 os.makedirs(os.path.join(cli.out, 'vtk'), exist_ok=True)
 

@@ -42,8 +42,8 @@ import math
 import os
 import sys
 import time
-import rdem  # before the options: rdem.masonry.addWallArguments
-from rdem import wall_database
+from yade import rdem  # before the options: rdem.masonry.addWallArguments
+from yade.rdem import wall_database
 
 # 1. Options (defaults: the rule set of rdem.wall_database for --wall, so that --help shows the validated values) -------
 pre = argparse.ArgumentParser(add_help=False)
@@ -146,7 +146,7 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, VTKRecorder, plot
 from yade.wrapper import RdemMat, RdemJoint
-from rdem import walltest
+from yade.rdem import walltest
 
 measured = spec['measured']
 sigma0 = cli.sigma0 * 1e6

@@ -34,7 +34,7 @@ import math
 import os
 import sys
 import time
-import rdem  # before the options: rdem.masonry.addWallArguments
+from yade import rdem  # before the options: rdem.masonry.addWallArguments
 
 
 # 1. Options ---------------------------------------------------------------------------------------------------------

@@ -66,47 +66,61 @@ def blockGrid(counts, sizes, material, origin=(0, 0, 0), orientation=Quaternion.
 	return O.bodies.append(bodies)
 
 
-def _functor(cls, dispatcher, hint):
-	"""The functor of class ``cls`` in the ``dispatcher`` of the InteractionLoop of O.engines; RuntimeError with ``hint``."""
-	for e in O.engines:
-		if isinstance(e, InteractionLoop):
-			for f in getattr(e, dispatcher).functors:
-				if isinstance(f, cls):
-					return f
-	raise RuntimeError('no %s in O.engines%s' % (cls.__name__, hint))
+#: The labels :func:`engines` gives its engines and functors (:yref:`Engine.label`): the helpers below, and any script,
+#: find them by these (``O.labeledEngine(label)``, or the label as a variable in a YADE script), not by scanning O.engines.
+LABELS = dict(gate='rdemGate',
+              collider='rdemCollider',
+              cellStrains='rdemCellStrains',
+              loop='rdemLoop',
+              geom='rdemIg2',
+              phys='rdemIp2',
+              law='rdemLaw2',
+              forces='rdemForces',
+              poisson='rdemPoisson',
+              stepper='rdemStepper',
+              newton='rdemNewton',
+              guard='rdemGuard')
 
 
-def _engine(cls, hint):
-	"""The engine of class ``cls`` in O.engines; RuntimeError with ``hint``."""
-	for e in O.engines:
-		if isinstance(e, cls):
-			return e
-	raise RuntimeError('no %s in O.engines%s' % (cls.__name__, hint))
+def _labeled(key, cls, hint):
+	"""The engine or functor that :func:`engines` labelled ``LABELS[key]``, checked to be a ``cls``; RuntimeError with ``hint``."""
+	try:
+		e = O.labeledEngine(LABELS[key])
+	except (ValueError, RuntimeError):
+		e = None
+	if not isinstance(e, cls):
+		raise RuntimeError('no %s labelled %r in O.engines (set O.engines = rdem.engines(...)%s)' % (cls.__name__, LABELS[key], hint))
+	return e
 
 
 def geomFunctor():
 	"""The :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom` of the current engine list (it makes the bonds)."""
-	return _functor(Ig2_RdemBlock_RdemBlock_RdemGeom, 'geomDispatcher', ': set O.engines = rdem.engines(...) before bonding')
+	return _labeled('geom', Ig2_RdemBlock_RdemBlock_RdemGeom, ' before bonding')
 
 
 def law():
 	"""The :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` of the current engine list."""
-	return _functor(Law2_RdemGeom_RdemPhys_FaceSprings, 'lawDispatcher', '')
+	return _labeled('law', Law2_RdemGeom_RdemPhys_FaceSprings, '')
 
 
 def poissonEngine():
 	"""The :yref:`RdemPoissonEngine` of the current engine list."""
-	return _engine(RdemPoissonEngine, ': make the engines with rdem.engines(formulation="paper" or "consistent")')
+	return _labeled('poisson', RdemPoissonEngine, ' with formulation="paper" or "consistent"')
 
 
 def contactGate():
 	"""The :yref:`RdemContactGate` of the current engine list (set ``open=True`` to run the collider from the start)."""
-	return _engine(RdemContactGate, ': make the engines with rdem.engines(recontact=True)')
+	return _labeled('gate', RdemContactGate, ' with recontact=True')
+
+
+def collider():
+	"""The :yref:`InsertionSortCollider` of the current engine list."""
+	return _labeled('collider', InsertionSortCollider, ' with recontact=True or "always"')
 
 
 def newtonIntegrator():
 	"""The :yref:`NewtonIntegrator` of the current engine list (its ``damping`` and ``gravity``)."""
-	return _engine(NewtonIntegrator, ': set O.engines = rdem.engines(...) first')
+	return _labeled('newton', NewtonIntegrator, '')
 
 
 def run(steps):
@@ -125,7 +139,7 @@ def run(steps):
 
 def timeStepper():
 	"""The :yref:`RdemTimeStepper` of the current engine list."""
-	return _engine(RdemTimeStepper, '')
+	return _labeled('stepper', RdemTimeStepper, '')
 
 
 def _aabb(b):
@@ -247,7 +261,8 @@ def engines(segmentsPerEdge=2,
             stiffnessCoV=0.0,
             seed=0,
             **removed):
-	"""The engine list of a refined-DEM scene.
+	"""The engine list of a refined-DEM scene. Every engine and functor carries a label of :data:`LABELS` (``rdemNewton``,
+	``rdemPoisson``, ...), by which :func:`poissonEngine`, :func:`newtonIntegrator` and the others find it.
 
 	:param segmentsPerEdge: $n$, each bonded face carries $n\\times n$ springs (paper: 2).
 	:param formulation: ``'paper'`` (springs $E/(1-\\nu^2)$ + $D_p$ elements on $2\\times2\\times2$ grids, as published), ``'consistent'``
@@ -313,27 +328,28 @@ def engines(segmentsPerEdge=2,
 	formulation, withPoisson = POISSON_MODES[formulation]
 	if contactSamples is not None and not (isinstance(contactSamples, int) and contactSamples >= 1):
 		raise ValueError('contactSamples = %r: must be an integer >= 1 (or None: segmentsPerEdge)' % (contactSamples, ))
-	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0)], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), strengthCoV=strengthCoV, strengthPerSegment=bool(strengthPerSegment), stiffnessCoV=stiffnessCoV, seed=int(seed))],
-	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True, totalStress=failureStress == 'total')])
+	L = LABELS
+	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0, label=L['geom'])], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), strengthCoV=strengthCoV, strengthPerSegment=bool(strengthPerSegment), stiffnessCoV=stiffnessCoV, seed=int(seed), label=L['phys'])],
+	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True, totalStress=failureStress == 'total', label=L['law'])], label=L['loop'])
 	eng = [ForceResetter()]
 	if recontact not in (True, False, 'always'):
 		raise ValueError("recontact = %r: must be True, False or 'always'" % (recontact, ))
 	if recontact is True:
-		eng.append(RdemContactGate())
+		eng.append(RdemContactGate(label=L['gate']))
 	if recontact:
-		eng.append(InsertionSortCollider([Bo1_Box_Aabb()], verletDist=verletDist if verletDist is not None else 0.0))
+		eng.append(InsertionSortCollider([Bo1_Box_Aabb()], verletDist=verletDist if verletDist is not None else 0.0, label=L['collider']))
 	if withPoisson and formulation == 'consistent':
-		eng.append(RdemCellStrainUpdater())  # Poisson cells of layouts that are not grids: strains before the law reads them
-	eng += [loop, RdemForceAssembler()]  # forces summed per body in a fixed order: O.load continues bit for bit
+		eng.append(RdemCellStrainUpdater(label=L['cellStrains']))  # Poisson cells of layouts that are not grids: strains before the law reads them
+	eng += [loop, RdemForceAssembler(label=L['forces'])]  # forces summed per body in a fixed order: O.load continues bit for bit
 	if withPoisson:
-		eng.append(RdemPoissonEngine(corotational=corotational))
+		eng.append(RdemPoissonEngine(corotational=corotational, label=L['poisson']))
 	# The automatic step is 0.8 of the tight (Lanczos) limit, also below the Gershgorin bound while contacts act or can form
 	# (RdemTimeStepper.contactLimit); a fixed step is checked against the Lanczos estimate, refused above it (doc/stability.md)
 	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None, contactBound=bool(recontact),
-	                          method='lanczos')
-	eng += [stepper, NewtonIntegrator(damping=damping, gravity=Vector3(gravity))]
+	                          method='lanczos', label=L['stepper'])
+	eng += [stepper, NewtonIntegrator(damping=damping, gravity=Vector3(gravity), label=L['newton'])]
 	if finiteGuard:
-		eng.append(RdemFiniteGuard())
+		eng.append(RdemFiniteGuard(label=L['guard']))
 	if dt is not None:
 		O.dt = dt
 	return eng

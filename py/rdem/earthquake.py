@@ -3,7 +3,7 @@ pulses) applied to a scene by :yref:`RdemGroundShaker` (doc/earthquake.md).
 
 Typical use::
 
-    from rdem import ground_motion as gm
+    from yade.rdem import ground_motion as gm
     motion = gm.GroundMotion(x=gm.readAT2('RSN6_IMPVALL.I_I-ELC180.AT2').baselineCorrected(2))
     rdem.earthquake.shaker(motion, ids=w.beams['base'])          # the base beam moves with the ground
     O.run(int(motion.duration / O.dt))

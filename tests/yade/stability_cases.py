@@ -13,7 +13,7 @@ import random
 import numpy as np
 from yade import O, Vector3, Quaternion
 from yade.wrapper import RdemMat
-import rdem
+from yade import rdem
 
 E = 30e9  # concrete, paper Table 1 [Pa]
 H = 0.01  # half-size of the 2 cm blocks of the paper's §5 [m]

@@ -4,7 +4,7 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemContactGate, InsertionSortCollider
-import rdem
+from yade import rdem
 
 E, NU, H = 30e9, 0.2, 0.01
 
@@ -21,7 +21,7 @@ class ContactGate(unittest.TestCase):
 		return rdem.build.contactGate()
 
 	def collider(self):
-		return next(e for e in O.engines if isinstance(e, InsertionSortCollider))
+		return rdem.collider()
 
 	def testClosedForOneIntactAssembly(self):
 		mat = self.scene()

@@ -9,7 +9,7 @@ import unittest
 import harness
 from yade import O, Vector3, Quaternion
 from yade.wrapper import RdemMat
-import rdem
+from yade import rdem
 
 E, NU, A_HALF = 30e9, 0.2, 0.01  # concrete (paper Table 1), cubes of 2 cm
 AREA = (2 * A_HALF)**2

@@ -8,7 +8,7 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat
-import rdem
+from yade import rdem
 
 E, NU, H = 30e9, 0.2, 0.01
 AREA = (2 * H)**2

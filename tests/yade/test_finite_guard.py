@@ -3,9 +3,9 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemFiniteGuard, NewtonIntegrator
-import rdem
-import rdem.measure
-from rdem.scenes import CompressionTest
+from yade import rdem
+from yade import rdem
+from yade.rdem.scenes import CompressionTest
 
 NAN = float('nan')
 

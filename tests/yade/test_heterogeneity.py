@@ -11,7 +11,7 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat
-import rdem
+from yade import rdem
 
 E, NU, FT, C = 30e9, 0.2, 3e6, 6e6
 KN = E / (1 - NU**2) / 0.02  # eqs. 11-12: two 2 cm blocks (ℓ = 1 cm each) [N/m3]

@@ -4,7 +4,7 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint, RdemPoissonEngine, Ig2_RdemBlock_RdemBlock_RdemGeom, Ip2_RdemMat_RdemMat_RdemPhys, RdemTimeStepper
-import rdem
+from yade import rdem
 
 NAN, INF = float('nan'), float('inf')
 
@@ -73,7 +73,7 @@ class InputValidation(unittest.TestCase):
 		self.refused(r'gravity = .*finite', rdem.engines, gravity=(0, 0, NAN))
 
 	def testCompressionSceneArguments(self):
-		from rdem.scenes import CompressionTest
+		from yade.rdem.scenes import CompressionTest
 		for kw, pattern in ((dict(blocksPerEdge=1), r'blocksPerEdge = 1.*>= 2'), (dict(rate=0), r'rate = 0.*> 0'),
 		                    (dict(plateYoung=0.0), r'plateYoung = 0.0.*> 0'), (dict(plateYoung=NAN), r'plateYoung = nan.*finite'),
 		                    (dict(platePoisson=0.5), r'platePoisson = 0.5.*\(-1, 0.5\)'), (dict(frictionCoefficient=-1), r'frictionCoefficient = -1.*>= 0')):

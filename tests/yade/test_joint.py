@@ -12,7 +12,7 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
+from yade import rdem
 
 L, W, H, T = 0.25, 0.12, 0.055, 0.01  # brick and joint [m]
 EB, NUB, EM, NUM = 16.7e9, 0.15, 2e9, 0.25  # brick and mortar [Pa], [-]

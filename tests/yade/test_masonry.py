@@ -11,7 +11,7 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
+from yade import rdem
 
 BRICK, T = (0.25, 0.12, 0.055), 0.01
 L3 = 3 * 0.25 + 2 * T  # three stretchers [m]

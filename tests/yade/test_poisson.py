@@ -7,7 +7,7 @@ import numpy as np
 import harness
 from yade import O, Vector3, Quaternion
 from yade.wrapper import RdemMat
-import rdem
+from yade import rdem
 
 E, NU, H = 30e9, 0.2, 0.01
 LAM = E * NU / ((1 + NU) * (1 - 2 * NU))

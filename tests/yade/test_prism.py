@@ -16,8 +16,8 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
-from rdem.scenes import MasonryPrism
+from yade import rdem
+from yade.rdem.scenes import MasonryPrism
 
 BRICK = dict(young=16.7e9, poisson=0.15, density=1800, label='brick')
 BOND = dict(tensileStrength=0.5e6, cohesion=1e6, frictionAngle=math.atan(0.75))

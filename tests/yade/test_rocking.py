@@ -16,8 +16,8 @@ import math
 import unittest
 import harness
 from yade import O, Vector3
-import rdem
-from rdem.scenes import RockingBlock
+from yade import rdem
+from yade.rdem.scenes import RockingBlock
 
 
 def advance(n):

@@ -30,8 +30,8 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
-from rdem import walltest
+from yade import rdem
+from yade.rdem import walltest
 
 E, L, H, T = 3e9, 0.51, 1.03, 0.12  # [Pa], [m]
 

@@ -5,8 +5,8 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat
-import rdem
-import rdem.build
+from yade import rdem
+from yade import rdem
 
 E, NU, H = 30e9, 0.2, 0.01
 
@@ -17,7 +17,7 @@ class SkipApart(unittest.TestCase):
 		# The compression run of test_assembly.testPrefetchChangesNoResult (it cracks, makes sampled contacts, loses a
 		# block half-way: the travel record restarts), with a save and a load in the middle (certificates are not saved:
 		# every pair is tested again).
-		from rdem.scenes import CompressionTest
+		from yade.rdem.scenes import CompressionTest
 		harness.freshScene()
 		CompressionTest(blocksPerEdge=4, tensileStrength=2e6, rate=0.5, dt=2e-6)
 		rdem.build.geomFunctor().skipApart = skip

@@ -3,7 +3,7 @@ import unittest
 import harness
 import yade
 from yade import O
-import rdem
+from yade import rdem
 
 CLASSES = ('RdemMat', 'RdemBlock', 'RdemGeom', 'RdemPhys', 'Ig2_RdemBlock_RdemBlock_RdemGeom', 'Ip2_RdemMat_RdemMat_RdemPhys',
            'Law2_RdemGeom_RdemPhys_FaceSprings', 'RdemPoissonEngine', 'RdemTimeStepper', 'RdemForceAssembler', 'RdemFiniteGuard')

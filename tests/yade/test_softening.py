@@ -20,7 +20,7 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
+from yade import rdem
 
 FT, GF1, C, GF2, TAN0, TANR = 0.25e6, 18.0, 0.35e6, 125.0, 0.75, 0.6
 

@@ -9,8 +9,8 @@ import unittest
 import harness
 from yade import O, Vector3, Quaternion
 from yade.wrapper import RdemMat, PyRunner
-import rdem
-from rdem.scenes import CompressionTest
+from yade import rdem
+from yade.rdem.scenes import CompressionTest
 import stability_cases as sc
 
 # Energy bound of the elastic cases. Measured worst |H - H0|/H0 over 20 000 steps: 2e-8 to 1.5e-6 (doc/stability.md),

@@ -11,7 +11,7 @@ import unittest
 import harness
 from yade import O, Vector3, Quaternion
 from yade.wrapper import RdemMat
-import rdem
+from yade import rdem
 
 H = 0.01  # half-size of the 2 cm cubes [m]
 G = 9.81

@@ -6,7 +6,7 @@ plate block per wall block, as the paper's 10×10 plates), their translation alo
 blocked: free to follow the lateral expansion, so the specimen is in uniaxial stress."""
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
+from yade import rdem
 
 E = 16.7e9  # [Pa]
 BRICK, JOINT = (0.25, 0.12, 0.055), 0.01  # [m]
