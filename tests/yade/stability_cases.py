@@ -188,6 +188,7 @@ def brickMortar(contrast, nx=3, ny=2):
 		ids += rdem.blockGrid((nx, ny, 1), (0.04, 0.02, height), mat, origin=(0, 0, z))
 		z += height
 	rdem.bond(ids)
+	rdem.poissonEngine().elements = 'hex8'  # the elements across the layers are the case (elements='auto' would take cells)
 	rdem.poissonEngine().build(ids)
 	O.trackEnergy = True
 	return ids
