@@ -211,9 +211,11 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 	RdemCellNetwork::generation++;
 	scalePrev.clear(); // the first step takes the current scales
 	prepare();
-	if (elements == "auto" && cellsWanted && defect.empty()) LOG_WARN("RdemPoissonEngine.build: Poisson cells (elements='auto'): " << why);
-	else
+	if (elements == "auto" && cellsWanted && defect.empty()) {
+		LOG_WARN("RdemPoissonEngine.build: Poisson cells (elements='auto'): " << why);
+	} else {
 		LOG_INFO("RdemPoissonEngine.build: " << chosen);
+	}
 }
 
 string RdemPoissonEngine::materialMix(const std::set<Body::id_t>& ids) const
