@@ -42,8 +42,8 @@ import math
 import os
 import sys
 import time
-import rdem  # before the options: rdem.masonry.addWallArguments
-from rdem import wall_database
+from yade import rdem  # before the options: rdem.masonry.addWallArguments
+from yade.rdem import wall_database
 
 # 1. Options (defaults: the rule set of rdem.wall_database for --wall, so that --help shows the validated values) -------
 pre = argparse.ArgumentParser(add_help=False)
@@ -146,7 +146,7 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, VTKRecorder, plot
 from yade.wrapper import RdemMat, RdemJoint
-from rdem import walltest
+from yade.rdem import walltest
 
 measured = spec['measured']
 sigma0 = cli.sigma0 * 1e6
@@ -170,7 +170,7 @@ try:
 	                  compressiveFractureEnergy=cli.bond_Gfc)
 	total = cli.failure_stress == 'total' and cli.formulation == 'consistent'
 	O.engines = rdem.engines(segmentsPerEdge=cli.springs,
-	                         poisson=None if cli.formulation == 'off' else cli.formulation,
+	                         formulation=None if cli.formulation == 'off' else cli.formulation,
 	                         damping=cli.damping,
 	                         gravity=(0, 0, -cli.gravity),
 	                         safety=cli.safety,

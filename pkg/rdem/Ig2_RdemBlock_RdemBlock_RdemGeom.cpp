@@ -188,6 +188,13 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 	RdemGeom probe;
 	probe.samplesPerEdge = contactSamples();
 	sampleContacts(pair, s1, s2, tol, contactSamples(), probe);
+	if (probe.sampleKey.empty() && contactSamples() == 1 && segmentsPerEdge > 1) {
+		/* Vertices only, and none of either block inside the other although they overlap: faces that cross (a beam across
+		   a wall, no corner of one on the other). The contact then samples the face grid of segmentsPerEdge for its life;
+		   its samples count from the depth at which they enter (δ₀), so the switch adds no energy. */
+		probe.samplesPerEdge = segmentsPerEdge;
+		sampleContacts(pair, s1, s2, tol, segmentsPerEdge, probe);
+	}
 	if (probe.sampleKey.empty()) return false;
 	auto g  = shared_ptr<RdemGeom>(new RdemGeom(probe));
 	g->ell1 = faceDistance(A, probe.sampleNormal[0]);

@@ -1,7 +1,7 @@
 """Masonry walls as refined-DEM scenes: :func:`wall` lays out a wall of bricks and mortar (:mod:`rdem.wall_layout`), appends
 its blocks to ``O.bodies`` and bonds them, every joint with its :yref:`RdemJoint`.
 
-Typical use (after ``O.engines = rdem.engines(poisson='consistent')``)::
+Typical use (after ``O.engines = rdem.engines(formulation='consistent')``)::
 
     brick = RdemMat(young=16.7e9, poisson=0.15, density=1800, tensileStrength=3e6, label='brick')
     mortar = RdemJoint(young=2e9, poisson=0.25, tensileStrength=0.2e6, cohesion=0.3e6, frictionAngle=math.atan(0.8))

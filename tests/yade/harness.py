@@ -2,7 +2,7 @@
 import sys
 import unittest
 from yade import O, Matrix3, Vector3
-import rdem
+from yade import rdem
 
 
 def run(testCase):

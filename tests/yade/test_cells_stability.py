@@ -14,7 +14,7 @@ import unittest
 import harness
 import wall_cases as wc
 from yade import O, Vector3
-import rdem
+from yade import rdem
 
 
 class CellsAreStable(unittest.TestCase):

@@ -24,10 +24,10 @@ import math
 import unittest
 import harness
 from yade import O
-import rdem
-from rdem import ground_motion as gm
-from rdem.earthquake import DryWall
-from rdem.scenes import RockingBlock
+from yade import rdem
+from yade.rdem import ground_motion as gm
+from yade.rdem.earthquake import DryWall
+from yade.rdem.scenes import RockingBlock
 
 
 def runToRest(balance, pulseEnd, duration, every, chunk=2000):

@@ -7,8 +7,8 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemGeom, RdemPhys, NewtonIntegrator
-import rdem
-from rdem.scenes import CompressionTest
+from yade import rdem
+from yade.rdem.scenes import CompressionTest
 
 AFTER = 300  # steps run after the save, by both runs
 
@@ -31,7 +31,7 @@ class SaveLoad(unittest.TestCase):
 		# 4x4x4 cube at 0.1 m/s: the first cracks come after ~850 steps. Beside it, a loose block rests on a fixed one under
 		# gravity: a sampled contact (collider, dashpot, friction history) that lasts through the save.
 		test = CompressionTest(blocksPerEdge=4, rate=0.1, formulation=formulation, corotational=formulation == 'consistent')
-		next(e for e in O.engines if isinstance(e, NewtonIntegrator)).gravity = Vector3(0, 0, -9.81)
+		rdem.newtonIntegrator().gravity = Vector3(0, 0, -9.81)
 		floor = O.bodies.append(rdem.block((0.4, 0.1, 0.01), (0.01, 0.01, 0.01), test.material, fixed=True))
 		self.loose = O.bodies.append(rdem.block((0.4, 0.1, 0.03), (0.01, 0.01, 0.01), test.material))
 		O.trackEnergy = True
