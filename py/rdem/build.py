@@ -8,7 +8,7 @@ import math
 from yade import O, utils, Vector3, Quaternion
 from yade.wrapper import (Body, RdemBlock, RdemMat, RdemJoint, ForceResetter, InsertionSortCollider, Bo1_Box_Aabb, InteractionLoop, Ig2_RdemBlock_RdemBlock_RdemGeom,
                           Ip2_RdemMat_RdemMat_RdemPhys, Law2_RdemGeom_RdemPhys_FaceSprings, RdemPoissonEngine, RdemCellStrainUpdater, RdemTimeStepper,
-                          NewtonIntegrator, RdemContactGate, RdemFiniteGuard, RdemForceAssembler)
+                          NewtonIntegrator, RdemContactGate, RdemFiniteGuard, RdemForceAssembler, RdemLeapfrogEnergy)
 
 #: The values of ``engines(poisson=...)``: the formulation of the springs (:yref:`Ip2_RdemMat_RdemMat_RdemPhys.formulation`, the
 #: scene's one setting) and whether there is a Poisson engine. Without one the springs are the paper's.
@@ -321,7 +321,9 @@ def engines(segmentsPerEdge=2,
 	# (RdemTimeStepper.contactLimit); a fixed step is checked against the Lanczos estimate, refused above it (doc/stability.md)
 	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None, contactBound=bool(recontact),
 	                          method='lanczos')
-	eng += [stepper, NewtonIntegrator(damping=damping, gravity=Vector3(gravity))]
+	newton = NewtonIntegrator(damping=damping, gravity=Vector3(gravity))
+	# with O.trackEnergy, the kinetic energy and the damping's work booked so that O.energy's total balances exactly
+	eng += [stepper, newton, RdemLeapfrogEnergy(integrator=newton)]
 	if finiteGuard:
 		eng.append(RdemFiniteGuard())
 	if dt is not None:

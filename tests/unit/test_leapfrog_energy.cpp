@@ -177,4 +177,12 @@ TEST(LeapfrogEnergy, PairedKineticEnergyOfARotatingBody)
 	EXPECT_NEAR(rdem::pairedKineticEnergy<Scalar>(2, v, v2, I, w, w2), rdem::pairedKineticEnergy<Scalar>(2, v2, v, I, w2, w), 1e-15);
 }
 
+TEST(LeapfrogEnergy, CundallDampingTorqueOpposesThePower)
+{
+	// components whose torque drives the rotation (T_i ω_i > 0) lose d T_i, the others gain it; none without rotation
+	const V3 T(2, -3, 5), w(1, 1, 0);
+	const V3 D = rdem::cundallDampingTorque<Scalar>(0.2, T, w);
+	EXPECT_LT((D - V3(-0.4, -0.6, 0)).norm(), 1e-15);
+}
+
 } // namespace

@@ -64,6 +64,21 @@ namespace rdem {
 		return mass * (velAfter - velBefore) / dt - force - gravityMass * gravity;
 	}
 
+	/* Damping torque of Cundall's non-viscous damping d on a body rotated by YADE's aspherical integrator
+	   (NewtonIntegrator::cundallDamp1st, after [Cundall1987]_): each global component of the torque T [N·m] scaled by
+	   1 - d sgn(T_i ω_i), ω the mid-step angular velocity ω_{n-1/2} [rad/s]; returns the change, -d sgn(T_i ω_i) T_i
+	   [N·m]. (That integrator does not advance ω linearly in the torque, so the torque cannot be read off the change of
+	   ω as dampingForce reads the force.) */
+	template <class S> Eigen::Matrix<S, 3, 1> cundallDampingTorque(S damping, const Eigen::Matrix<S, 3, 1>& torque, const Eigen::Matrix<S, 3, 1>& angVel)
+	{
+		Eigen::Matrix<S, 3, 1> out;
+		for (int i = 0; i < 3; ++i) {
+			const S p = torque[i] * angVel[i];
+			out[i]    = -damping * (p > 0 ? S(1) : (p < 0 ? S(-1) : S(0))) * torque[i];
+		}
+		return out;
+	}
+
 	/* Work of forces that act through one step, booked so that the leapfrog's energy balances (see above): a force D_n
 	   of step n does -½ D_n·v_{n-1/2}Δt in step n and -½ D_n·v_{n+1/2}Δt in step n+1. pending is the second half of
 	   the last step's dissipation [J]; keep it between steps (and in a saved scene). */
