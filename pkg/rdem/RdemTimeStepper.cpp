@@ -33,6 +33,21 @@ YADE_PLUGIN((RdemTimeStepper));
 CREATE_LOGGER(RdemTimeStepper);
 
 namespace {
+	/* The real interactions of the plugin (RdemGeom and RdemPhys) in the order of their bodies' ids. The stiffness and
+	   the signature are sums over them, whose last bits depend on the order: the container's order changes with O.load
+	   (interactions without geometry are not saved and come back at its end) and with the collider, so that a reloaded
+	   run would take a step differing in the last bits (issue #25). */
+	vector<const Interaction*> interactionsInIdOrder(Scene* sc)
+	{
+		vector<const Interaction*> out;
+		for (const auto& I : *sc->interactions)
+			if (I->isReal() && dynamic_cast<const RdemGeom*>(I->geom.get()) && dynamic_cast<const RdemPhys*>(I->phys.get())) out.push_back(I.get());
+		std::sort(out.begin(), out.end(), [](const Interaction* a, const Interaction* b) {
+			return std::make_pair(a->getId1(), a->getId2()) < std::make_pair(b->getId1(), b->getId2());
+		});
+		return out;
+	}
+
 	/// Adds, for one point spring, the Gershgorin terms 2(k_t/m + k_r/I_min) of one body [1/s²], from its normal and
 	/// shear stiffnesses k_n, k_s [N/m].
 	void addPoint(vector<Real>& sum, const State& s, Body::id_t id, const Vector3r& point, const Vector3r& n, Real kn, Real ks)
@@ -111,11 +126,9 @@ Real RdemTimeStepper::gershgorin(Scene* sc) const
 {
 	vector<Real> omega2(sc->bodies->size(), 0); // row sums of the mass-normalised stiffness per body [1/s²]
 	vector<char> bonded(sc->bodies->size(), 0);
-	for (const auto& I : *sc->interactions) {
-		if (!I->isReal()) continue;
-		const auto* g = dynamic_cast<RdemGeom*>(I->geom.get());
-		const auto* p = dynamic_cast<RdemPhys*>(I->phys.get());
-		if (!g || !p) continue;
+	for (const Interaction* I : interactionsInIdOrder(sc)) {
+		const auto* g = static_cast<const RdemGeom*>(I->geom.get());
+		const auto* p = static_cast<const RdemPhys*>(I->phys.get());
 		const State& s1 = *Body::byId(I->getId1(), sc)->state;
 		const State& s2 = *Body::byId(I->getId2(), sc)->state;
 		if (g->nSegments() > 0) bonded[size_t(I->getId1())] = bonded[size_t(I->getId2())] = 1;
@@ -203,11 +216,9 @@ void RdemTimeStepper::assemble(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::B
 {
 	const size_t nB = sc->bodies->size();
 	vector<char> bonded(nB, 0);
-	for (const auto& I : *sc->interactions) {
-		if (!I->isReal()) continue;
-		const auto* g = dynamic_cast<RdemGeom*>(I->geom.get());
-		const auto* p = dynamic_cast<RdemPhys*>(I->phys.get());
-		if (!g || !p) continue;
+	for (const Interaction* I : interactionsInIdOrder(sc)) {
+		const auto* g = static_cast<const RdemGeom*>(I->geom.get());
+		const auto* p = static_cast<const RdemPhys*>(I->phys.get());
 		if (g->nSegments() > 0) bonded[size_t(I->getId1())] = bonded[size_t(I->getId2())] = 1;
 		addInteraction(K, C, *I, *g, *p, sc, capDt);
 	}
@@ -257,11 +268,9 @@ vector<Real> RdemTimeStepper::springSignature(Scene* sc) const
 {
 	// what K depends on besides the poses: which springs exist and how stiff they are, which DOFs are free
 	Real nReal = 0, nSegments = 0, nSamples = 0, stiffness = 0, blocked = 0, mass = 0;
-	for (const auto& I : *sc->interactions) {
-		if (!I->isReal()) continue;
-		const auto* g = dynamic_cast<RdemGeom*>(I->geom.get());
-		const auto* p = dynamic_cast<RdemPhys*>(I->phys.get());
-		if (!g || !p) continue;
+	for (const Interaction* I : interactionsInIdOrder(sc)) {
+		const auto* g = static_cast<const RdemGeom*>(I->geom.get());
+		const auto* p = static_cast<const RdemPhys*>(I->phys.get());
 		nReal += 1;
 		nSegments += Real(g->nSegments());
 		nSamples += Real(g->sampleKey.size());

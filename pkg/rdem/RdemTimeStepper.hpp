@@ -53,12 +53,13 @@ When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the
 		((Real,dashpotRate,0,(Attr::readonly|Attr::noSave),"$\\lambda_C$ of the last Lanczos estimate: largest eigenvalue of the mass-normalised contact dashpots [1/s]; 0 when no dashpot acts (a bonded assembly before it cracks)."))
 		((vector<Real>,lastSignature,,(Attr::hidden|Attr::readonly),"What the springs were at the last Lanczos estimate (reuseUnchanged; saved, so that a reloaded run takes the same decisions)."))
 		((int,reused,0,Attr::readonly,"Updates that kept the last Lanczos estimate since it was made (``reuseUnchanged``)."))
-		((Real,checkedDt,0,(Attr::hidden|Attr::readonly|Attr::noSave),"The fixed ``O.dt`` last checked against the limit [s]."))
+		((Real,checkedDt,0,(Attr::hidden|Attr::readonly),"The fixed ``O.dt`` last checked against the limit [s] (saved, as everything the next steps depend on: a reloaded run takes the same decisions)."))
+		((long,brokenAtEstimate,0,(Attr::hidden|Attr::readonly),"Springs broken when the last estimate was made (a break triggers a new one; saved)."))
 		((bool,contactBound,false,,"Also allow for the contacts that blocks can still make (scenes with a collider, ``rdem.engines(recontact=True)``): every free block that carries no bond gets the terms of a flush contact on each of its six faces, at its own stiffness per area (doc/theory.md §6). Without it the step follows only the contacts that exist: none for a falling block, and a step set while a corner touches is unstable once a face lands."))
 		((Real,criticalDt,0,Attr::readonly,"Last estimate of the critical time step, without the safety factor [s]."))
 		((bool,contactLimit,true,,"While contacts act or can form (a contact sample, a broken spring, or with ``contactBound`` a free block without bonds), keep the automatic step below the Gershgorin bound too: ``O.dt = safety·min(criticalDt, contactDt)``. Contacts that form between two estimates bring their critical dashpots (eq. 13, $h=1$), whose limit, 0.41 of the undamped one for one oscillator, the estimate has not seen; the Gershgorin bound lies at 0.37–0.44 of the undamped limit. At 0.8 of the Lanczos limit the law's dashpot caps bind on such contacts and the contact dynamics change with the step (doc/stability.md: a rocking block that no longer overturns, a dry wall that falls below its tilt limit). A bonded assembly before its first break keeps the tight step."))
 		((Real,contactDt,0,(Attr::readonly|Attr::noSave),"The Gershgorin bound applied by ``contactLimit`` at the last automatic step [s]; inf while no contact can act (not computed for a fixed ``O.dt``)."))
-		((Real,springCriticalDt,0,(Attr::readonly|Attr::noSave),"Critical step of the springs alone, $2/\\omega_{max}$, of the last estimate [s]: a fixed ``O.dt`` above it is refused; one between ``criticalDt`` (with the contact dashpots) and it only warns."))
+		((Real,springCriticalDt,0,Attr::readonly,"Critical step of the springs alone, $2/\\omega_{max}$, of the last estimate [s]: a fixed ``O.dt`` above it is refused; one between ``criticalDt`` (with the contact dashpots) and it only warns."))
 		((bool,warned,false,(Attr::readonly|Attr::noSave),"Whether the too-large ``O.dt`` warning was printed (once per engine)."))
 		,
 		/* ctor */,
@@ -74,8 +75,6 @@ private:
 	/// The step for which the dashpots are capped as the law caps them (Law2…::dashpotCap): O.dt when the estimate
 	/// is made, 0 (no cap) if O.dt is not yet set [s]. A step chosen larger than it lowers the caps, so the estimate holds.
 	Real capDt = 0;
-	/// Springs broken when the last estimate was made (a break triggers a new one).
-	long brokenAtEstimate = 0;
 	/// Whether a contact acts or can form: a contact sample, a broken spring, or (contactBound) a free block without bonds.
 	bool contactsPossible(Scene* scene) const;
 	/// What K depends on besides the poses (reuseUnchanged).

@@ -1,6 +1,10 @@
 """Issue #7: nothing is lost on save and reload. A compression scene saved mid-run (springs partly broken, a sampled
 contact, Poisson elements partly released) and reloaded continues bit for bit as the uninterrupted run
-(one thread, as CTest runs it: OMP_NUM_THREADS=1)."""
+(one thread, as CTest runs it: OMP_NUM_THREADS=1).
+
+Issue #25: also with the automatic time step (RdemTimeStepper, the default of rdem.engines()): every step of the
+continuation takes the same O.dt to the last bit, and O.energy, booked paired across the step by RdemLeapfrogEnergy,
+continues as well."""
 import os
 import tempfile
 import unittest
@@ -24,13 +28,24 @@ def snapshot():
 	            iter=O.iter, time=O.time, dt=O.dt)
 
 
+def continuation():
+	"""Run AFTER steps; the snapshot at the end, with every step's O.dt."""
+	steps = []
+	for _ in range(AFTER):
+		O.step()
+		steps.append(O.dt)
+	out = snapshot()
+	out['steps'] = steps
+	return out
+
+
 class SaveLoad(unittest.TestCase):
 
-	def scene(self, formulation):
+	def scene(self, formulation, dt=2e-6):
 		harness.freshScene()
 		# 4x4x4 cube at 0.1 m/s: the first cracks come after ~850 steps. Beside it, a loose block rests on a fixed one under
 		# gravity: a sampled contact (collider, dashpot, friction history) that lasts through the save.
-		test = CompressionTest(blocksPerEdge=4, rate=0.1, formulation=formulation, corotational=formulation == 'consistent')
+		test = CompressionTest(blocksPerEdge=4, rate=0.1, formulation=formulation, corotational=formulation == 'consistent', dt=dt)
 		next(e for e in O.engines if isinstance(e, NewtonIntegrator)).gravity = Vector3(0, 0, -9.81)
 		floor = O.bodies.append(rdem.block((0.4, 0.1, 0.01), (0.01, 0.01, 0.01), test.material, fixed=True))
 		self.loose = O.bodies.append(rdem.block((0.4, 0.1, 0.03), (0.01, 0.01, 0.01), test.material))
@@ -47,8 +62,8 @@ class SaveLoad(unittest.TestCase):
 		"""Contacts of blocks that are not bonded, with contact points this step."""
 		return sum(1 for I in O.interactions if isinstance(I.geom, RdemGeom) and not I.geom.segArea and I.geom.sampleKey)
 
-	def roundTrip(self, formulation, ext):
-		self.scene(formulation)
+	def roundTrip(self, formulation, ext, dt=2e-6):
+		self.scene(formulation, dt)
 		# what the saved state holds: broken springs, broken segments in contact, released elements
 		self.assertGreater(self.partlyBroken(), 0)
 		self.assertGreater(self.sampledContacts(), 0)
@@ -56,11 +71,9 @@ class SaveLoad(unittest.TestCase):
 		self.assertLess(min(rdem.poissonEngine().elementScales()), 1)
 		path = os.path.join(tempfile.mkdtemp(prefix='rdem-saveload-'), 'scene' + ext)
 		O.save(path)
-		rdem.run(AFTER)
-		straight = snapshot()
+		straight = continuation()
 		O.load(path)
-		rdem.run(AFTER)
-		reloaded = snapshot()
+		reloaded = continuation()
 		for key in straight:
 			if key == 'energy':
 				continue
@@ -77,6 +90,11 @@ class SaveLoad(unittest.TestCase):
 
 	def testConsistentCorotationalXml(self):
 		self.roundTrip('consistent', '.xml.bz2')
+
+	def testAutomaticTimeStep(self):
+		for ext in ('.yade.gz', '.xml.bz2'):
+			self.roundTrip('paper', ext, dt=None)
+			self.assertTrue(rdem.timeStepper().active)
 
 
 if __name__ == '__main__':
