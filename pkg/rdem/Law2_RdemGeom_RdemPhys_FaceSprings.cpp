@@ -8,7 +8,6 @@
 #include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
-#include <pkg/rdem/RdemForceAssembler.hpp>
 #include <pkg/rdem/RdemState.hpp>
 #include <pkg/rdem/math/BlockCells.hpp>
 #include <pkg/rdem/math/FaceSprings.hpp>
@@ -427,17 +426,7 @@ Vector2r Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(
 
 void Law2_RdemGeom_RdemPhys_FaceSprings::postLoad(Law2_RdemGeom_RdemPhys_FaceSprings&)
 {
-	tensionBreaks.reset();
-	shearBreaks.reset();
-	tensionBreaks += int(savedTensionBreaks);
-	shearBreaks += int(savedShearBreaks);
-}
-
-long Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(const Scene* scene)
-{
-	long n = 0;
-	forEachLaw(scene, [&](const Law2_RdemGeom_RdemPhys_FaceSprings& law) { n += law.tensionBreaks.get() + law.shearBreaks.get(); });
-	return n;
+	if (!shared) shared = shared_ptr<RdemSharedState>(new RdemSharedState);
 }
 
 bool Law2_RdemGeom_RdemPhys_FaceSprings::totalStressOf(const Scene* scene)
@@ -447,49 +436,6 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::totalStressOf(const Scene* scene)
 	return total;
 }
 
-bool Law2_RdemGeom_RdemPhys_FaceSprings::assemblerFollows(const Scene* scene)
-{
-	const long loop = rdem::engineIndex<InteractionLoop>(scene);
-	for (size_t i = size_t(std::max(loop, 0L)); i < scene->engines.size(); ++i)
-		if (dynamic_cast<const RdemForceAssembler*>(scene->engines[i].get())) return true;
-	return false;
-}
-
-void Law2_RdemGeom_RdemPhys_FaceSprings::checkForceAssembly(const Scene* scene)
-{
-	bool defers = false;
-	forEachLaw(scene, [&](const Law2_RdemGeom_RdemPhys_FaceSprings& law) { defers = defers || law.deferForces; });
-	if (defers && !assemblerFollows(scene))
-		throw std::runtime_error(
-		        "Law2_RdemGeom_RdemPhys_FaceSprings.deferForces is True but no RdemForceAssembler follows the InteractionLoop in O.engines, "
-		        "so nothing would apply the deferred forces: put RdemForceAssembler() right after the InteractionLoop (rdem.engines() does), "
-		        "or set deferForces=False");
-}
-
-bool Law2_RdemGeom_RdemPhys_FaceSprings::deferredApplied()
-{
-	if (!deferForces) return false;
-	const long iter    = scene->iter;
-	const long checked = assemblyChecked.load(std::memory_order_relaxed);
-	if (checked >= 0 && checked / 2 == iter) return checked % 2 == 1;
-	// First interaction of the step (possibly on several threads at once: the scan only reads the engine list).
-	const bool follows = assemblerFollows(scene);
-	if (!follows && !assemblyWarned.exchange(true))
-		LOG_ERROR("deferForces is True but no RdemForceAssembler follows the InteractionLoop: forces are added directly instead");
-	assemblyChecked.store(2 * iter + (follows ? 1 : 0), std::memory_order_relaxed);
-	return follows;
-}
-
-bool Law2_RdemGeom_RdemPhys_FaceSprings::takeActiveSetChanged(const Scene* scene)
-{
-	bool changed = false;
-	forEachLaw(scene, [&](Law2_RdemGeom_RdemPhys_FaceSprings& law) {
-		if (law.activeSetChanges.get() == 0) return;
-		changed = true;
-		law.activeSetChanges.reset();
-	});
-	return changed;
-}
 
 bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
@@ -504,10 +450,10 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	Breaks       breaks;
 	ForceOnBody2 on2;
 	const bool   keep = g.nSegments() > 0 ? bondForces(g, p, pair, totalStress, e, breaks, on2) : sampledContactForces(g, p, pair, e, on2);
-	if (breaks.tension) tensionBreaks += breaks.tension;
-	if (breaks.shear) shearBreaks += breaks.shear;
+	if (breaks.tension) shared->tensionBreaks += breaks.tension;
+	if (breaks.shear) shared->shearBreaks += breaks.shear;
 	if (!keep) {
-		if (deferForces) activeSetChanges += 1;
+		if (deferForces) shared->activeSetChanges += 1;
 		if (g.bonded) recordRelease(*I, g, p);
 		return false;
 	}
@@ -521,8 +467,9 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::applyForces(const Interaction& I, RdemP
 	p.force = f2;
 	// Body 1 receives -F at every point C: Σ (C - x₁) × (-F) = -(t₂ + (x₂ - x₁) × f₂).
 	const Vector3r t1 = -(t2 + dx.cross(f2));
-	if (deferredApplied()) {
-		if (p.forceIter != scene->iter - 1) activeSetChanges += 1; // new, or back after a pause: not in the assembler's lists
+	// deferForces, and the engine list was checked to have an RdemForceAssembler after the loop (RdemSharedState)
+	if (deferForces && shared->deferredForces) {
+		if (p.forceIter != scene->iter - 1) shared->activeSetChanges += 1; // new, or back after a pause: not in the assembler's lists
 		p.torque1   = t1;
 		p.torque2   = t2;
 		p.forceIter = scene->iter;

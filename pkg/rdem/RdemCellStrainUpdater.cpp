@@ -15,7 +15,8 @@ CREATE_LOGGER(RdemCellStrainUpdater);
 void RdemCellStrainUpdater::action()
 {
 	// The cells belong to the scene's RdemPoissonEngine, which applies their forces after the loop.
-	if (RdemPoissonEngine* poisson = RdemPoissonEngine::of(scene)) poisson->cellNetwork().updateStrains(scene, ompThreads);
+	const long broken = RdemSharedState::of(scene, shared).brokenSprings(); // checks the engines when they changed
+	if (RdemPoissonEngine* poisson = RdemPoissonEngine::of(scene)) poisson->cellNetwork().updateStrains(scene, broken, ompThreads);
 }
 
 } // namespace yade

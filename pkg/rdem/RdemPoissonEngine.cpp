@@ -9,7 +9,6 @@
 #include <core/Scene.hpp>
 #include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
-#include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/OpenMPLoops.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemForceAssembler.hpp>
@@ -146,7 +145,7 @@ vector<Real> RdemPoissonEngine::elementScales()
 
 void RdemPoissonEngine::action()
 {
-	Law2_RdemGeom_RdemPhys_FaceSprings::checkForceAssembly(scene);
+	RdemSharedState::of(scene, shared); // checks the engines when they changed
 	if (nElements() > 0) hex8Action();
 	cellAction();
 }
@@ -155,7 +154,7 @@ void RdemPoissonEngine::hex8Action()
 {
 	if (!prepared()) prepare();
 	// The scales change only when a spring breaks or a bond is released or erased: recompute them only then.
-	const long broken = Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(scene), nIntrs = long(scene->interactions->size());
+	const long broken = RdemSharedState::of(scene, shared).brokenSprings(), nIntrs = long(scene->interactions->size());
 	if (broken != scalesBroken || nIntrs != scalesIntrs) {
 		scales       = elementScales();
 		scalesBroken = broken;
@@ -267,7 +266,7 @@ void RdemPoissonEngine::addStiffness(rdem::BlockStiffness<Real>& K)
 			K.addElement(n, &stiffness[stiffnessOf[e]], s[e]);
 		}
 	}
-	cells.addStiffness(scene, releaseOnCrack, K);
+	cells.addStiffness(scene, releaseOnCrack, RdemSharedState::of(scene, shared).brokenSprings(), K);
 }
 
 int RdemPoissonEngine::nCells() const

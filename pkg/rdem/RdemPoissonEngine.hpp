@@ -9,6 +9,7 @@
 #include <core/GlobalEngine.hpp>
 #include <core/Interaction.hpp>
 #include <pkg/rdem/RdemCellNetwork.hpp>
+#include <pkg/rdem/RdemSharedState.hpp>
 #include <pkg/rdem/math/Hex8.hpp>
 #include <pkg/rdem/math/StiffnessSpectrum.hpp>
 #include <map>
@@ -57,6 +58,7 @@ With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemPoisson``, the elements' or
 		((vector<Real>,lambda,,Attr::readonly,"Lamé constant $\\lambda$ of each element (see *Elements*) [Pa]."))
 		((vector<Real>,skin,,Attr::readonly,"Skin weights of each element (6 per element: $-x,+x,-y,+y,-z,+z$ of its axes), 0 without skin (paper formulation)."))
 		((bool,corotational,false,,"Remove each element's rigid rotation before $K_p$ (see *Elements*; cells need no such option)."))
+		((shared_ptr<RdemSharedState>,shared,,,"What the plugin's engines share (:yref:`RdemSharedState`: the broken springs release elements and cells; handed by ``rdem.engines()``; None: the law's, taken at the first step)."))
 		((bool,releaseOnCrack,true,,"Scale the forces of elements and cells by the intact fraction of their bonds (see above)."))
 		((vector<Real>,scalePrev,,(Attr::hidden|Attr::readonly),"Force scale of each element in the last step (saved: the energy released by cracks in the next step depends on it)."))
 		((int,energyIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))

@@ -264,7 +264,7 @@ Real RdemTimeStepper::lanczos(Scene* sc)
 	return rdem::dampedCriticalStep(est.upper(), dashpotRate);
 }
 
-vector<Real> RdemTimeStepper::springSignature(Scene* sc) const
+vector<Real> RdemTimeStepper::springSignature(Scene* sc)
 {
 	// what K depends on besides the poses: which springs exist and how stiff they are, which DOFs are free
 	Real nReal = 0, nSegments = 0, nSamples = 0, stiffness = 0, blocked = 0, mass = 0;
@@ -281,12 +281,12 @@ vector<Real> RdemTimeStepper::springSignature(Scene* sc) const
 			blocked += b->state->blockedDOFs;
 			mass += b->state->mass;
 		}
-	return { Real(sc->bodies->size()), nReal, nSegments, nSamples, stiffness, blocked, mass, Real(Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(sc)) };
+	return { Real(sc->bodies->size()), nReal, nSegments, nSamples, stiffness, blocked, mass, Real(brokenSprings(sc)) };
 }
 
-bool RdemTimeStepper::contactsPossible(Scene* sc) const
+bool RdemTimeStepper::contactsPossible(Scene* sc)
 {
-	if (Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(sc) > 0) return true;
+	if (brokenSprings(sc) > 0) return true;
 	vector<char> bonded(sc->bodies->size(), 0);
 	for (const auto& I : *sc->interactions) {
 		if (!I->isReal()) continue;
@@ -336,7 +336,7 @@ bool RdemTimeStepper::isActivated()
 	if (timeStepUpdateInterval < 1) throw std::invalid_argument("RdemTimeStepper.timeStepUpdateInterval = 0: must be an integer >= 1 [steps]");
 	// also at once when a spring breaks: its contact dashpot acts from the next step, and may need a shorter step now
 	return scene->iter % timeStepUpdateInterval == 0 || !(scene->dt > 0 && math::isfinite(scene->dt)) || (!active && scene->dt != checkedDt)
-	        || Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(scene) != brokenAtEstimate;
+	        || brokenSprings(scene) != brokenAtEstimate;
 }
 
 void RdemTimeStepper::checkFixedDt(Scene* sc)
@@ -375,7 +375,7 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 		lastSignature = signature;
 		reused        = 0;
 	}
-	brokenAtEstimate = Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(sc);
+	brokenAtEstimate = brokenSprings(sc);
 	if (!math::isfinite(criticalDt)) { // nothing elastic yet: nothing to check a fixed O.dt against
 		checkedDt = sc->dt;
 		return;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <core/TimeStepper.hpp>
+#include <pkg/rdem/RdemSharedState.hpp>
 #include <pkg/rdem/math/StiffnessSpectrum.hpp>
 
 namespace yade {
@@ -56,6 +57,7 @@ When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the
 		((Real,checkedDt,0,(Attr::hidden|Attr::readonly),"The fixed ``O.dt`` last checked against the limit [s] (saved, as everything the next steps depend on: a reloaded run takes the same decisions)."))
 		((long,brokenAtEstimate,0,(Attr::hidden|Attr::readonly),"Springs broken when the last estimate was made (a break triggers a new one; saved)."))
 		((bool,contactBound,false,,"Also allow for the contacts that blocks can still make (scenes with a collider, ``rdem.engines(recontact=True)``): every free block that carries no bond gets the terms of a flush contact on each of its six faces, at its own stiffness per area (doc/theory.md §6). Without it the step follows only the contacts that exist: none for a falling block, and a step set while a corner touches is unstable once a face lands."))
+		((shared_ptr<RdemSharedState>,shared,,,"What the plugin's engines share (:yref:`RdemSharedState`: a spring that breaks triggers a new estimate; handed by ``rdem.engines()``; None: the law's, taken at the first step)."))
 		((Real,criticalDt,0,Attr::readonly,"Last estimate of the critical time step, without the safety factor [s]."))
 		((bool,contactLimit,true,,"While contacts act or can form (a contact sample, a broken spring, or with ``contactBound`` a free block without bonds), keep the automatic step below the Gershgorin bound too: ``O.dt = safety·min(criticalDt, contactDt)``. Contacts that form between two estimates bring their critical dashpots (eq. 13, $h=1$), whose limit, 0.41 of the undamped one for one oscillator, the estimate has not seen; the Gershgorin bound lies at 0.37–0.44 of the undamped limit. At 0.8 of the Lanczos limit the law's dashpot caps bind on such contacts and the contact dynamics change with the step (doc/stability.md: a rocking block that no longer overturns, a dry wall that falls below its tilt limit). A bonded assembly before its first break keeps the tight step."))
 		((Real,contactDt,0,(Attr::readonly|Attr::noSave),"The Gershgorin bound applied by ``contactLimit`` at the last automatic step [s]; inf while no contact can act (not computed for a fixed ``O.dt``)."))
@@ -76,9 +78,11 @@ private:
 	/// is made, 0 (no cap) if O.dt is not yet set [s]. A step chosen larger than it lowers the caps, so the estimate holds.
 	Real capDt = 0;
 	/// Whether a contact acts or can form: a contact sample, a broken spring, or (contactBound) a free block without bonds.
-	bool contactsPossible(Scene* scene) const;
+	bool contactsPossible(Scene* scene);
 	/// What K depends on besides the poses (reuseUnchanged).
-	vector<Real> springSignature(Scene* scene) const;
+	vector<Real> springSignature(Scene* scene);
+	/// Restoring springs broken so far in the scene (RdemSharedState).
+	long brokenSprings(Scene* scene) { return RdemSharedState::of(scene, shared).brokenSprings(); }
 };
 REGISTER_SERIALIZABLE(RdemTimeStepper);
 

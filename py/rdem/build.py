@@ -8,7 +8,7 @@ import math
 from yade import O, utils, Vector3, Quaternion
 from yade.wrapper import (Body, RdemBlock, RdemMat, RdemJoint, ForceResetter, InsertionSortCollider, Bo1_Box_Aabb, InteractionLoop, Ig2_RdemBlock_RdemBlock_RdemGeom,
                           Ip2_RdemMat_RdemMat_RdemPhys, Law2_RdemGeom_RdemPhys_FaceSprings, RdemPoissonEngine, RdemCellStrainUpdater, RdemTimeStepper,
-                          NewtonIntegrator, RdemContactGate, RdemFiniteGuard, RdemForceAssembler, RdemLeapfrogEnergy)
+                          NewtonIntegrator, RdemContactGate, RdemFiniteGuard, RdemForceAssembler, RdemLeapfrogEnergy, RdemSharedState)
 
 #: The values of ``engines(poisson=...)``: the formulation of the springs (:yref:`Ip2_RdemMat_RdemMat_RdemPhys.formulation`, the
 #: scene's one setting) and whether there is a Poisson engine. Without one the springs are the paper's.
@@ -303,24 +303,26 @@ def engines(segmentsPerEdge=2,
 	formulation, withPoisson = POISSON_MODES[poisson]
 	if contactSamples is not None and not (isinstance(contactSamples, int) and contactSamples >= 1):
 		raise ValueError('contactSamples = %r: must be an integer >= 1 (or None: segmentsPerEdge)' % (contactSamples, ))
-	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0)], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), strengthCoV=strengthCoV, strengthPerSegment=bool(strengthPerSegment), stiffnessCoV=stiffnessCoV, seed=int(seed))],
-	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True, totalStress=failureStress == 'total')])
+	# one RdemSharedState for every engine and functor of the plugin: the crack state, the deferred forces' record, the travel
+	shared = RdemSharedState()
+	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0, shared=shared)], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), strengthCoV=strengthCoV, strengthPerSegment=bool(strengthPerSegment), stiffnessCoV=stiffnessCoV, seed=int(seed))],
+	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True, totalStress=failureStress == 'total', shared=shared)])
 	eng = [ForceResetter()]
 	if recontact not in (True, False, 'always'):
 		raise ValueError("recontact = %r: must be True, False or 'always'" % (recontact, ))
 	if recontact is True:
-		eng.append(RdemContactGate())
+		eng.append(RdemContactGate(shared=shared))
 	if recontact:
 		eng.append(InsertionSortCollider([Bo1_Box_Aabb()], verletDist=verletDist if verletDist is not None else 0.0))
 	if withPoisson and formulation == 'consistent':
-		eng.append(RdemCellStrainUpdater())  # Poisson cells of layouts that are not grids: strains before the law reads them
-	eng += [loop, RdemForceAssembler()]  # forces summed per body in a fixed order: O.load continues bit for bit
+		eng.append(RdemCellStrainUpdater(shared=shared))  # Poisson cells of layouts that are not grids: strains before the law reads them
+	eng += [loop, RdemForceAssembler(shared=shared)]  # forces summed per body in a fixed order: O.load continues bit for bit
 	if withPoisson:
-		eng.append(RdemPoissonEngine(corotational=corotational))
+		eng.append(RdemPoissonEngine(corotational=corotational, shared=shared))
 	# The automatic step is 0.8 of the tight (Lanczos) limit, also below the Gershgorin bound while contacts act or can form
 	# (RdemTimeStepper.contactLimit); a fixed step is checked against the Lanczos estimate, refused above it (doc/stability.md)
 	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None, contactBound=bool(recontact),
-	                          method='lanczos')
+	                          method='lanczos', shared=shared)
 	newton = NewtonIntegrator(damping=damping, gravity=Vector3(gravity))
 	# with O.trackEnergy, the kinetic energy and the damping's work booked so that O.energy's total balances exactly
 	eng += [stepper, newton, RdemLeapfrogEnergy(integrator=newton)]
