@@ -6,10 +6,12 @@
 *************************************************************************/
 #include <core/Scene.hpp>
 #include <pkg/rdem/FindEngine.hpp>
+#include <pkg/rdem/InteractionOrder.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/RdemState.hpp>
 #include <pkg/rdem/math/BlockCells.hpp>
+#include <pkg/rdem/math/ContactBound.hpp>
 #include <pkg/rdem/math/FaceSprings.hpp>
 #include <pkg/rdem/math/Softening.hpp>
 #include <pkg/rdem/math/SortedKeys.hpp>
@@ -506,6 +508,86 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::bookEnergies(const rdem::SpringEnergies
 	scene->energy->add(e.fractureTension, "rdemFractureTension", fractureTensionIx, false);
 	scene->energy->add(e.fractureShear, "rdemFractureShear", fractureShearIx, false);
 	scene->energy->add(e.crushing, "rdemCrushing", crushingIx, false);
+}
+
+namespace {
+	/* Every point spring of interaction I as the law applies it in this configuration, f(b1, b2, point, r1, r2, n, k_n,
+	   k_s, c_n, c_s) with the point in global coordinates and its arms from the two centroids [m], the springs [N/m] and
+	   dashpots [N·s/m] (zero where none acts):
+	   each bond segment at its material point of body 1 (paper eq. 14: the restoring spring, or the contact spring of a
+	   broken segment, of the same k̄A), with the dashpot of a broken segment that touched in the last step (it left a
+	   stress; one that touches again before the next update is covered by the time step's safety factor, as contacts
+	   that start); each contact sample with its dashpot (eq. 13). Dashpots are capped as contactConstants caps them,
+	   for the step capDt (no cap for capDt = 0); a broken segment's share of the contact area is bounded by 1. */
+	template <class F> void forPointSprings(Scene* sc, const Interaction& I, Real capDt, F f)
+	{
+		const auto&  g  = *static_cast<const RdemGeom*>(I.geom.get());
+		const auto&  p  = *static_cast<const RdemPhys*>(I.phys.get());
+		const State& s1 = *Body::byId(I.getId1(), sc)->state;
+		const State& s2 = *Body::byId(I.getId2(), sc)->state;
+		const long   b1 = I.getId1(), b2 = I.getId2();
+		const auto   dashpots = [&](const Vector3r& point, const Vector3r& n, Real a, Real share) {
+                        const Vector2r c(p.weightNormal * p.cn * a, p.weightShear * p.cs * a);
+                        return capDt > 0 ? Vector2r(c.cwiseMin(Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(s1, s1.pos, s2, s2.pos, point, n, share, capDt)))
+			                 : c;
+		};
+		const Vector3r normal = g.normal.squaredNorm() > 0 ? g.normal : Vector3r(s1.ori * g.segNormal1);
+		const Real     A      = g.segmentArea();
+		const auto     points = g.segmentPoints1();
+		for (size_t i = 0; i < points.size(); ++i) {
+			const Vector3r arm1 = s1.ori * points[i], point = s1.pos + arm1;
+			const bool         damped = i < p.segState.size() && p.segState[i] != int(rdem::SegmentState::Intact) && i < p.segSigma.size()
+			        && (p.segSigma[i] < 0 || p.segTau[i] > 0);
+			const Vector2r c = damped ? dashpots(point, normal, A, 1) : Vector2r::Zero();
+			f(b1, b2, point, arm1, Vector3r(point - s2.pos), normal, p.weightNormal * p.kn * A, p.weightShear * p.ks * A, c[0], c[1]);
+		}
+		Real contactArea = 0;
+		for (Real a : g.sampleArea)
+			contactArea += a;
+		for (size_t k = 0; k < g.sampleKey.size(); ++k) {
+			const Real     a = g.sampleArea[k];
+			const Vector2r c = dashpots(g.samplePoint[k], g.sampleNormal[k], a, a / contactArea);
+			f(b1,
+			  b2,
+			  g.samplePoint[k],
+			  Vector3r(g.samplePoint[k] - s1.pos),
+			  Vector3r(g.samplePoint[k] - s2.pos),
+			  g.sampleNormal[k],
+			  p.weightNormal * p.kn * a,
+			  p.weightShear * p.ks * a,
+			  c[0],
+			  c[1]);
+		}
+	}
+} // namespace
+
+void Law2_RdemGeom_RdemPhys_FaceSprings::addStiffness(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt)
+{
+	for (const Interaction* I : rdem::interactionsInIdOrder(sc)) {
+		const auto& g = *static_cast<const RdemGeom*>(I->geom.get());
+		if (g.nSegments() == 0 && g.sampleKey.empty()) continue;
+		K.beginPair(I->getId1(), I->getId2());
+		C.beginPair(I->getId1(), I->getId2());
+		forPointSprings(
+		        sc, *I, capDt, [&](long b1, long b2, const Vector3r&, const Vector3r& r1, const Vector3r& r2, const Vector3r& n, Real kn, Real ks, Real cn, Real cs) {
+			        K.addPointSpring(b1, b2, r1, r2, n, kn, ks);
+			        C.addPointSpring(b1, b2, r1, r2, n, cn, cs); // nothing where no dashpot acts (zero)
+		        });
+	}
+}
+
+void Law2_RdemGeom_RdemPhys_FaceSprings::addOmega2Bound(Scene* sc, vector<Real>& omega2)
+{
+	for (const Interaction* I : rdem::interactionsInIdOrder(sc)) {
+		const State& s1 = *Body::byId(I->getId1(), sc)->state;
+		const State& s2 = *Body::byId(I->getId2(), sc)->state;
+		forPointSprings(sc, *I, 0, [&](long b1, long b2, const Vector3r& point, const Vector3r&, const Vector3r&, const Vector3r& n, Real kn, Real ks, Real, Real) {
+			for (const auto& side : { std::make_pair(b1, &s1), std::make_pair(b2, &s2) })
+				if (side.second->blockedDOFs != State::DOF_ALL)
+					omega2[size_t(side.first)] += rdem::pointSpringOmega2<Real>(
+					        point - side.second->pos, n, 1, kn, ks, side.second->mass, side.second->inertia.minCoeff());
+		});
+	}
 }
 
 } // namespace yade

@@ -12,22 +12,29 @@
 #include <pkg/rdem/RdemPhys.hpp>
 #include <pkg/rdem/RdemReleasedBond.hpp>
 #include <pkg/rdem/RdemSharedState.hpp>
+#include <pkg/rdem/RdemStiffnessSource.hpp>
 #include <pkg/rdem/math/FaceSprings.hpp>
 #include <mutex>
 
 namespace yade {
 
 /// Restoring springs, their failure, and contact springs with dashpots and friction (paper §3.5-3.6, eqs. 13-17).
-class Law2_RdemGeom_RdemPhys_FaceSprings : public LawFunctor {
+class Law2_RdemGeom_RdemPhys_FaceSprings : public LawFunctor, public RdemStiffnessSource {
 public:
 	bool go(shared_ptr<IGeom>& geom, shared_ptr<IPhys>& phys, Interaction* I) override;
+	/// The springs of every bond segment (its restoring spring, or the contact spring of a broken one: the same k̄A) and
+	/// contact sample, as point springs; the dashpots of broken segments that touch and of contact samples (eq. 13),
+	/// capped by dashpotCap for capDt; interactions in the order of their bodies' ids.
+	void addStiffness(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt) override;
+	/// Per point spring, 2(k_t/m + k_r/I_min) on each free body (rdem::pointSpringOmega2).
+	void addOmega2Bound(Scene* sc, vector<Real>& omega2) override;
 	/* Stability caps (c_n, c_s) of a contact dashpot at point C with normal n (explicit central differences) [N·s/m], for
 	   the blocks with states s1, s2 and centroids x1, x2: a dashpot may at most stop, never reverse, the relative motion
 	   of its point within one step, c ≤ share·m_eff/Δt, with m_eff the pair's effective mass at the point
 	   (1/m_eff = Σ 1/m + |r×e|²/I_min over the free blocks, e the direction of the dashpot) and share its part of the
 	   interaction's contact area. For the shear dashpot, whose direction changes, |r×e|² is bounded by |r|². The caps bind
 	   where a contact drives a small effective mass, at an edge or a corner of a tumbling block, and on small blocks at
-	   the paper's h = 1; eq. (13) holds elsewhere (doc/theory.md §3). RdemTimeStepper caps its dashpots the same way. */
+	   the paper's h = 1; eq. (13) holds elsewhere (doc/theory.md §3). addStiffness caps them the same way. */
 	static Vector2r
 	dashpotCap(const State& s1, const Vector3r& x1, const State& s2, const Vector3r& x2, const Vector3r& C, const Vector3r& n, Real share, Real dt);
 	/// Whether a Law2_RdemGeom_RdemPhys_FaceSprings of the scene has totalStress (RdemPoissonEngine::build then needs cells).

@@ -254,9 +254,20 @@ vector<Real> RdemPoissonEngine::omega2Bound()
 	return w2;
 }
 
-void RdemPoissonEngine::addStiffness(rdem::BlockStiffness<Real>& K)
+void RdemPoissonEngine::addOmega2Bound(Scene* sc, vector<Real>& omega2)
 {
-	scene = Omega::instance().getScene().get();
+	if (dead) return;
+	const vector<Real> P = omega2Bound();
+	for (size_t id = 0; id < P.size() && id < omega2.size(); ++id) {
+		const auto& b = Body::byId(Body::id_t(id), sc);
+		if (b && b->state->blockedDOFs != State::DOF_ALL) omega2[id] += P[id];
+	}
+}
+
+void RdemPoissonEngine::addStiffness(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>&, Real)
+{
+	if (dead) return;
+	scene = sc;
 	if (nElements() > 0) {
 		const vector<Real> s = elementScales(); // prepares the matrices
 		for (size_t e = 0; e < s.size(); ++e) {

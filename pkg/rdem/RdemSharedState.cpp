@@ -67,6 +67,7 @@ void RdemSharedState::checkEngines(Scene* scene, const shared_ptr<RdemSharedStat
 	};
 	long loop = -1, assembler = -1, updater = -1, gate = -1, collider = -1;
 	bool defers = false;
+	stiffnessSources.clear();
 	for (size_t i = 0; i < scene->engines.size(); ++i) {
 		Engine* e = scene->engines[i].get();
 		if (auto* il = dynamic_cast<InteractionLoop*>(e)) {
@@ -75,6 +76,7 @@ void RdemSharedState::checkEngines(Scene* scene, const shared_ptr<RdemSharedStat
 				if (auto* law = dynamic_cast<Law2_RdemGeom_RdemPhys_FaceSprings*>(f.get())) {
 					hand(law->shared, "Law2_RdemGeom_RdemPhys_FaceSprings", i);
 					defers = defers || law->deferForces;
+					stiffnessSources.push_back(law);
 					ours   = true;
 				}
 			for (const auto& f : il->geomDispatcher->functors)
@@ -91,8 +93,10 @@ void RdemSharedState::checkEngines(Scene* scene, const shared_ptr<RdemSharedStat
 			if (updater < 0) updater = long(i);
 		} else if (auto* t = dynamic_cast<RdemTimeStepper*>(e))
 			hand(t->shared, "RdemTimeStepper", i);
-		else if (auto* p = dynamic_cast<RdemPoissonEngine*>(e))
+		else if (auto* p = dynamic_cast<RdemPoissonEngine*>(e)) {
 			hand(p->shared, "RdemPoissonEngine", i);
+			stiffnessSources.push_back(p);
+		}
 		else if (dynamic_cast<Collider*>(e) && collider < 0)
 			collider = long(i);
 	}

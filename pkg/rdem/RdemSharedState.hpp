@@ -9,6 +9,7 @@
 #include <lib/base/openmp-accu.hpp>
 #include <lib/serialization/Serializable.hpp>
 #include <core/Body.hpp>
+#include <pkg/rdem/RdemStiffnessSource.hpp>
 
 namespace yade {
 
@@ -51,6 +52,9 @@ public:
 	bool takeActiveSetChanged();
 	/// How far each block has moved (written by RdemContactGate, read by Ig2_RdemBlock_RdemBlock_RdemGeom; not saved).
 	rdem::BodyTravel travel;
+	/// What adds to the scene's linear stiffness (its laws and Poisson engine, in the order of O.engines), for
+	/// RdemTimeStepper (set by the check of the engines).
+	vector<RdemStiffnessSource*> stiffnessSources;
 	/* The shared state of an engine or functor of scene whose own is `mine`: if mine is None, the one of the scene's
 	   Law2_RdemGeom_RdemPhys_FaceSprings (handed to it here). Checks the scene's engines when their list changed since
 	   the last check (see checkEngines). Throws std::runtime_error if there is none. */

@@ -27,10 +27,12 @@ public:
 	Real estimate(Scene* scene);
 	/// Python: the estimate by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``).
 	Real estimatePy(const string& method);
-	/// The linear stiffness K of the scene (springs, contact samples, contacts that can still form, Poisson elements and
-	/// cells), its contact dashpots C (contact samples, broken segments, contacts that can still form) and each body's
-	/// mass normalisation.
-	void assemble(Scene* scene, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, vector<rdem::BodyScale<Real>>& scale) const;
+	/// Python: K·x, K the linear stiffness the estimate uses (assemble), x 6 values per body (u [m], θ [rad]) [N, N·m].
+	vector<Real> stiffnessTimes(const vector<Real>& x);
+	/// The linear stiffness K of the scene and its contact dashpots C, as their sources give them (RdemStiffnessSource:
+	/// the law's springs and dashpots, the Poisson engine's elements and cells), plus the contacts that can still form
+	/// (contactBound), and each body's mass normalisation.
+	void assemble(Scene* scene, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, vector<rdem::BodyScale<Real>>& scale);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemTimeStepper,TimeStepper,R"""(Time step for the refined DEM with the Poisson effect: ``O.dt = safety·Δt_crit``.
 
@@ -66,12 +68,13 @@ When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the
 		,
 		/* ctor */,
 		.def("estimate",&RdemTimeStepper::estimatePy,(py::arg("method")=""),"Critical time step of the current scene [s], without the safety factor, by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``).")
+		.def("stiffnessTimes",&RdemTimeStepper::stiffnessTimes,(py::arg("x")),"$K\\mathbf{x}$ [N, N·m], $K$ the linear stiffness of the current configuration that the estimate uses (the sources' terms, :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` and :yref:`RdemPoissonEngine`, plus the contacts to come with ``contactBound``), $\\mathbf{x}$ 6 values per body id: displacement [m] and small rotation [rad] in global axes (tests/yade/test_stiffness_source.py checks it against the forces).")
 	);
 	// clang-format on
 	DECLARE_LOGGER;
 
 private:
-	Real gershgorin(Scene* scene) const;
+	Real gershgorin(Scene* scene);
 	Real lanczos(Scene* scene);
 	void checkFixedDt(Scene* scene);
 	/// The step for which the dashpots are capped as the law caps them (Law2…::dashpotCap): O.dt when the estimate
