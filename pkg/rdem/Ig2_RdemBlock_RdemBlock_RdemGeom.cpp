@@ -177,7 +177,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 	if (!rdem::blocksOverlap<Real>(pair, tol)) {
 		// Apart: a certificate of how long they stay so (rdem::separationSlack), if the blocks' travel is recorded.
 		const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr;
-		const Real              slack = skipApart && travel && travel->currentFor(*scene) ? rdem::separationSlack<Real>(pair, tol) : Real(-1);
+		const Real              slack  = skipApart && travel && travel->currentFor(*scene) ? rdem::separationSlack<Real>(pair, tol) : Real(-1);
 		if (slack > 0) {
 			if (!I->geom || I->geom->getClassIndex() != RdemGap::getClassIndexStatic()) I->geom = shared_ptr<RdemGap>(new RdemGap);
 			auto& gap = static_cast<RdemGap&>(*I->geom);

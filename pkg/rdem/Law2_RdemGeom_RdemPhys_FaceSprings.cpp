@@ -529,14 +529,14 @@ namespace {
 		const auto   dashpots = [&](const Vector3r& point, const Vector3r& n, Real a, Real share) {
                         const Vector2r c(p.weightNormal * p.cn * a, p.weightShear * p.cs * a);
                         return capDt > 0 ? Vector2r(c.cwiseMin(Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(s1, s1.pos, s2, s2.pos, point, n, share, capDt)))
-			                 : c;
+			                   : c;
 		};
 		const Vector3r normal = g.normal.squaredNorm() > 0 ? g.normal : Vector3r(s1.ori * g.segNormal1);
 		const Real     A      = g.segmentArea();
 		const auto     points = g.segmentPoints1();
 		for (size_t i = 0; i < points.size(); ++i) {
 			const Vector3r arm1 = s1.ori * points[i], point = s1.pos + arm1;
-			const bool         damped = i < p.segState.size() && p.segState[i] != int(rdem::SegmentState::Intact) && i < p.segSigma.size()
+			const bool     damped = i < p.segState.size() && p.segState[i] != int(rdem::SegmentState::Intact) && i < p.segSigma.size()
 			        && (p.segSigma[i] < 0 || p.segTau[i] > 0);
 			const Vector2r c = damped ? dashpots(point, normal, A, 1) : Vector2r::Zero();
 			f(b1, b2, point, arm1, Vector3r(point - s2.pos), normal, p.weightNormal * p.kn * A, p.weightShear * p.ks * A, c[0], c[1]);
@@ -569,7 +569,10 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::addStiffness(Scene* sc, rdem::BlockStif
 		K.beginPair(I->getId1(), I->getId2());
 		C.beginPair(I->getId1(), I->getId2());
 		forPointSprings(
-		        sc, *I, capDt, [&](long b1, long b2, const Vector3r&, const Vector3r& r1, const Vector3r& r2, const Vector3r& n, Real kn, Real ks, Real cn, Real cs) {
+		        sc,
+		        *I,
+		        capDt,
+		        [&](long b1, long b2, const Vector3r&, const Vector3r& r1, const Vector3r& r2, const Vector3r& n, Real kn, Real ks, Real cn, Real cs) {
 			        K.addPointSpring(b1, b2, r1, r2, n, kn, ks);
 			        C.addPointSpring(b1, b2, r1, r2, n, cn, cs); // nothing where no dashpot acts (zero)
 		        });
@@ -581,12 +584,16 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::addOmega2Bound(Scene* sc, vector<Real>&
 	for (const Interaction* I : rdem::interactionsInIdOrder(sc)) {
 		const State& s1 = *Body::byId(I->getId1(), sc)->state;
 		const State& s2 = *Body::byId(I->getId2(), sc)->state;
-		forPointSprings(sc, *I, 0, [&](long b1, long b2, const Vector3r& point, const Vector3r&, const Vector3r&, const Vector3r& n, Real kn, Real ks, Real, Real) {
-			for (const auto& side : { std::make_pair(b1, &s1), std::make_pair(b2, &s2) })
-				if (side.second->blockedDOFs != State::DOF_ALL)
-					omega2[size_t(side.first)] += rdem::pointSpringOmega2<Real>(
-					        point - side.second->pos, n, 1, kn, ks, side.second->mass, side.second->inertia.minCoeff());
-		});
+		forPointSprings(
+		        sc,
+		        *I,
+		        0,
+		        [&](long b1, long b2, const Vector3r& point, const Vector3r&, const Vector3r&, const Vector3r& n, Real kn, Real ks, Real, Real) {
+			        for (const auto& side : { std::make_pair(b1, &s1), std::make_pair(b2, &s2) })
+				        if (side.second->blockedDOFs != State::DOF_ALL)
+					        omega2[size_t(side.first)] += rdem::pointSpringOmega2<Real>(
+					                point - side.second->pos, n, 1, kn, ks, side.second->mass, side.second->inertia.minCoeff());
+		        });
 	}
 }
 

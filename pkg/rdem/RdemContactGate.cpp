@@ -43,8 +43,8 @@ namespace {
 
 void RdemContactGate::updateTravel(rdem::BodyTravel& t)
 {
-	const long        nBodiesNow = long(scene->bodies->size());
-	bool              restart    = t.iter != scene->iter - 1 || long(t.travel.size()) != nBodiesNow;
+	const long nBodiesNow = long(scene->bodies->size());
+	bool       restart    = t.iter != scene->iter - 1 || long(t.travel.size()) != nBodiesNow;
 	if (restart) {
 		t.travel.assign(size_t(nBodiesNow), 0);
 		t.body.assign(size_t(nBodiesNow), nullptr);

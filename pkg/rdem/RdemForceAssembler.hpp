@@ -37,8 +37,8 @@ private:
 		Body::id_t        other;
 		bool              second;
 	};
-	vector<size_t> first;       // the list of body b is sides[first[b] .. first[b+1]) (not saved: rebuilt after O.load)
-	vector<Side>   sides;       // all lists, bodies in id order, each sorted by the other body's id
+	vector<size_t> first; // the list of body b is sides[first[b] .. first[b+1]) (not saved: rebuilt after O.load)
+	vector<Side>   sides; // all lists, bodies in id order, each sorted by the other body's id
 	long           builtIter = -1, builtBodies = -1, builtInteractions = -1;
 	void           rebuild();
 };

@@ -28,8 +28,9 @@ NewtonIntegrator* RdemLeapfrogEnergy::checkedIntegrator()
 	const long        self = at(this), other = newton ? at(newton) : -1;
 	if (other < 0 || other > self)
 		throw std::runtime_error(
-		        std::string("RdemLeapfrogEnergy (O.engines[") + std::to_string(self) + "]) books the steps of a NewtonIntegrator that runs before it, but "
-		        + (!newton ? "O.engines has no NewtonIntegrator"
+		        std::string("RdemLeapfrogEnergy (O.engines[") + std::to_string(self)
+		        + "]) books the steps of a NewtonIntegrator that runs before it, but "
+		        + (!newton             ? "O.engines has no NewtonIntegrator"
 		                   : other < 0 ? "its integrator is not in O.engines"
 		                               : "the NewtonIntegrator is O.engines[" + std::to_string(other) + "], after it")
 		        + ": place RdemLeapfrogEnergy right after the NewtonIntegrator (rdem.engines() does)");
@@ -68,11 +69,11 @@ void RdemLeapfrogEnergy::action()
 		kinTrans += rdem::pairedKineticEnergy<Real>(s.mass, v0, s.vel, Matrix3r::Zero(), w0, s.angVel);
 		kinRot += rdem::pairedKineticEnergy<Real>(0, v0, s.vel, I, w0, s.angVel);
 		if (!damped || !s.isDamped || s.blockedDOFs == State::DOF_ALL) continue;
-		Vector3r D = rdem::dampingForce<Real>(s.mass, s.mass, v0, s.vel, dt, scene->forces.getForce(b->getId()), newton.gravity);
+		Vector3r       D = rdem::dampingForce<Real>(s.mass, s.mass, v0, s.vel, dt, scene->forces.getForce(b->getId()), newton.gravity);
 		const Vector3r T = scene->forces.getTorque(b->getId());
 		// NewtonIntegrator::action: the aspherical integrator damps the torque, the spherical one the angular acceleration
 		const bool aspherical = newton.exactAsphericalRot && b->isAspherical() && (s.blockedDOFs & State::DOF_RXRYRZ) == State::DOF_NONE;
-		Vector3r   Dt         = aspherical ? rdem::cundallDampingTorque<Real>(damping, T, w0) : Vector3r(s.inertia.cwiseProduct(s.angVel - w0) / dt - T);
+		Vector3r   Dt = aspherical ? rdem::cundallDampingTorque<Real>(damping, T, w0) : Vector3r(s.inertia.cwiseProduct(s.angVel - w0) / dt - T);
 		for (int i = 0; i < 3; ++i) {
 			if (s.blockedDOFs & State::axisDOF(i, false)) D[i] = 0;
 			if (s.blockedDOFs & State::axisDOF(i, true)) Dt[i] = 0;

@@ -37,7 +37,7 @@ Rotations are paired the same way, with the inertia in global axes after the ste
 
 private:
 	/// The integrator of this step, checked to run before this engine; scene->engines as checked, to check again when it changes.
-	NewtonIntegrator*                   checkedIntegrator();
+	NewtonIntegrator*               checkedIntegrator();
 	std::vector<shared_ptr<Engine>> checkedEngines;
 	NewtonIntegrator*               checked = nullptr;
 };

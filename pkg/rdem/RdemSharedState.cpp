@@ -77,10 +77,11 @@ void RdemSharedState::checkEngines(Scene* scene, const shared_ptr<RdemSharedStat
 					hand(law->shared, "Law2_RdemGeom_RdemPhys_FaceSprings", i);
 					defers = defers || law->deferForces;
 					stiffnessSources.push_back(law);
-					ours   = true;
+					ours = true;
 				}
 			for (const auto& f : il->geomDispatcher->functors)
-				if (auto* ig2 = dynamic_cast<Ig2_RdemBlock_RdemBlock_RdemGeom*>(f.get())) hand(ig2->shared, "Ig2_RdemBlock_RdemBlock_RdemGeom", i);
+				if (auto* ig2 = dynamic_cast<Ig2_RdemBlock_RdemBlock_RdemGeom*>(f.get()))
+					hand(ig2->shared, "Ig2_RdemBlock_RdemBlock_RdemGeom", i);
 			if (ours && loop < 0) loop = long(i);
 		} else if (auto* a = dynamic_cast<RdemForceAssembler*>(e)) {
 			hand(a->shared, "RdemForceAssembler", i);
@@ -96,15 +97,15 @@ void RdemSharedState::checkEngines(Scene* scene, const shared_ptr<RdemSharedStat
 		else if (auto* p = dynamic_cast<RdemPoissonEngine*>(e)) {
 			hand(p->shared, "RdemPoissonEngine", i);
 			stiffnessSources.push_back(p);
-		}
-		else if (dynamic_cast<Collider*>(e) && collider < 0)
+		} else if (dynamic_cast<Collider*>(e) && collider < 0)
 			collider = long(i);
 	}
 	if (defers && assembler < 0)
 		throw std::runtime_error(
 		        "Law2_RdemGeom_RdemPhys_FaceSprings.deferForces is True but no RdemForceAssembler follows the InteractionLoop (O.engines["
-		        + std::to_string(loop) + "]), so nothing would apply the deferred forces: put RdemForceAssembler() right after the InteractionLoop "
-		        "(rdem.engines() does), or set deferForces=False");
+		        + std::to_string(loop)
+		        + "]), so nothing would apply the deferred forces: put RdemForceAssembler() right after the InteractionLoop "
+		          "(rdem.engines() does), or set deferForces=False");
 	if (updater >= 0 && loop >= 0 && updater > loop)
 		throw std::runtime_error(
 		        "RdemCellStrainUpdater (O.engines[" + std::to_string(updater) + "]) must come before the InteractionLoop (O.engines["

@@ -59,7 +59,7 @@ public:
 	   Law2_RdemGeom_RdemPhys_FaceSprings (handed to it here). Checks the scene's engines when their list changed since
 	   the last check (see checkEngines). Throws std::runtime_error if there is none. */
 	static RdemSharedState& of(Scene* scene, shared_ptr<RdemSharedState>& mine);
-	void preSave(RdemSharedState&)
+	void                    preSave(RdemSharedState&)
 	{
 		savedTensionBreaks = tensionBreaks.get();
 		savedShearBreaks   = shearBreaks.get();

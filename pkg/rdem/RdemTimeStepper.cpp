@@ -8,8 +8,8 @@
 #include <core/Scene.hpp>
 #include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
-#include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/InteractionOrder.hpp>
+#include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/NumberText.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
@@ -235,7 +235,8 @@ vector<Real> RdemTimeStepper::stiffnessTimes(const vector<Real>& x)
 	rdem::BlockStiffness<Real>    K(nB), C(nB);
 	vector<rdem::BodyScale<Real>> scale;
 	if (x.size() != 6 * nB)
-		throw std::invalid_argument("RdemTimeStepper.stiffnessTimes: x has " + std::to_string(x.size()) + " values: must have 6 per body (" + std::to_string(6 * nB) + ")");
+		throw std::invalid_argument(
+		        "RdemTimeStepper.stiffnessTimes: x has " + std::to_string(x.size()) + " values: must have 6 per body (" + std::to_string(6 * nB) + ")");
 	capDt = sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0);
 	assemble(sc, K, C, scale);
 	vector<Real> y(x.size());

@@ -59,8 +59,8 @@ struct Chain {
 	/// Critical step 2/ω_max of the leapfrog [s].
 	Scalar criticalDt() const
 	{
-		const VectorX                                 s = mass.cwiseSqrt().cwiseInverse();
-		const MatrixX                                 A = s.asDiagonal() * K * s.asDiagonal();
+		const VectorX                                s = mass.cwiseSqrt().cwiseInverse();
+		const MatrixX                                A = s.asDiagonal() * K * s.asDiagonal();
 		const Eigen::SelfAdjointEigenSolver<MatrixX> eig(A, Eigen::EigenvaluesOnly);
 		return 2 / std::sqrt(eig.eigenvalues().maxCoeff());
 	}
@@ -90,8 +90,8 @@ Balance run(const Chain& c, Scalar safety, Scalar damping, int steps, unsigned s
 	Scalar                  gravWork = 0, dissipated = 0, E0 = 0;
 	Balance                 out;
 	for (int step = 0; step < steps; ++step) {
-		const VectorX F = -c.K * x; // forces at x_n
-		const Scalar  U = x.dot(c.K * x) / 2;
+		const VectorX F       = -c.K * x; // forces at x_n
+		const Scalar  U       = x.dot(c.K * x) / 2;
 		Scalar        kinHalf = 0, kinPaired = 0, withBefore = 0, withAfter = 0;
 		for (int i = 0; i < n; ++i) {
 			gravWork -= c.mass[i] * c.g * v[i] * dt; // NewtonIntegrator's gravWork, with v_{n-1/2}
