@@ -103,7 +103,7 @@ void RdemCellNetwork::rebuild(Scene* scene)
 	brokenSeen        = -1;
 }
 
-void RdemCellNetwork::updateIntact(Scene* scene, long brokenSprings)
+void RdemCellNetwork::updateIntact(long brokenSprings)
 {
 	// Intact fractions change only when a spring breaks or a bond is released: recompute them only then.
 	if (brokenSprings == brokenSeen) return;
@@ -122,7 +122,7 @@ void RdemCellNetwork::updateIntact(Scene* scene, long brokenSprings)
 void RdemCellNetwork::updateStrains(Scene* scene, long brokenSprings, int threads)
 {
 	if (!refresh(scene)) return;
-	updateIntact(scene, brokenSprings);
+	updateIntact(brokenSprings);
 	const long nBlocks = long(body.size()), nBonds = long(bond.size());
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static) num_threads(rdem::threadsFor(threads))
@@ -266,7 +266,7 @@ vector<Real> RdemCellNetwork::omega2Bound(Scene* scene)
 void RdemCellNetwork::addStiffness(Scene* scene, bool releaseOnCrack, long brokenSprings, rdem::BlockStiffness<Real>& K)
 {
 	if (!refresh(scene)) return;
-	updateIntact(scene, brokenSprings);
+	updateIntact(brokenSprings);
 	// the openings u_n = n·(P₂ - P₁) at the face centres, as updateStrains, linearised: gradients n and r×n
 	vector<size_t> openingOf(bond.size());
 	for (size_t k = 0; k < bond.size(); ++k) {

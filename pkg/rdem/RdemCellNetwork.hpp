@@ -71,7 +71,7 @@ private:
 	size_t                          nCellBlocks = 0;
 	long builtGeneration = -1, builtInteractions = -1, builtBodies = -1, brokenSeen = -1;
 	void rebuild(Scene* scene);
-	void updateIntact(Scene* scene, long brokenSprings);
+	void updateIntact(long brokenSprings);
 };
 
 } // namespace yade

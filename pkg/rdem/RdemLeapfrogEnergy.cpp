@@ -19,7 +19,7 @@ CREATE_LOGGER(RdemLeapfrogEnergy);
 
 NewtonIntegrator* RdemLeapfrogEnergy::checkedIntegrator()
 {
-	if (checked && scene->engines == checkedEngines) return checked;
+	if (checked && checkedEngines.same(scene->engines)) return checked;
 	const auto at = [&](const Engine* e) {
 		const auto it = std::find_if(scene->engines.begin(), scene->engines.end(), [&](const shared_ptr<Engine>& x) { return x.get() == e; });
 		return it == scene->engines.end() ? -1L : long(it - scene->engines.begin());
@@ -34,8 +34,8 @@ NewtonIntegrator* RdemLeapfrogEnergy::checkedIntegrator()
 		                   : other < 0 ? "its integrator is not in O.engines"
 		                               : "the NewtonIntegrator is O.engines[" + std::to_string(other) + "], after it")
 		        + ": place RdemLeapfrogEnergy right after the NewtonIntegrator (rdem.engines() does)");
-	checkedEngines = scene->engines;
-	checked        = newton;
+	checkedEngines.take(scene->engines);
+	checked = newton;
 	return newton;
 }
 

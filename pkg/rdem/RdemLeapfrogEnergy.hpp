@@ -8,6 +8,7 @@
 
 #include <core/GlobalEngine.hpp>
 #include <pkg/dem/NewtonIntegrator.hpp>
+#include <pkg/rdem/RdemSharedState.hpp>
 
 namespace yade {
 
@@ -37,9 +38,9 @@ Rotations are paired the same way, with the inertia in global axes after the ste
 
 private:
 	/// The integrator of this step, checked to run before this engine; scene->engines as checked, to check again when it changes.
-	NewtonIntegrator*               checkedIntegrator();
-	std::vector<shared_ptr<Engine>> checkedEngines;
-	NewtonIntegrator*               checked = nullptr;
+	NewtonIntegrator*     checkedIntegrator();
+	rdem::EngineListStamp checkedEngines;
+	NewtonIntegrator*     checked = nullptr;
 };
 REGISTER_SERIALIZABLE(RdemLeapfrogEnergy);
 

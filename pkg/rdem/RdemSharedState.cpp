@@ -51,7 +51,7 @@ RdemSharedState& RdemSharedState::of(Scene* scene, shared_ptr<RdemSharedState>& 
 		});
 		if (!mine) mine = shared_ptr<RdemSharedState>(new RdemSharedState); // no law: nothing breaks, nothing to share
 	}
-	if (mine->checkedEngines != scene->engines) mine->checkEngines(scene, mine);
+	if (!mine->checkedEngines.same(scene->engines)) mine->checkEngines(scene, mine);
 	return *mine;
 }
 
@@ -115,7 +115,7 @@ void RdemSharedState::checkEngines(Scene* scene, const shared_ptr<RdemSharedStat
 		        "RdemContactGate (O.engines[" + std::to_string(gate) + "]) must come before the collider (O.engines[" + std::to_string(collider)
 		        + "]), which it switches on when contacts can occur (rdem.engines() places it)");
 	deferredForces = defers;
-	checkedEngines = scene->engines;
+	checkedEngines.take(scene->engines);
 }
 
 } // namespace yade

@@ -9,12 +9,13 @@
 #include <lib/base/openmp-accu.hpp>
 #include <lib/serialization/Serializable.hpp>
 #include <core/Body.hpp>
+#include <core/Engine.hpp>
 #include <pkg/rdem/RdemStiffnessSource.hpp>
+#include <boost/weak_ptr.hpp>
 
 namespace yade {
 
 class Scene;
-class Engine;
 
 namespace rdem {
 	/* How far each body has moved since a reference step [m]: by body id, the sum over steps of rdem::rigidTravel,
@@ -32,6 +33,23 @@ namespace rdem {
 		vector<Real>         radius; ///< circumradius of the block about its centroid, 0 for other shapes [m]
 		/// Whether the record holds the configurations of step iter of a scene that is not periodic.
 		bool currentFor(const Scene& scene) const;
+	};
+
+	/// O.engines as last seen, without owning the engines (an engine that held the list it is in would never be freed).
+	class EngineListStamp {
+	public:
+		/// Whether engines is the list seen last (the same engines in the same order).
+		bool same(const vector<shared_ptr<Engine>>& engines) const
+		{
+			if (engines.size() != seen.size()) return false;
+			for (size_t i = 0; i < engines.size(); ++i)
+				if (seen[i].lock() != engines[i]) return false;
+			return true;
+		}
+		void take(const vector<shared_ptr<Engine>>& engines) { seen.assign(engines.begin(), engines.end()); }
+
+	private:
+		vector<boost::weak_ptr<Engine>> seen;
 	};
 }
 
@@ -84,7 +102,7 @@ public:
 	DECLARE_LOGGER;
 
 private:
-	vector<shared_ptr<Engine>> checkedEngines; // O.engines at the last check
+	rdem::EngineListStamp checkedEngines; // O.engines at the last check
 	/* Once per engine list (the first step, and whenever O.engines changes): hands self (this object) to the plugin's
 	   engines and functors that have none, and throws std::runtime_error naming the engine that holds another one, is
 	   missing or is out of place: an RdemForceAssembler after the InteractionLoop whose law defers its forces, an

@@ -85,7 +85,7 @@ private:
 	/// What K depends on besides the poses (reuseUnchanged).
 	vector<Real> springSignature(Scene* scene);
 	/// Restoring springs broken so far in the scene (RdemSharedState).
-	long brokenSprings(Scene* scene) { return RdemSharedState::of(scene, shared).brokenSprings(); }
+	long brokenSprings(Scene* sc) { return RdemSharedState::of(sc, shared).brokenSprings(); }
 };
 REGISTER_SERIALIZABLE(RdemTimeStepper);
 
