@@ -68,6 +68,7 @@ void RdemSharedState::checkEngines(Scene* scene, const shared_ptr<RdemSharedStat
 	long loop = -1, assembler = -1, updater = -1, gate = -1, collider = -1;
 	bool defers = false;
 	stiffnessSources.clear();
+	cells = nullptr;
 	for (size_t i = 0; i < scene->engines.size(); ++i) {
 		Engine* e = scene->engines[i].get();
 		if (auto* il = dynamic_cast<InteractionLoop*>(e)) {
@@ -97,6 +98,7 @@ void RdemSharedState::checkEngines(Scene* scene, const shared_ptr<RdemSharedStat
 		else if (auto* p = dynamic_cast<RdemPoissonEngine*>(e)) {
 			hand(p->shared, "RdemPoissonEngine", i);
 			stiffnessSources.push_back(p);
+			if (!cells) cells = &p->cellNetwork();
 		} else if (dynamic_cast<Collider*>(e) && collider < 0)
 			collider = long(i);
 	}

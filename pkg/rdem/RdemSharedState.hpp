@@ -16,6 +16,7 @@
 namespace yade {
 
 class Scene;
+class RdemCellNetwork;
 
 namespace rdem {
 	/* How far each body has moved since a reference step [m]: by body id, the sum over steps of rdem::rigidTravel,
@@ -73,6 +74,9 @@ public:
 	/// What adds to the scene's linear stiffness (its laws and Poisson engine, in the order of O.engines), for
 	/// RdemTimeStepper (set by the check of the engines).
 	vector<RdemStiffnessSource*> stiffnessSources;
+	/// The Poisson cells, owned by the scene's RdemPoissonEngine, whose strains RdemCellStrainUpdater updates before the
+	/// interaction loop (set by the check of the engines; none without a Poisson engine).
+	RdemCellNetwork* cells = nullptr;
 	/* The shared state of an engine or functor of scene whose own is `mine`: if mine is None, the one of the scene's
 	   Law2_RdemGeom_RdemPhys_FaceSprings (handed to it here). Checks the scene's engines when their list changed since
 	   the last check (see checkEngines). Throws std::runtime_error if there is none. */
