@@ -45,7 +45,7 @@ void RdemLeapfrogEnergy::action()
 	if (!scene->trackEnergy) return; // recordedIter stays behind: the next tracked step starts afresh
 	const size_t nBodies = scene->bodies->size();
 	// the step's velocities before the integrator, kept from the last step (see the class documentation)
-	const bool paired = recordedIter == scene->iter - 1 && velAfter.size() == nBodies && !scene->isPeriodic && !newton.get_densityScaling();
+	const bool paired = recordedIter == scene->iter - 1 && velAfter.size() == nBodies && !scene->isPeriodic && !newton.densityScaling;
 	const Real dt = scene->dt, damping = newton.damping;
 	const bool damped = paired && damping != 0;
 	if (damped) scene->forces.sync(); // synced by the integrator already; a no-op then
