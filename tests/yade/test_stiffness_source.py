@@ -10,7 +10,8 @@ rotations of 1e-7 rad (the linear range of the 2 cm blocks: second-order terms ~
 Tolerance: |F(du) - F(0) + K du| <= 1e-5 |K du|: the springs follow the blocks' rotations (their normals and arms turn
 by du's rotations), a second-order term of relative size ~1e-7; round-off of positions ~1e-17 m against 1e-9 m
 displacements, 1e-8. A term missing from K or from the forces (a spring, an element, a weight of the consistent
-formulation) is of relative size >= 1e-2."""
+formulation) is of relative size >= 1e-2. Measured: 3.0e-8 (paper element), 5.8e-8 (consistent element), 6.3e-8
+(cells), 3.4e-8 (springs only)."""
 import random
 import unittest
 import harness
