@@ -33,7 +33,7 @@ NewtonIntegrator* RdemLeapfrogEnergy::checkedIntegrator()
 		        + (!newton             ? "O.engines has no NewtonIntegrator"
 		                   : other < 0 ? "its integrator is not in O.engines"
 		                               : "the NewtonIntegrator is O.engines[" + std::to_string(other) + "], after it")
-		        + ": place RdemLeapfrogEnergy right after the NewtonIntegrator (rdem.engines() does)");
+		        + ": place RdemLeapfrogEnergy after the NewtonIntegrator (rdem.engines() does)");
 	checkedEngines.take(scene->engines);
 	checked = newton;
 	return newton;

@@ -324,10 +324,11 @@ def engines(segmentsPerEdge=2,
 	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None, contactBound=bool(recontact),
 	                          method='lanczos', shared=shared)
 	newton = NewtonIntegrator(damping=damping, gravity=Vector3(gravity))
-	# with O.trackEnergy, the kinetic energy and the damping's work booked so that O.energy's total balances exactly
-	eng += [stepper, newton, RdemLeapfrogEnergy(integrator=newton)]
+	eng += [stepper, newton]
 	if finiteGuard:
 		eng.append(RdemFiniteGuard())
+	# with O.trackEnergy, the kinetic energy and the damping's work booked so that O.energy's total balances exactly
+	eng.append(RdemLeapfrogEnergy(integrator=newton))
 	if dt is not None:
 		O.dt = dt
 	return eng
