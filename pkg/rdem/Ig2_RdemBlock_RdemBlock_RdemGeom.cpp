@@ -6,7 +6,6 @@
 *************************************************************************/
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
 #include <pkg/rdem/NumberText.hpp>
-#include <pkg/rdem/RdemContactGate.hpp>
 #include <pkg/rdem/RdemPrefetch.hpp>
 #include <pkg/rdem/math/BlockGeometry.hpp>
 #include <pkg/rdem/math/SegmentGrid.hpp>
@@ -140,6 +139,7 @@ void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom
 
 bool Ig2_RdemBlock_RdemBlock_RdemGeom::stillApart(const Interaction& I) const
 {
+	const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr; // recorded by RdemContactGate
 	if (!I.geom || !travel || !travel->currentFor(*scene) || I.geom->getClassIndex() != RdemGap::getClassIndexStatic()) return false;
 	const auto& gap = static_cast<const RdemGap&>(*I.geom);
 	return gap.epoch == travel->epoch && travel->travel[size_t(I.getId1())] + travel->travel[size_t(I.getId2())] < gap.reach;
@@ -176,7 +176,8 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 	const Real                  tol = touchTolerance(A, B);
 	if (!rdem::blocksOverlap<Real>(pair, tol)) {
 		// Apart: a certificate of how long they stay so (rdem::separationSlack), if the blocks' travel is recorded.
-		const Real slack = skipApart && travel && travel->currentFor(*scene) ? rdem::separationSlack<Real>(pair, tol) : Real(-1);
+		const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr;
+		const Real              slack  = skipApart && travel && travel->currentFor(*scene) ? rdem::separationSlack<Real>(pair, tol) : Real(-1);
 		if (slack > 0) {
 			if (!I->geom || I->geom->getClassIndex() != RdemGap::getClassIndexStatic()) I->geom = shared_ptr<RdemGap>(new RdemGap);
 			auto& gap = static_cast<RdemGap&>(*I->geom);

@@ -10,13 +10,10 @@
 #include <core/Dispatching.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
+#include <pkg/rdem/RdemSharedState.hpp>
 #include <pkg/rdem/math/BlockGeometry.hpp>
 
 namespace yade {
-
-namespace rdem {
-	struct BodyTravel;
-}
 
 /// A pair of blocks the collider found near each other but that are apart, and how long they stay so.
 class RdemGap : public IGeom {
@@ -55,8 +52,6 @@ public:
 	Real                    skippedTestsPy() const { return skippedTests.get(); }
 	/// The sample grid of sampled contacts: contactSamplesPerEdge, or segmentsPerEdge if that is 0.
 	int contactSamples() const { return contactSamplesPerEdge > 0 ? contactSamplesPerEdge : segmentsPerEdge; }
-	/// How far each block has moved, set by RdemContactGate at each step of contact detection (null: pairs not skipped).
-	shared_ptr<const rdem::BodyTravel> travel;
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Ig2_RdemBlock_RdemBlock_RdemGeom,IGeomFunctor,R"""(Geometry functor of two :yref:`RdemBlock`, producing :yref:`RdemGeom`.
 
@@ -70,6 +65,7 @@ Not for periodic cells with shear (``shift2`` of the cell is honoured, the cell'
 		((Real,bondGapTolerance,1e-6,Attr::triggerPostLoad,"Largest gap or overlap between two faces that are bonded, relative to the smaller half-extent of the two blocks."))
 		((shared_ptr<RdemJoint>,joint,,,"The :yref:`RdemJoint` given to the bonds made from now on (by ``utils.createInteraction``), or None (default): blocks bonded directly. ``rdem.bond(..., joint=...)`` sets it for its bonds and resets it."))
 		((bool,skipApart,true,,"Test a pair of blocks found apart again only once they may have moved enough to touch (:yref:`RdemGap`, with the travel recorded by :yref:`RdemContactGate`): after the first crack, the collider's pairs of grid neighbours that are apart by a strain-sized gap cost a few loads per step instead of a separating-axis test. Exact: the pairs skipped are those the test would find apart, so results do not depend on it."))
+		((shared_ptr<RdemSharedState>,shared,,,"What the plugin's engines share (:yref:`RdemSharedState`): the blocks' travel, recorded by :yref:`RdemContactGate` (handed by ``rdem.engines()``; None: the law's, taken at the first step; pairs are not skipped without it)."))
 		((int,prefetchDistance,-1,Attr::triggerPostLoad,"How many interactions ahead of the one being processed this functor asks the processor to fetch the data of (interaction, geometry, physics, bodies and their states, in stages; ``pkg/rdem/RdemPrefetch.hpp``), to hide the memory latency of scenes larger than the cache. $-1$ (default): automatic, 8 once the interactions' data exceed the last-level cache, else off; 0: off; $>0$: always, at this distance. A hint only: results do not depend on it. $\\ge -1$."))
 		,
 		/* ctor */

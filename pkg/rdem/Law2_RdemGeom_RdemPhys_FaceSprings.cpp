@@ -6,11 +6,12 @@
 *************************************************************************/
 #include <core/Scene.hpp>
 #include <pkg/rdem/FindEngine.hpp>
+#include <pkg/rdem/InteractionOrder.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
-#include <pkg/rdem/RdemForceAssembler.hpp>
 #include <pkg/rdem/RdemState.hpp>
 #include <pkg/rdem/math/BlockCells.hpp>
+#include <pkg/rdem/math/ContactBound.hpp>
 #include <pkg/rdem/math/FaceSprings.hpp>
 #include <pkg/rdem/math/Softening.hpp>
 #include <pkg/rdem/math/SortedKeys.hpp>
@@ -427,17 +428,7 @@ Vector2r Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(
 
 void Law2_RdemGeom_RdemPhys_FaceSprings::postLoad(Law2_RdemGeom_RdemPhys_FaceSprings&)
 {
-	tensionBreaks.reset();
-	shearBreaks.reset();
-	tensionBreaks += int(savedTensionBreaks);
-	shearBreaks += int(savedShearBreaks);
-}
-
-long Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(const Scene* scene)
-{
-	long n = 0;
-	forEachLaw(scene, [&](const Law2_RdemGeom_RdemPhys_FaceSprings& law) { n += law.tensionBreaks.get() + law.shearBreaks.get(); });
-	return n;
+	if (!shared) shared = shared_ptr<RdemSharedState>(new RdemSharedState);
 }
 
 bool Law2_RdemGeom_RdemPhys_FaceSprings::totalStressOf(const Scene* scene)
@@ -447,49 +438,6 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::totalStressOf(const Scene* scene)
 	return total;
 }
 
-bool Law2_RdemGeom_RdemPhys_FaceSprings::assemblerFollows(const Scene* scene)
-{
-	const long loop = rdem::engineIndex<InteractionLoop>(scene);
-	for (size_t i = size_t(std::max(loop, 0L)); i < scene->engines.size(); ++i)
-		if (dynamic_cast<const RdemForceAssembler*>(scene->engines[i].get())) return true;
-	return false;
-}
-
-void Law2_RdemGeom_RdemPhys_FaceSprings::checkForceAssembly(const Scene* scene)
-{
-	bool defers = false;
-	forEachLaw(scene, [&](const Law2_RdemGeom_RdemPhys_FaceSprings& law) { defers = defers || law.deferForces; });
-	if (defers && !assemblerFollows(scene))
-		throw std::runtime_error(
-		        "Law2_RdemGeom_RdemPhys_FaceSprings.deferForces is True but no RdemForceAssembler follows the InteractionLoop in O.engines, "
-		        "so nothing would apply the deferred forces: put RdemForceAssembler() right after the InteractionLoop (rdem.engines() does), "
-		        "or set deferForces=False");
-}
-
-bool Law2_RdemGeom_RdemPhys_FaceSprings::deferredApplied()
-{
-	if (!deferForces) return false;
-	const long iter    = scene->iter;
-	const long checked = assemblyChecked.load(std::memory_order_relaxed);
-	if (checked >= 0 && checked / 2 == iter) return checked % 2 == 1;
-	// First interaction of the step (possibly on several threads at once: the scan only reads the engine list).
-	const bool follows = assemblerFollows(scene);
-	if (!follows && !assemblyWarned.exchange(true))
-		LOG_ERROR("deferForces is True but no RdemForceAssembler follows the InteractionLoop: forces are added directly instead");
-	assemblyChecked.store(2 * iter + (follows ? 1 : 0), std::memory_order_relaxed);
-	return follows;
-}
-
-bool Law2_RdemGeom_RdemPhys_FaceSprings::takeActiveSetChanged(const Scene* scene)
-{
-	bool changed = false;
-	forEachLaw(scene, [&](Law2_RdemGeom_RdemPhys_FaceSprings& law) {
-		if (law.activeSetChanges.get() == 0) return;
-		changed = true;
-		law.activeSetChanges.reset();
-	});
-	return changed;
-}
 
 bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
@@ -504,10 +452,10 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	Breaks       breaks;
 	ForceOnBody2 on2;
 	const bool   keep = g.nSegments() > 0 ? bondForces(g, p, pair, totalStress, e, breaks, on2) : sampledContactForces(g, p, pair, e, on2);
-	if (breaks.tension) tensionBreaks += breaks.tension;
-	if (breaks.shear) shearBreaks += breaks.shear;
+	if (breaks.tension) shared->tensionBreaks += breaks.tension;
+	if (breaks.shear) shared->shearBreaks += breaks.shear;
 	if (!keep) {
-		if (deferForces) activeSetChanges += 1;
+		if (deferForces) shared->activeSetChanges += 1;
 		if (g.bonded) recordRelease(*I, g, p);
 		return false;
 	}
@@ -521,8 +469,9 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::applyForces(const Interaction& I, RdemP
 	p.force = f2;
 	// Body 1 receives -F at every point C: Σ (C - x₁) × (-F) = -(t₂ + (x₂ - x₁) × f₂).
 	const Vector3r t1 = -(t2 + dx.cross(f2));
-	if (deferredApplied()) {
-		if (p.forceIter != scene->iter - 1) activeSetChanges += 1; // new, or back after a pause: not in the assembler's lists
+	// deferForces, and the engine list was checked to have an RdemForceAssembler after the loop (RdemSharedState)
+	if (deferForces && shared->deferredForces) {
+		if (p.forceIter != scene->iter - 1) shared->activeSetChanges += 1; // new, or back after a pause: not in the assembler's lists
 		p.torque1   = t1;
 		p.torque2   = t2;
 		p.forceIter = scene->iter;
@@ -559,6 +508,93 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::bookEnergies(const rdem::SpringEnergies
 	scene->energy->add(e.fractureTension, "rdemFractureTension", fractureTensionIx, false);
 	scene->energy->add(e.fractureShear, "rdemFractureShear", fractureShearIx, false);
 	scene->energy->add(e.crushing, "rdemCrushing", crushingIx, false);
+}
+
+namespace {
+	/* Every point spring of interaction I as the law applies it in this configuration, f(b1, b2, point, r1, r2, n, k_n,
+	   k_s, c_n, c_s) with the point in global coordinates and its arms from the two centroids [m], the springs [N/m] and
+	   dashpots [N·s/m] (zero where none acts):
+	   each bond segment at its material point of body 1 (paper eq. 14: the restoring spring, or the contact spring of a
+	   broken segment, of the same k̄A), with the dashpot of a broken segment that touched in the last step (it left a
+	   stress; one that touches again before the next update is covered by the time step's safety factor, as contacts
+	   that start); each contact sample with its dashpot (eq. 13). Dashpots are capped as contactConstants caps them,
+	   for the step capDt (no cap for capDt = 0); a broken segment's share of the contact area is bounded by 1. */
+	template <class F> void forPointSprings(Scene* sc, const Interaction& I, Real capDt, F f)
+	{
+		const auto&  g  = *static_cast<const RdemGeom*>(I.geom.get());
+		const auto&  p  = *static_cast<const RdemPhys*>(I.phys.get());
+		const State& s1 = *Body::byId(I.getId1(), sc)->state;
+		const State& s2 = *Body::byId(I.getId2(), sc)->state;
+		const long   b1 = I.getId1(), b2 = I.getId2();
+		const auto   dashpots = [&](const Vector3r& point, const Vector3r& n, Real a, Real share) {
+                        const Vector2r c(p.weightNormal * p.cn * a, p.weightShear * p.cs * a);
+                        return capDt > 0 ? Vector2r(c.cwiseMin(Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(s1, s1.pos, s2, s2.pos, point, n, share, capDt)))
+			                   : c;
+		};
+		const Vector3r normal = g.normal.squaredNorm() > 0 ? g.normal : Vector3r(s1.ori * g.segNormal1);
+		const Real     A      = g.segmentArea();
+		const auto     points = g.segmentPoints1();
+		for (size_t i = 0; i < points.size(); ++i) {
+			const Vector3r arm1 = s1.ori * points[i], point = s1.pos + arm1;
+			const bool     damped = i < p.segState.size() && p.segState[i] != int(rdem::SegmentState::Intact) && i < p.segSigma.size()
+			        && (p.segSigma[i] < 0 || p.segTau[i] > 0);
+			const Vector2r c = damped ? dashpots(point, normal, A, 1) : Vector2r::Zero();
+			f(b1, b2, point, arm1, Vector3r(point - s2.pos), normal, p.weightNormal * p.kn * A, p.weightShear * p.ks * A, c[0], c[1]);
+		}
+		Real contactArea = 0;
+		for (Real a : g.sampleArea)
+			contactArea += a;
+		for (size_t k = 0; k < g.sampleKey.size(); ++k) {
+			const Real     a = g.sampleArea[k];
+			const Vector2r c = dashpots(g.samplePoint[k], g.sampleNormal[k], a, a / contactArea);
+			f(b1,
+			  b2,
+			  g.samplePoint[k],
+			  Vector3r(g.samplePoint[k] - s1.pos),
+			  Vector3r(g.samplePoint[k] - s2.pos),
+			  g.sampleNormal[k],
+			  p.weightNormal * p.kn * a,
+			  p.weightShear * p.ks * a,
+			  c[0],
+			  c[1]);
+		}
+	}
+} // namespace
+
+void Law2_RdemGeom_RdemPhys_FaceSprings::addStiffness(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt)
+{
+	for (const Interaction* I : rdem::interactionsInIdOrder(sc)) {
+		const auto& g = *static_cast<const RdemGeom*>(I->geom.get());
+		if (g.nSegments() == 0 && g.sampleKey.empty()) continue;
+		K.beginPair(I->getId1(), I->getId2());
+		C.beginPair(I->getId1(), I->getId2());
+		forPointSprings(
+		        sc,
+		        *I,
+		        capDt,
+		        [&](long b1, long b2, const Vector3r&, const Vector3r& r1, const Vector3r& r2, const Vector3r& n, Real kn, Real ks, Real cn, Real cs) {
+			        K.addPointSpring(b1, b2, r1, r2, n, kn, ks);
+			        C.addPointSpring(b1, b2, r1, r2, n, cn, cs); // nothing where no dashpot acts (zero)
+		        });
+	}
+}
+
+void Law2_RdemGeom_RdemPhys_FaceSprings::addOmega2Bound(Scene* sc, vector<Real>& omega2)
+{
+	for (const Interaction* I : rdem::interactionsInIdOrder(sc)) {
+		const State& s1 = *Body::byId(I->getId1(), sc)->state;
+		const State& s2 = *Body::byId(I->getId2(), sc)->state;
+		forPointSprings(
+		        sc,
+		        *I,
+		        0,
+		        [&](long b1, long b2, const Vector3r& point, const Vector3r&, const Vector3r&, const Vector3r& n, Real kn, Real ks, Real, Real) {
+			        for (const auto& side : { std::make_pair(b1, &s1), std::make_pair(b2, &s2) })
+				        if (side.second->blockedDOFs != State::DOF_ALL)
+					        omega2[size_t(side.first)] += rdem::pointSpringOmega2<Real>(
+					                point - side.second->pos, n, 1, kn, ks, side.second->mass, side.second->inertia.minCoeff());
+		        });
+	}
 }
 
 } // namespace yade

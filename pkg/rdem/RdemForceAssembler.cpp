@@ -5,7 +5,6 @@
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
 #include <core/Scene.hpp>
-#include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/OpenMPLoops.hpp>
 #include <pkg/rdem/RdemForceAssembler.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
@@ -60,7 +59,7 @@ void RdemForceAssembler::prepareDirectSums(Scene* scene, long nBodies)
 
 void RdemForceAssembler::action()
 {
-	const bool changed = Law2_RdemGeom_RdemPhys_FaceSprings::takeActiveSetChanged(scene);
+	const bool changed = RdemSharedState::of(scene, shared).takeActiveSetChanged();
 	if (changed || builtIter != scene->iter - 1 || builtBodies != long(scene->bodies->size()) || builtInteractions != long(scene->interactions->size()))
 		rebuild();
 	builtIter          = scene->iter;

@@ -9,6 +9,8 @@
 #include <core/GlobalEngine.hpp>
 #include <core/Interaction.hpp>
 #include <pkg/rdem/RdemCellNetwork.hpp>
+#include <pkg/rdem/RdemSharedState.hpp>
+#include <pkg/rdem/RdemStiffnessSource.hpp>
 #include <pkg/rdem/math/Hex8.hpp>
 #include <pkg/rdem/math/StiffnessSpectrum.hpp>
 #include <map>
@@ -17,7 +19,7 @@
 namespace yade {
 
 /// The Poisson effect: the paper's virtual hexahedra on 2×2×2 groups of blocks (eqs. 18-21), or Poisson cells on any layout.
-class RdemPoissonEngine : public GlobalEngine {
+class RdemPoissonEngine : public GlobalEngine, public RdemStiffnessSource {
 public:
 	void action() override;
 	/// Make the elements (a grid of 2×2×2 groups) or the cells (any layout) of the blocks ids (all blocks if empty), as
@@ -29,7 +31,10 @@ public:
 	vector<Real> omega2Bound();
 	/// Adds the linear stiffness of the elements (s K_p on their nodes' translations, without the corotational frame's
 	/// rotation) and of the cells to K, for RdemTimeStepper; K points to this engine's matrices until the next build.
-	void addStiffness(rdem::BlockStiffness<Real>& K);
+	/// No dashpots. Nothing while the engine is dead.
+	void addStiffness(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt) override;
+	/// omega2Bound on the bodies that are not fixed; nothing while the engine is dead.
+	void addOmega2Bound(Scene* sc, vector<Real>& omega2) override;
 	/// Number of elements (paper's hexahedra).
 	int nElements() const { return int(nodes.size() / 8); }
 	/// Number of blocks with a Poisson cell.
@@ -58,6 +63,7 @@ With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemPoisson``, the elements' or
 		((vector<Real>,lambda,,Attr::readonly,"Lamé constant $\\lambda$ of each element (see *Elements*) [Pa]."))
 		((vector<Real>,skin,,Attr::readonly,"Skin weights of each element (6 per element: $-x,+x,-y,+y,-z,+z$ of its axes), 0 without skin (paper formulation)."))
 		((bool,corotational,false,,"Remove each element's rigid rotation before $K_p$ (see *Elements*; cells need no such option)."))
+		((shared_ptr<RdemSharedState>,shared,,,"What the plugin's engines share (:yref:`RdemSharedState`: the broken springs release elements and cells; handed by ``rdem.engines()``; None: the law's, taken at the first step)."))
 		((bool,releaseOnCrack,true,,"Scale the forces of elements and cells by the intact fraction of their bonds (see above)."))
 		((vector<Real>,scalePrev,,(Attr::hidden|Attr::readonly),"Force scale of each element in the last step (saved: the energy released by cracks in the next step depends on it)."))
 		((int,energyIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <core/TimeStepper.hpp>
+#include <pkg/rdem/RdemSharedState.hpp>
 #include <pkg/rdem/math/StiffnessSpectrum.hpp>
 
 namespace yade {
@@ -26,10 +27,12 @@ public:
 	Real estimate(Scene* scene);
 	/// Python: the estimate by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``).
 	Real estimatePy(const string& method);
-	/// The linear stiffness K of the scene (springs, contact samples, contacts that can still form, Poisson elements and
-	/// cells), its contact dashpots C (contact samples, broken segments, contacts that can still form) and each body's
-	/// mass normalisation.
-	void assemble(Scene* scene, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, vector<rdem::BodyScale<Real>>& scale) const;
+	/// Python: K·x, K the linear stiffness the estimate uses (assemble), x 6 values per body (u [m], θ [rad]) [N, N·m].
+	vector<Real> stiffnessTimes(const vector<Real>& x);
+	/// The linear stiffness K of the scene and its contact dashpots C, as their sources give them (RdemStiffnessSource:
+	/// the law's springs and dashpots, the Poisson engine's elements and cells), plus the contacts that can still form
+	/// (contactBound), and each body's mass normalisation.
+	void assemble(Scene* scene, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, vector<rdem::BodyScale<Real>>& scale);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemTimeStepper,TimeStepper,R"""(Time step for the refined DEM with the Poisson effect: ``O.dt = safety·Δt_crit``.
 
@@ -53,33 +56,36 @@ When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the
 		((Real,dashpotRate,0,(Attr::readonly|Attr::noSave),"$\\lambda_C$ of the last Lanczos estimate: largest eigenvalue of the mass-normalised contact dashpots [1/s]; 0 when no dashpot acts (a bonded assembly before it cracks)."))
 		((vector<Real>,lastSignature,,(Attr::hidden|Attr::readonly),"What the springs were at the last Lanczos estimate (reuseUnchanged; saved, so that a reloaded run takes the same decisions)."))
 		((int,reused,0,Attr::readonly,"Updates that kept the last Lanczos estimate since it was made (``reuseUnchanged``)."))
-		((Real,checkedDt,0,(Attr::hidden|Attr::readonly|Attr::noSave),"The fixed ``O.dt`` last checked against the limit [s]."))
+		((Real,checkedDt,0,(Attr::hidden|Attr::readonly),"The fixed ``O.dt`` last checked against the limit [s] (saved, as everything the next steps depend on: a reloaded run takes the same decisions)."))
+		((long,brokenAtEstimate,0,(Attr::hidden|Attr::readonly),"Springs broken when the last estimate was made (a break triggers a new one; saved)."))
 		((bool,contactBound,false,,"Also allow for the contacts that blocks can still make (scenes with a collider, ``rdem.engines(recontact=True)``): every free block that carries no bond gets the terms of a flush contact on each of its six faces, at its own stiffness per area (:ref:`theory §6 <rdem-theory-6>`). Without it the step follows only the contacts that exist: none for a falling block, and a step set while a corner touches is unstable once a face lands."))
+		((shared_ptr<RdemSharedState>,shared,,,"What the plugin's engines share (:yref:`RdemSharedState`: a spring that breaks triggers a new estimate; handed by ``rdem.engines()``; None: the law's, taken at the first step)."))
 		((Real,criticalDt,0,Attr::readonly,"Last estimate of the critical time step, without the safety factor [s]."))
 		((bool,contactLimit,true,,"While contacts act or can form (a contact sample, a broken spring, or with ``contactBound`` a free block without bonds), keep the automatic step below the Gershgorin bound too: ``O.dt = safety·min(criticalDt, contactDt)``. Contacts that form between two estimates bring their critical dashpots (eq. 13, $h=1$), whose limit, 0.41 of the undamped one for one oscillator, the estimate has not seen; the Gershgorin bound lies at 0.37–0.44 of the undamped limit. At 0.8 of the Lanczos limit the law's dashpot caps bind on such contacts and the contact dynamics change with the step (measured: a rocking block that no longer overturns, a dry wall that falls below its tilt limit). A bonded assembly before its first break keeps the tight step."))
 		((Real,contactDt,0,(Attr::readonly|Attr::noSave),"The Gershgorin bound applied by ``contactLimit`` at the last automatic step [s]; inf while no contact can act (not computed for a fixed ``O.dt``)."))
-		((Real,springCriticalDt,0,(Attr::readonly|Attr::noSave),"Critical step of the springs alone, $2/\\omega_{max}$, of the last estimate [s]: a fixed ``O.dt`` above it is refused; one between ``criticalDt`` (with the contact dashpots) and it only warns."))
+		((Real,springCriticalDt,0,Attr::readonly,"Critical step of the springs alone, $2/\\omega_{max}$, of the last estimate [s]: a fixed ``O.dt`` above it is refused; one between ``criticalDt`` (with the contact dashpots) and it only warns."))
 		((bool,warned,false,(Attr::readonly|Attr::noSave),"Whether the too-large ``O.dt`` warning was printed (once per engine)."))
 		,
 		/* ctor */,
 		.def("estimate",&RdemTimeStepper::estimatePy,(py::arg("method")=""),"Critical time step of the current scene [s], without the safety factor, by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``).")
+		.def("stiffnessTimes",&RdemTimeStepper::stiffnessTimes,(py::arg("x")),"$K\\mathbf{x}$ [N, N·m], $K$ the linear stiffness of the current configuration that the estimate uses (the sources' terms, :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` and :yref:`RdemPoissonEngine`, plus the contacts to come with ``contactBound``), $\\mathbf{x}$ 6 values per body id: displacement [m] and small rotation [rad] in global axes (tests/yade/test_stiffness_source.py checks it against the forces).")
 	);
 	// clang-format on
 	DECLARE_LOGGER;
 
 private:
-	Real gershgorin(Scene* scene) const;
+	Real gershgorin(Scene* scene);
 	Real lanczos(Scene* scene);
 	void checkFixedDt(Scene* scene);
 	/// The step for which the dashpots are capped as the law caps them (Law2…::dashpotCap): O.dt when the estimate
 	/// is made, 0 (no cap) if O.dt is not yet set [s]. A step chosen larger than it lowers the caps, so the estimate holds.
 	Real capDt = 0;
-	/// Springs broken when the last estimate was made (a break triggers a new one).
-	long brokenAtEstimate = 0;
 	/// Whether a contact acts or can form: a contact sample, a broken spring, or (contactBound) a free block without bonds.
-	bool contactsPossible(Scene* scene) const;
+	bool contactsPossible(Scene* scene);
 	/// What K depends on besides the poses (reuseUnchanged).
-	vector<Real> springSignature(Scene* scene) const;
+	vector<Real> springSignature(Scene* scene);
+	/// Restoring springs broken so far in the scene (RdemSharedState).
+	long brokenSprings(Scene* sc) { return RdemSharedState::of(sc, shared).brokenSprings(); }
 };
 REGISTER_SERIALIZABLE(RdemTimeStepper);
 

@@ -8,7 +8,7 @@ import math
 from yade import O, utils, Vector3, Quaternion
 from yade.wrapper import (Body, RdemBlock, RdemMat, RdemJoint, ForceResetter, InsertionSortCollider, Bo1_Box_Aabb, InteractionLoop, Ig2_RdemBlock_RdemBlock_RdemGeom,
                           Ip2_RdemMat_RdemMat_RdemPhys, Law2_RdemGeom_RdemPhys_FaceSprings, RdemPoissonEngine, RdemCellStrainUpdater, RdemTimeStepper,
-                          NewtonIntegrator, RdemContactGate, RdemFiniteGuard, RdemForceAssembler)
+                          NewtonIntegrator, RdemContactGate, RdemFiniteGuard, RdemForceAssembler, RdemLeapfrogEnergy, RdemSharedState)
 
 #: The values of ``engines(formulation=...)``: the formulation of the springs (:yref:`Ip2_RdemMat_RdemMat_RdemPhys.formulation`, the
 #: scene's one setting) and whether there is a Poisson engine. Without one the springs are the paper's.
@@ -79,7 +79,8 @@ LABELS = dict(gate='rdemGate',
               poisson='rdemPoisson',
               stepper='rdemStepper',
               newton='rdemNewton',
-              guard='rdemGuard')
+              guard='rdemGuard',
+              energy='rdemEnergy')
 
 
 def _labeled(key, cls, hint):
@@ -329,27 +330,32 @@ def engines(segmentsPerEdge=2,
 	if contactSamples is not None and not (isinstance(contactSamples, int) and contactSamples >= 1):
 		raise ValueError('contactSamples = %r: must be an integer >= 1 (or None: segmentsPerEdge)' % (contactSamples, ))
 	L = LABELS
-	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0, label=L['geom'])], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), strengthCoV=strengthCoV, strengthPerSegment=bool(strengthPerSegment), stiffnessCoV=stiffnessCoV, seed=int(seed), label=L['phys'])],
-	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True, totalStress=failureStress == 'total', label=L['law'])], label=L['loop'])
+	# one RdemSharedState for every engine and functor of the plugin: the crack state, the deferred forces' record, the travel
+	shared = RdemSharedState()
+	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0, shared=shared, label=L['geom'])], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), strengthCoV=strengthCoV, strengthPerSegment=bool(strengthPerSegment), stiffnessCoV=stiffnessCoV, seed=int(seed), label=L['phys'])],
+	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True, totalStress=failureStress == 'total', shared=shared, label=L['law'])], label=L['loop'])
 	eng = [ForceResetter()]
 	if recontact not in (True, False, 'always'):
 		raise ValueError("recontact = %r: must be True, False or 'always'" % (recontact, ))
 	if recontact is True:
-		eng.append(RdemContactGate(label=L['gate']))
+		eng.append(RdemContactGate(shared=shared, label=L['gate']))
 	if recontact:
 		eng.append(InsertionSortCollider([Bo1_Box_Aabb()], verletDist=verletDist if verletDist is not None else 0.0, label=L['collider']))
 	if withPoisson and formulation == 'consistent':
-		eng.append(RdemCellStrainUpdater(label=L['cellStrains']))  # Poisson cells of layouts that are not grids: strains before the law reads them
-	eng += [loop, RdemForceAssembler(label=L['forces'])]  # forces summed per body in a fixed order: O.load continues bit for bit
+		eng.append(RdemCellStrainUpdater(shared=shared, label=L['cellStrains']))  # Poisson cells of layouts that are not grids: strains before the law reads them
+	eng += [loop, RdemForceAssembler(shared=shared, label=L['forces'])]  # forces summed per body in a fixed order: O.load continues bit for bit
 	if withPoisson:
-		eng.append(RdemPoissonEngine(corotational=corotational, label=L['poisson']))
+		eng.append(RdemPoissonEngine(corotational=corotational, shared=shared, label=L['poisson']))
 	# The automatic step is 0.8 of the tight (Lanczos) limit, also below the Gershgorin bound while contacts act or can form
-	# (RdemTimeStepper.contactLimit); a fixed step is checked against the Lanczos estimate, refused above it (doc/stability.md)
+	# (RdemTimeStepper.contactLimit); a fixed step is checked against the Lanczos estimate, refused above it
 	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None, contactBound=bool(recontact),
-	                          method='lanczos', label=L['stepper'])
-	eng += [stepper, NewtonIntegrator(damping=damping, gravity=Vector3(gravity), label=L['newton'])]
+	                          method='lanczos', shared=shared, label=L['stepper'])
+	newton = NewtonIntegrator(damping=damping, gravity=Vector3(gravity), label=L['newton'])
+	eng += [stepper, newton]
 	if finiteGuard:
 		eng.append(RdemFiniteGuard(label=L['guard']))
+	# with O.trackEnergy, the kinetic energy and the damping's work booked so that O.energy's total balances exactly
+	eng.append(RdemLeapfrogEnergy(integrator=newton, label=L['energy']))
 	if dt is not None:
 		O.dt = dt
 	return eng
