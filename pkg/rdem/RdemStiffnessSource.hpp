@@ -13,7 +13,7 @@ namespace yade {
 
 class Scene;
 
-/* What adds to the linear stiffness of a block assembly, for RdemTimeStepper's critical step (doc/theory.md §6): the
+/* What adds to the linear stiffness of a block assembly, for RdemTimeStepper's critical step (doc/sphinx/rdemTheory.rst §6): the
    law (its springs and contact dashpots) and the Poisson engine (its elements and cells). Each gives its own terms, as
    it applies them, so that the time stepper derives nothing itself. RdemSharedState lists the sources of a scene. */
 class RdemStiffnessSource {

@@ -4,7 +4,7 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
-/* The energy balance of the leapfrog, exact step by step for a linear system (doc/stability.md, "Energy").
+/* The energy balance of the leapfrog, exact step by step for a linear system (Hairer, Lubich & Wanner 2006, Geometric Numerical Integration, §I.1.4).
 
    YADE's NewtonIntegrator is the leapfrog (central differences): in step n, with the forces F_n of the positions x_n,
    gravity g and the integrator's own damping force D_n,
