@@ -16,24 +16,29 @@ Joints are normal to the centreline (radial planes of each arc), the thickness $
 voussoirs has its joints at equal arc length $u_k = k/N$ of the centreline.
 
 *Representation of a wedge by boxes.* Blocks of this plugin are boxes (:yref:`RdemBlock`), a voussoir is a wedge whose two
-joint faces are not parallel. Each voussoir is therefore a rigid clump of two boxes: box $a$ has one face exactly on joint
-face $a$ (the rectangle $t\\times$ depth between the intrados and extrados points of the joint) and extends a length $L_a$
-along that face's normal into the voussoir; box $b$ likewise from joint $b$. The two boxes overlap inside the voussoir
-(members of one clump do not interact). Their lengths and masses are chosen so that the clump has the voussoir's exact mass
-and centroid, its rotational inertia about the depth axis is set to the voussoir's exact one (:attr:`Unit.polar`) once clumped: with
-masses $m_a = m\\,w_a/(w_a + w_b)$ ($w$ the joint face widths), $L_a, L_b$ solve
-$\\tfrac12 m_a L_a \\mathbf{n}_a + \\tfrac12 m_b L_b \\mathbf{n}_b = m\\mathbf{c} - m_a\\mathbf{M}_a - m_b\\mathbf{M}_b$ ($\\mathbf{M}$: face
-midpoints, $\\mathbf{n}$: face normals into the voussoir, $\\mathbf{c}$: the voussoir's centroid). Hence:
+joint faces are not parallel. Each voussoir is therefore a rigid clump of three boxes (members of one clump do not
+interact):
+
+* face box $a$ has one face exactly on joint face $a$ (the rectangle $t\times$ depth between the joint's intrados and
+  extrados points) and extends half the chord between the two joint faces' midpoints along that face's normal into the
+  voussoir; face box $b$ likewise from joint $b$;
+* a core box, a quarter of the thickness thick, along that chord, carries the rest of the mass: with a share $\eta$ of
+  the voussoir's mass $m$ on each face box (centres $\mathbf{c}_a, \mathbf{c}_b$), its centre is
+  $\mathbf{c} + \eta(2\mathbf{c} - \mathbf{c}_a - \mathbf{c}_b)/(1 - 2\eta)$ ($\mathbf{c}$: the wedge's centroid), so that the
+  clump's mass and centroid are the wedge's; $\eta = 1/4$, smaller if the core would lie more than $t/4$ from
+  $\mathbf{c}$ (voussoirs of more than about 50°);
+* once clumped, the clump's rotational inertia about the depth axis is set to the wedge's (:attr:`Unit.polar`).
+
+Hence:
 
 * the joint geometry is exact: every joint's four vertices (where hinges form with vertex contacts) and its plane are
-  those of the wedge, so the statics of the dry joints (thrust line, hinges, friction) are the voussoir arch's;
+  those of the wedge, so the statics of dry joints (thrust line, hinges, friction) are the voussoir arch's;
 * the weight and its line of action, and the in-plane rotational inertia, are exact;
-* the outline is not: the intrados and extrados of each box are flat, the boxes' far corners reach beyond the extrados by
-  up to :attr:`ArchLayout.protrusion` (0.2 % of $R$ for $t/R = 0.1$, $N = 8$ on a semicircle), and the boxes, shorter than
-  half the voussoir so that their centroid is the wedge's (which lies closer to the intrados than the middle of the
-  centreline's chord), leave a gap between them at the voussoir's middle (about 30 % of its length for $N = 8$). This
-  matters only for contacts other than the joints (fill, debris, a collapsed arch's pieces) and for pictures; the
-  out-of-plane inertias are the clumped boxes' (approximate).
+* the outline is not: the intrados and extrados of the face boxes are flat and their far corners reach beyond the
+  extrados by up to :attr:`ArchLayout.protrusion` (about $R\,\Delta^2/8$ for voussoirs of angle $\Delta$: 1.5 % of $R$
+  for $N = 9$ on a semicircle; at the sharp crown of a pointed arch more, 7 % of $R$ for $N = 8$), which matters only for
+  contacts other than the joints (fill, debris, the pieces of a collapsed arch) and for pictures; the out-of-plane
+  inertias are the clumped boxes' (approximate).
 """
 import math
 import numbers
