@@ -195,3 +195,86 @@ def archMinimumThickness(voussoirs, tolerance=1e-10):
 				hinges += [(k, side)] + ([(N - k, side)] if N - k != k else [])
 	W = rows[-1][1] * 2
 	return ArchLimit(t, H / W, p / H if H > 0 else float('nan'), sorted(hinges), joints, friction)
+
+
+class OneWayWall:
+	"""Rigid-body force against displacement of a wall spanning one way between a base and a top support, pushed out of its
+	plane by a horizontal load at two heights symmetric about mid-height (the mechanism of Doherty, Griffith, Lam & Wilson
+	2002: two rigid halves and three hinges). Lengths in m, forces in N, angles in rad.
+
+	The wall ($h$ tall, $t$ thick, weight $W$) stands on a base and is held horizontally at its top, where an overburden $O$
+	bears (a slab that stays horizontal and moves vertically). Pushed towards $+y$ (its face at $y = 0$ is the loaded one)
+	it cracks at the base, at mid-height and at the top: the lower half turns by $\\theta$ about its base edge on the far
+	face ($y = t$), the upper half, the lower's mirror image about the mid-height hinge, by $\\theta$ about its top edge on
+	the far face, and the halves hinge on the loaded face at mid-height, at $B = (t(1 - \\cos\\theta) + \\tfrac h2\\sin\\theta,\\;
+	t\\sin\\theta + \\tfrac h2\\cos\\theta)$ in $(y, z)$ from the base edge on the loaded face. The halves' weights rise with
+	$B_z$ and the overburden with the top, at $2B_z$: the potential energy is $V = (W + 2O)\\,B_z$. The load $F$ (total)
+	acts on the wall's middle plane ($y = t/2$) at height $z_p$ above the base on the lower half and at $h - z_p$ on the upper
+	half: its points move by $y_p = t - \\tfrac t2\\cos\\theta + z_p\\sin\\theta$. Virtual work, $F\\,dy_p = dV$, gives the exact
+	(large-rotation) rigid relation
+
+	.. math:: F(\\theta) = (W + 2O)\\,\\frac{t\\cos\\theta - \\tfrac h2\\sin\\theta}{\\tfrac t2\\sin\\theta + z_p\\cos\\theta},
+	          \\qquad \\Delta(\\theta) = t(1 - \\cos\\theta) + \\tfrac h2\\sin\\theta
+
+	($\\Delta$: the mid-height displacement of the loaded face, the hinge). At $\\theta = 0$, $F_0 = (W + 2O)\\,t/z_p$
+	($2(W + 2O)t/h$ at mid-height); $F = 0$ at $\\tan\\theta_u = 2t/h$, where $\\Delta_u = t$: the instability
+	displacement is the wall's thickness. For small rotations $F \\approx F_0(1 - \\Delta/t)$ for $z_p = h/2$, the linear
+	rigid relation Doherty et al. 2002 use.
+
+	:param height: $h$ [m] > 0.
+	:param thickness: $t$ [m], $0 < t < h$.
+	:param weight: $W$ [N] > 0.
+	:param overburden: $O$ [N] >= 0.
+	:param loadHeight: $z_p$ [m], in $(0, h/2]$ (default $h/2$)."""
+
+	def __init__(self, height, thickness, weight, overburden=0.0, loadHeight=None):
+		self.h = _positive('height', height)
+		self.t = _positive('thickness', thickness)
+		if not self.t < self.h:
+			raise ValueError('thickness = %r: must be < height = %g [m]' % (thickness, self.h))
+		self.W = _positive('weight', weight)
+		if isinstance(overburden, bool) or not isinstance(overburden, numbers.Real) or not (math.isfinite(overburden) and overburden >= 0):
+			raise ValueError('overburden = %r: must be a finite number >= 0 [N]' % (overburden, ))
+		self.O = float(overburden)
+		self.zp = self.h / 2 if loadHeight is None else _positive('loadHeight', loadHeight)
+		if not self.zp <= self.h / 2:
+			raise ValueError('loadHeight = %r: must be in (0, height/2 = %g] [m]' % (loadHeight, self.h / 2))
+		self.thetaU = math.atan(2 * self.t / self.h)
+
+	def force(self, theta):
+		"""$F(\\theta)$ [N]."""
+		t, h = self.t, self.h
+		return (self.W + 2 * self.O) * (t * math.cos(theta) - h / 2 * math.sin(theta)) / (t / 2 * math.sin(theta) + self.zp * math.cos(theta))
+
+	def displacement(self, theta):
+		"""$\\Delta(\\theta)$ [m], the mid-height displacement of the loaded face."""
+		return self.t * (1 - math.cos(theta)) + self.h / 2 * math.sin(theta)
+
+	def loadDisplacement(self, theta):
+		"""$y_p(\\theta) - t/2$ [m], the displacement of the load's points."""
+		return self.t / 2 * (1 - math.cos(theta)) + self.zp * math.sin(theta)
+
+	def rotation(self, displacement):
+		"""$\\theta$ for a mid-height displacement $\\Delta$ in $[0, \\Delta(\\pi/2)]$ (bisection)."""
+		lo, hi = 0.0, math.pi / 2
+		for _ in range(100):
+			mid = (lo + hi) / 2
+			if self.displacement(mid) < displacement:
+				lo = mid
+			else:
+				hi = mid
+		return (lo + hi) / 2
+
+	def forceAt(self, displacement):
+		"""$F$ [N] at mid-height displacement $\\Delta$ [m]."""
+		return self.force(self.rotation(displacement))
+
+	@property
+	def initialForce(self):
+		"""$F_0 = (W + 2O)\\,t/z_p$ [N]."""
+		return (self.W + 2 * self.O) * self.t / self.zp
+
+	@property
+	def instabilityDisplacement(self):
+		"""$\\Delta_u = \\Delta(\\theta_u) = t$ [m]."""
+		return self.displacement(self.thetaU)

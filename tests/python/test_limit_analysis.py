@@ -8,7 +8,7 @@ import sys
 import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'py'))
-from rdem.limit_analysis import stackTilt, archMinimumThickness  # noqa: E402
+from rdem.limit_analysis import stackTilt, archMinimumThickness, OneWayWall  # noqa: E402
 
 
 class StackTilt(unittest.TestCase):
@@ -136,6 +136,52 @@ class ArchMinimumThickness(unittest.TestCase):
 			archMinimumThickness(1)
 		with self.assertRaisesRegex(ValueError, r'voussoirs = 8.0'):
 			archMinimumThickness(8.0)
+
+
+
+class OneWayWallRelation(unittest.TestCase):
+
+	def testStaticsOfTheHalves(self):
+		# at theta = 0, independently of the virtual work: moments of each half about its pivot, (y, z) from the base edge
+		# on the loaded face, hinge at (0, h/2) carrying (Hh, -Nh) on the lower half with Nh = W/2 + O:
+		#   lower, about (t, 0):  W t/4 - zp F/2 + t Nh - (h/2) Hh = 0
+		#   upper, about (t, h):  W t/4 + zp F/2 - t Nh - (h/2) Hh = 0
+		# their difference gives F = 2 t Nh / zp = (W + 2 O) t / zp
+		for zp in (1.0, 0.8):
+			h, t, W, O = 2.0, 0.11, 1000.0, 300.0
+			w = OneWayWall(h, t, W, O, loadHeight=zp)
+			Nh = W / 2 + O
+			Hh = W * t / (2 * h)  # their sum
+			F = w.force(0.0)
+			self.assertAlmostEqual(W * t / 4 - zp * F / 2 + t * Nh - h / 2 * Hh, 0, delta=1e-9)
+			self.assertAlmostEqual(W * t / 4 + zp * F / 2 - t * Nh - h / 2 * Hh, 0, delta=1e-9)
+			self.assertAlmostEqual(w.initialForce, F, delta=1e-9)
+
+	def testVirtualWorkByFiniteDifferences(self):
+		# F dy_p = dV with V = (W + 2 O) B_z, B_z = t sin(theta) + h/2 cos(theta), by central differences
+		w = OneWayWall(1.0, 0.1, 500.0, 100.0, loadHeight=0.45)
+		V = lambda th: (w.W + 2 * w.O) * (w.t * math.sin(th) + w.h / 2 * math.cos(th))
+		for th in (0.01, 0.05, 0.1, 0.15):
+			d = 1e-6
+			F = (V(th + d) - V(th - d)) / (w.loadDisplacement(th + d) - w.loadDisplacement(th - d))
+			self.assertAlmostEqual(w.force(th) / F, 1, delta=1e-7)
+
+	def testInstabilityDisplacementIsTheThickness(self):
+		for h, t, O in ((1.0, 0.1, 0.0), (2.5, 0.23, 5e3), (0.6, 0.12, 0.0)):
+			w = OneWayWall(h, t, 1e3, O)
+			self.assertAlmostEqual(w.instabilityDisplacement, t, delta=1e-12)
+			self.assertAlmostEqual(w.force(w.thetaU), 0, delta=1e-9)
+			self.assertAlmostEqual(w.forceAt(t), 0, delta=1e-6)
+			# small rotations: the linear relation F0 (1 - Delta/t) within 1 % of F0 up to Delta = t/10
+			self.assertAlmostEqual(w.forceAt(0.1 * t) / w.initialForce, 0.9, delta=0.01)
+
+	def testBadArguments(self):
+		with self.assertRaisesRegex(ValueError, r'thickness = 2: must be < height = 1'):
+			OneWayWall(1, 2, 1)
+		with self.assertRaisesRegex(ValueError, r'overburden = -1'):
+			OneWayWall(1, 0.1, 1, -1)
+		with self.assertRaisesRegex(ValueError, r'loadHeight = 0.6: must be in \(0, height/2 = 0.5\]'):
+			OneWayWall(1, 0.1, 1, loadHeight=0.6)
 
 
 if __name__ == '__main__':
