@@ -1,7 +1,7 @@
 """A one-way spanning wall pushed out of plane quasi-statically (issue 26, must-show 2; doc/out-of-plane.md).
 
 A dry-stacked strip 1 m tall, 0.1 m thick, 20 courses, on a fixed base, held at its top by a beam that stays horizontal
-and may rise (its weight the overburden O), pushed at the two courses next to mid-height at 20 mm/s. The rigid-body
+and may rise (its weight the overburden O), pushed at the two courses next to mid-height at 30 mm/s. The rigid-body
 relation (rdem.limit_analysis.OneWayWall, after Doherty, Griffith, Lam & Wilson 2002: two rigid halves, hinges at the base,
 mid-height and top) gives F(Δ), F0 = (W + 2O) t / z_p and the instability displacement Δu = t. Measured against it:
 
@@ -14,10 +14,12 @@ import harness
 from yade import O
 from rdem.out_of_plane import OneWayWallPush
 
+RATE = 0.03  # m/s: quasi-static (at 0.05 m/s the 40 kg top beam still oscillates at Delta = 0.1 t: 3 % off there, 1.2 % at 0.03)
+
 
 def pushed(overburden):
 	harness.freshScene()
-	w = OneWayWallPush(overburden=overburden)
+	w = OneWayWallPush(overburden=overburden, rate=RATE)
 	w.settle()
 	return w, w.push(to=1.05 * w.t)
 
@@ -31,6 +33,7 @@ class OutOfPlane(unittest.TestCase):
 		for d, F in hist:
 			if 0.1 * w.t <= d <= 0.9 * w.t:
 				worst = max(worst, abs(F - w.rigid.forceAt(d)) / F0)
+		print('O = %.4g N: largest difference from the rigid relation over 0.1-0.9 t %.4f F0; F = 0 at %.5f m' % (w.overburden, worst, next(d for d, F in hist if d > 0.5 * w.t and F <= 0)))
 		self.assertLess(worst, 0.05, 'O = %g N: largest difference from the rigid relation %.3f F0' % (w.overburden, worst))
 		zero = next(d for d, F in hist if d > 0.5 * w.t and F <= 0)
 		self.assertAlmostEqual(zero / w.t, 1, delta=0.05)
