@@ -84,7 +84,7 @@ class Arch:
 		lay = self.layout
 		vs = lay.voussoirs(ring)
 		units = [lay.units.index(v) for v in vs]
-		sup = {u.side: k for k, u in enumerate(lay.units) if u.kind in ('abutment', 'pier') and (u.kind == 'abutment' or u.index == lay.params['pierCourses'] - 1)}
+		sup = {u.side: k for k, u in enumerate(lay.units) if u.ring == ring and u.kind in ('abutment', 'pier') and (u.kind == 'abutment' or u.index == lay.params['pierCourses'] - 1)}
 		sides = [sup['left']] + units + [sup['right']]
 		out = []
 		yc = vs[0].centroid[1]
@@ -134,12 +134,13 @@ def arch(span,
          length=None,
          rings=1,
          stagger=True,
+         ringGap=1e-3,
          joints='dry',
          material=None,
          jointMaterial=None,
          supportMaterial=None,
          origin=(0, 0, 0)):
-	"""Build an arch or barrel vault into the current scene. The first fifteen arguments are :func:`rdem.arch_layout.archLayout`'s
+	"""Build an arch or barrel vault into the current scene. The first sixteen arguments are :func:`rdem.arch_layout.archLayout`'s
 	(lengths in m); ``O.engines`` must come from :func:`rdem.engines` first (for dry joints: ``recontact='always'`` and
 	``contactSamples=1``, so that hinges form on the joints' edges as in the distinct element codes, doc/theory.md §4.2).
 
@@ -164,7 +165,7 @@ def arch(span,
 		raise ValueError('origin = %r: must be 3 finite numbers [m]' % (origin, ))
 	build.geomFunctor()  # fail early and clearly if the engines are not there
 	lay = archLayout(span, thickness, depth, voussoirs, shape=shape, rise=rise, pointedness=pointedness, supports=supports, pierHeight=pierHeight,
-	                 pierWidth=pierWidth, pierCourses=pierCourses, foundation=foundation, length=length, rings=rings, stagger=stagger)
+	                 pierWidth=pierWidth, pierCourses=pierCourses, foundation=foundation, length=length, rings=rings, stagger=stagger, ringGap=ringGap)
 	o = Vector3(*origin)
 	bodies = []
 	for blk in lay.blocks:
@@ -186,7 +187,7 @@ def arch(span,
 			R = s.ori.toRotationMatrix()
 			j = max(range(3), key=lambda c_: abs(R[1, c_]))
 			inertia = Vector3(s.inertia)
-			inertia[j] = mat.density * u.polar * 2 * lay.blocks[u.blocks[0]].half[1]
+			inertia[j] = mat.density * u.polar * lay.params['depth'] / lay.rings
 			s.inertia = inertia
 		else:
 			clumps[k] = None

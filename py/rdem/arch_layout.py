@@ -244,8 +244,8 @@ class ArchLayout:
 	:ivar units: :class:`Unit` list; ``voussoirs(ring)`` those of one ring, left to right.
 	:ivar pairs: touching block pairs ``(i, j, kind)``, kind in ``'voussoir'`` (a joint between two voussoirs, exact common
 	    face), ``'springing'`` (voussoir on its abutment or pier), ``'pier'`` (between pier courses), ``'foundation'`` (pier on
-	    its foundation), ``'ring'`` (voussoirs of neighbouring rings of a vault, in contact on a plane $y$ = const; their
-	    faces are not aligned, so these joints are always dry).
+	    its foundation), ``'ring'`` (voussoirs of neighbouring rings of a vault, facing each other across the ring gap on
+	    a plane $y$ = const; their faces are not aligned, so these joints are always dry).
 	:ivar jointFaces: per ring, the joint faces of its voussoirs from the left springing: [(intrados (x, z), extrados (x, z))].
 	:ivar radius: centreline radius $R$ [m] (each arc's, for a pointed arch).
 	:ivar protrusion: largest distance by which a voussoir box's corner lies outside the exact outline of the arch (beyond
@@ -301,7 +301,8 @@ def archLayout(span,
                foundation=None,
                length=None,
                rings=1,
-               stagger=True):
+               stagger=True,
+               ringGap=1e-3):
 	"""Lay out an arch (``length=None``) or a barrel vault (an arch extruded along $y$ over ``length`` in ``rings`` rings,
 	every other ring's joints shifted by half a voussoir with ``stagger``: its end voussoirs are half voussoirs).
 
@@ -313,6 +314,13 @@ def archLayout(span,
 	:param shape: ``'semicircular'``, ``'segmental'`` or ``'pointed'``.
 	:param rise: $f$ of a segmental arch, $0 < f < s/2$ [m].
 	:param pointedness: $\\beta > 0$ of a pointed arch (centres at $\\pm\\beta s/2$; 1: equilateral).
+	:param ringGap: gap between neighbouring rings of a vault, relative to the ring depth (default 1e-3): the rings touch
+	    only once they move towards each other. Rings that touch face to face from the start exchange forces along $y$ through
+	    the contacts of voussoirs that touch both across a joint and across the ring plane (the contact normal of such a
+	    pair is the axis of least overlap, $y$, while the joint between them is compressed): about 100 N per pair in a vault
+	    of 8 voussoirs, $t/R = 0.15$, that stands either way. Each ring has abutments (or piers) of its own, as deep as the
+	    ring: a ring on a support deeper than itself collapsed at $1.5\,t_{min}$ where the same ring on its own stands (a
+	    contact of a face on a larger face; doc/arches.md §1, left to the contact code).
 	:param supports: ``'abutments'``: a fixed block under each springing joint (inclined for a segmental arch); ``'piers'``
 	    (semicircular and pointed arches): a pier of ``pierCourses`` courses, ``pierWidth`` wide, its inner face flush with
 	    the intrados, ``pierHeight`` tall, on a fixed foundation ``foundation`` thick (default: the pier width).
@@ -342,6 +350,9 @@ def archLayout(span,
 		L = _positive('length', length)
 		nRings = _count('rings', rings, 1)
 		ringDepth = L / nRings
+	if isinstance(ringGap, bool) or not isinstance(ringGap, numbers.Real) or not (0 <= ringGap < 0.5):
+		raise ValueError('ringGap = %r: must be in [0, 0.5) (relative to the ring depth)' % (ringGap, ))
+	gap = ringGap * ringDepth if nRings > 1 else 0.0
 	zs = 0.0
 	if supports == 'piers':
 		if shape == 'segmental':
@@ -359,7 +370,8 @@ def archLayout(span,
 	if not t < R:
 		raise ValueError('thickness = %r: must be < the centreline radius %g [m]' % (thickness, R))
 	lay = ArchLayout(span=s, thickness=t, depth=ringDepth * nRings, voussoirs=N, shape=shape, rise=rise, pointedness=beta, supports=supports,
-	                 pierHeight=pierHeight, pierWidth=pierWidth, pierCourses=pierCourses, length=length, rings=nRings, stagger=stagger)
+	                 pierHeight=pierHeight, pierWidth=pierWidth, pierCourses=pierCourses, length=length, rings=nRings, stagger=stagger,
+	                 ringGap=ringGap)
 	lay.radius, lay.rings = R, nRings
 	unitOfJointBlock = {}  # (ring, joint index, side 'a'|'b') -> block index
 	for r in range(nRings):
@@ -398,8 +410,9 @@ def archLayout(span,
 			cc = (cx + eta * off[0] / (1 - 2 * eta), cz + eta * off[1] / (1 - 2 * eta))
 			u = _unit(_sub(Mb, Ma))  # the core lies along the chord, a quarter of the thickness thick
 			boxes = []
-			for centre, n, half, mass in ((ca, na, (Lx / 2, ringDepth / 2, wa / 2), eta * m), (cb, nb, (Lx / 2, ringDepth / 2, wb / 2), eta * m),
-			                              (cc, u, (chord / 4, ringDepth / 2, t / 8), (1 - 2 * eta) * m)):
+			hy = ringDepth / 2 - gap / 2  # the boxes' half-depth: rings apart by the gap
+			for centre, n, half, mass in ((ca, na, (Lx / 2, hy, wa / 2), eta * m), (cb, nb, (Lx / 2, hy, wb / 2), eta * m),
+			                              (cc, u, (chord / 4, hy, t / 8), (1 - 2 * eta) * m)):
 				boxes.append(Block((centre[0], yc, centre[1]), half, math.atan2(-n[1], n[0]), mass, list(_boxInertia(mass, half)), len(lay.units)))
 			# the boxes must stay on their side of the voussoir's other joint (else they would touch the next voussoir)
 			for b in boxes:
@@ -443,48 +456,49 @@ def _sectionsOverlap(p, q):
 
 
 def _addSupports(lay, line, supports, ringDepth, nRings, zs, t, args):
-	"""Abutments (one fixed box under each springing joint) or piers with foundations; the springing pairs."""
-	D = ringDepth * nRings
+	"""Abutments (one fixed box under each springing joint) or piers with foundations, one per ring of a vault (apart by
+	the ring gap, as the rings); the springing pairs."""
+	hy = ringDepth / 2 - args['gap'] / 2
 	for side, ukey in (('left', 0), ('right', -1)):
-		springing = []  # voussoir boxes on this springing joint, one per ring
+		inner, outer = lay.jointFaces[0][ukey]
 		for r in range(nRings):
 			vs = lay.voussoirs(r)
-			springing.append(vs[0].blocks[0] if side == 'left' else vs[-1].blocks[1])
-		inner, outer = lay.jointFaces[0][ukey]
-		if supports == 'abutments':
-			f = _unit(_sub(outer, inner))
-			n = (f[1], -f[0])  # normal pointing away from the arch (outwards, down the thrust)
-			first = lay.blocks[springing[0]]
-			if n[0] * (first.centre[0] - inner[0]) + n[1] * (first.centre[2] - inner[1]) > 0:
-				n = (-n[0], -n[1])
-			w = math.hypot(*_sub(outer, inner))
-			M = ((inner[0] + outer[0]) / 2, (inner[1] + outer[1]) / 2)
-			Lx = w  # as long as the joint is wide
-			half = (Lx / 2, D / 2, w / 2)
-			unit = Unit('abutment', 0, 0 if side == 'left' else 1, side=side, area=Lx * w, centroid=(M[0] + n[0] * Lx / 2, D / 2, M[1] + n[1] * Lx / 2))
-			b = Block(unit.centroid, half, math.atan2(-n[1], n[0]), Lx * w * D, list(_boxInertia(Lx * w * D, half)), len(lay.units))
-			unit.blocks = [len(lay.blocks)]
-			lay.blocks.append(b)
-			lay.units.append(unit)
-			lay.pairs += [(i, unit.blocks[0], 'springing') for i in springing]
-		else:
-			hp, wp, nc, hf = args['hp'], args['wp'], args['nCourses'], args['hf']
-			xIn = inner[0]  # pier's inner face flush with the intrados
-			x0, x1 = (xIn - wp, xIn) if side == 'left' else (xIn, xIn + wp)
-			if (side == 'left' and outer[0] < x0) or (side == 'right' and outer[0] > x1):
-				raise ValueError('pierWidth = %r: too narrow for the springing joint' % wp)
-			ch = hp / nc
-			prev = None
-			for k in range(-1, nc):
-				z0, z1 = (-hf, 0.0) if k < 0 else (k * ch, (k + 1) * ch)
-				half = ((x1 - x0) / 2, D / 2, (z1 - z0) / 2)
+			springing = vs[0].blocks[0] if side == 'left' else vs[-1].blocks[1]
+			yc = (r + 0.5) * ringDepth
+			if supports == 'abutments':
+				f = _unit(_sub(outer, inner))
+				n = (f[1], -f[0])  # normal pointing away from the arch (outwards, down the thrust)
+				first = lay.blocks[springing]
+				if n[0] * (first.centre[0] - inner[0]) + n[1] * (first.centre[2] - inner[1]) > 0:
+					n = (-n[0], -n[1])
+				w = math.hypot(*_sub(outer, inner))
+				M = ((inner[0] + outer[0]) / 2, (inner[1] + outer[1]) / 2)
+				Lx = w  # as long as the joint is wide
+				half = (Lx / 2, hy, w / 2)
 				vol = 8 * half[0] * half[1] * half[2]
-				unit = Unit('foundation' if k < 0 else 'pier', 0, k if k >= 0 else (0 if side == 'left' else 1), side=side, area=(x1 - x0) * (z1 - z0),
-				            centroid=((x0 + x1) / 2, D / 2, (z0 + z1) / 2))
+				unit = Unit('abutment', r, 0 if side == 'left' else 1, side=side, area=Lx * w, centroid=(M[0] + n[0] * Lx / 2, yc, M[1] + n[1] * Lx / 2))
 				unit.blocks = [len(lay.blocks)]
-				lay.blocks.append(Block(unit.centroid, half, 0.0, vol, list(_boxInertia(vol, half)), len(lay.units)))
+				lay.blocks.append(Block(unit.centroid, half, math.atan2(-n[1], n[0]), vol, list(_boxInertia(vol, half)), len(lay.units)))
 				lay.units.append(unit)
-				if prev is not None:
-					lay.pairs.append((prev, unit.blocks[0], 'foundation' if k == 0 else 'pier'))
-				prev = unit.blocks[0]
-			lay.pairs += [(i, prev, 'springing') for i in springing]
+				lay.pairs.append((springing, unit.blocks[0], 'springing'))
+			else:
+				hp, wp, nc, hf = args['hp'], args['wp'], args['nCourses'], args['hf']
+				xIn = inner[0]  # pier's inner face flush with the intrados
+				x0, x1 = (xIn - wp, xIn) if side == 'left' else (xIn, xIn + wp)
+				if (side == 'left' and outer[0] < x0) or (side == 'right' and outer[0] > x1):
+					raise ValueError('pierWidth = %r: too narrow for the springing joint' % wp)
+				ch = hp / nc
+				prev = None
+				for k in range(-1, nc):
+					z0, z1 = (-hf, 0.0) if k < 0 else (k * ch, (k + 1) * ch)
+					half = ((x1 - x0) / 2, hy, (z1 - z0) / 2)
+					vol = 8 * half[0] * half[1] * half[2]
+					unit = Unit('foundation' if k < 0 else 'pier', r, k if k >= 0 else (0 if side == 'left' else 1), side=side, area=(x1 - x0) * (z1 - z0),
+					            centroid=((x0 + x1) / 2, yc, (z0 + z1) / 2))
+					unit.blocks = [len(lay.blocks)]
+					lay.blocks.append(Block(unit.centroid, half, 0.0, vol, list(_boxInertia(vol, half)), len(lay.units)))
+					lay.units.append(unit)
+					if prev is not None:
+						lay.pairs.append((prev, unit.blocks[0], 'foundation' if k == 0 else 'pier'))
+					prev = unit.blocks[0]
+				lay.pairs.append((springing, prev, 'springing'))
