@@ -319,9 +319,9 @@ def archLayout(span,
 	    the contacts of voussoirs that touch both across a joint and across the ring plane (the contact normal of such a
 	    pair is the axis of least overlap, $y$, while the joint between them is compressed): about 100 N per pair in a vault
 	    of 8 voussoirs, $t/R = 0.15$, that stands either way. Each ring has abutments (or piers) of its own, as deep as the
-	    ring: a ring on a support deeper than itself collapsed at $1.5\,t_{min}$ where the same ring on its own stands (a
-	    contact of a face on a larger face; doc/arches.md §1, left to the contact code).
-	:param supports: ``'abutments'``: a fixed block under each springing joint (inclined for a segmental arch); ``'piers'``
+	    ring, so that the rings are independent in their plane.
+	:param supports: ``'abutments'``: a fixed block under each springing joint (inclined for a segmental arch), twice as
+	    wide as the joint (centred on it); ``'piers'``
 	    (semicircular and pointed arches): a pier of ``pierCourses`` courses, ``pierWidth`` wide, its inner face flush with
 	    the intrados, ``pierHeight`` tall, on a fixed foundation ``foundation`` thick (default: the pier width).
 	:return: an :class:`ArchLayout`; ValueError naming the argument if one is out of range."""
@@ -473,8 +473,11 @@ def _addSupports(lay, line, supports, ringDepth, nRings, zs, t, args):
 					n = (-n[0], -n[1])
 				w = math.hypot(*_sub(outer, inner))
 				M = ((inner[0] + outer[0]) / 2, (inner[1] + outer[1]) / 2)
-				Lx = w  # as long as the joint is wide
-				half = (Lx / 2, hy, w / 2)
+				# as long as the joint is wide, and wider than the joint by half of it on either side: the voussoir's
+				# vertices sample the abutment's face inside it, not on its edges (a vertex on an edge is lost to contact
+				# as soon as the voussoir turns outwards: doc/arches.md §1)
+				Lx = w
+				half = (Lx / 2, hy, w)
 				vol = 8 * half[0] * half[1] * half[2]
 				unit = Unit('abutment', r, 0 if side == 'left' else 1, side=side, area=Lx * w, centroid=(M[0] + n[0] * Lx / 2, yc, M[1] + n[1] * Lx / 2))
 				unit.blocks = [len(lay.blocks)]

@@ -87,7 +87,13 @@ class Semicircular(unittest.TestCase):
 		faces = self.lay.jointFaces[0]
 		for u, face in zip(ab, (faces[0], faces[-1])):
 			b = self.lay.blocks[u.blocks[0]]
-			self.assertTrue(faceOf(b, *face))
+			# its face on the springing joint's plane, centred on the joint, twice as wide
+			(ax, az), (bx, bz) = b.axes()
+			P, Q = face
+			M = ((P[0] + Q[0]) / 2, (P[1] + Q[1]) / 2)
+			self.assertAlmostEqual(b.half[2], self.t, delta=1e-14)
+			self.assertAlmostEqual(abs((b.centre[0] - M[0]) * ax + (b.centre[2] - M[1]) * az), b.half[0], delta=1e-14)
+			self.assertAlmostEqual((b.centre[0] - M[0]) * bx + (b.centre[2] - M[1]) * bz, 0, delta=1e-14)
 			self.assertLess(b.centre[2], 0)  # below the springing
 		self.assertEqual(sorted(self.lay.fixed()), sorted(u.blocks[0] for u in ab))
 		self.assertEqual(len([p for p in self.lay.pairs if p[2] == 'springing']), 2)
@@ -108,8 +114,12 @@ class Shapes(unittest.TestCase):
 		crown = lay.jointFaces[0][4]
 		self.assertAlmostEqual((crown[0][1] + crown[1][1]) / 2, f, delta=1e-12)
 		for u in lay.units:
-			if u.kind == 'abutment':
-				self.assertTrue(faceOf(lay.blocks[u.blocks[0]], *lay.jointFaces[0][0 if u.side == 'left' else -1]))
+			if u.kind == 'abutment':  # on the springing joint's plane
+				b = lay.blocks[u.blocks[0]]
+				P, Q = lay.jointFaces[0][0 if u.side == 'left' else -1]
+				(ax, az), _ = b.axes()
+				self.assertAlmostEqual(abs((b.centre[0] - P[0]) * ax + (b.centre[2] - P[1]) * az), b.half[0], delta=1e-12)
+				self.assertAlmostEqual(abs((b.centre[0] - Q[0]) * ax + (b.centre[2] - Q[1]) * az), b.half[0], delta=1e-12)
 
 	def testPointedCrownJointIsVertical(self):
 		s, t = 2.0, 0.1
