@@ -205,3 +205,4 @@ def wall(length,
 
 
 from .building import building, Building  # noqa: E402  (rdem.masonry.building: a whole building of such walls)
+from .arch import arch, Arch  # noqa: E402  (rdem.masonry.arch: arches and barrel vaults of voussoirs)

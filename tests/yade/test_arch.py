@@ -1,0 +1,75 @@
+"""A semicircular arch of dry voussoirs under its own weight (issue 26, must-show 1; doc/arches.md §3).
+
+Eight voussoirs (R = 1 m centreline radius, depth 0.2 m), friction 1.0 (the arch needs 0.39 to fail by hinging alone,
+doc/arches.md §2), contacts sampled at the vertices (contactSamples=1: hinges on the joints' edges). The limit analysis
+(rdem.limit_analysis.archMinimumThickness, tests/python/test_limit_analysis.py) gives t_min/R = 0.10086 for N = 8, with
+hinges at the springings' extrados (joints 0 and 8), the haunches' intrados (joints 2 and 6) and the crown's extrados
+(joint 4). Gravity is ramped up over 0.2 s, with Cundall's damping 0.2 (it slows a mechanism, it cannot stop one), then
+held to 2 s:
+
+* at t = 1.02 t_min the arch stands: the crown drops by its elastic settlement only (below 1e-3 R);
+* at t = 0.98 t_min it collapses: the crown drops by more than 0.1 R within 2 s, and when it has dropped 0.02 R the joints
+  that open are those of the five-hinge mechanism, on the sides the limit analysis gives."""
+import math
+import unittest
+import harness
+from yade import O, Vector3
+from yade.wrapper import RdemMat
+import rdem
+from rdem.limit_analysis import archMinimumThickness
+
+N, R, DEPTH, G = 8, 1.0, 0.2, 9.81
+
+
+def arch(factor):
+	"""A fresh scene with the arch at factor * t_min; returns (arch, thickness)."""
+	harness.freshScene()
+	stone = O.materials.append(
+	        RdemMat(young=1e9, poisson=0.2, density=2000, tensileStrength=float('inf'), cohesion=float('inf'), frictionAngle=math.atan(1.0),
+	                dampingNormal=1.0, dampingShear=1.0, label='stone'))
+	O.engines = rdem.engines(poisson=None, recontact='always', contactSamples=1, damping=0.2)
+	t = factor * archMinimumThickness(N).ratio * R
+	a = rdem.masonry.arch(2 * R, t, DEPTH, N, material=stone)
+	O.dt = -1
+	return a, t
+
+
+def load(a, until=2.0, ramp=0.2, stopDrop=0.1 * R, watchDrop=0.02 * R):
+	"""Ramp gravity up over ``ramp`` s, then hold it, up to ``until`` s or a crown drop of ``stopDrop``. Returns (largest crown
+	drop, hinges when the drop first passed ``watchDrop`` or None)."""
+	newton = rdem.newtonIntegrator()
+	largest, hinges = 0.0, None
+	while O.time < until:
+		newton.gravity = Vector3(0, 0, -G * min(1.0, O.time / ramp))
+		rdem.run(50)
+		drop = a.crownDrop()
+		largest = max(largest, drop)
+		if hinges is None and drop > watchDrop:
+			hinges = a.hinges(opening=0.005 * a.layout.params['thickness'])
+		if drop > stopDrop:
+			break
+	return largest, hinges
+
+
+class ArchUnderItsWeight(unittest.TestCase):
+
+	def testLimitAnalysis(self):
+		limit = archMinimumThickness(N)
+		self.assertAlmostEqual(limit.ratio, 0.10086, delta=1e-5)
+		self.assertEqual(limit.hinges, [(0, 'extrados'), (2, 'intrados'), (4, 'extrados'), (6, 'intrados'), (8, 'extrados')])
+
+	def testStandsAbove(self):
+		a, t = arch(1.02)
+		drop, hinges = load(a)
+		self.assertLess(drop, 1e-3 * R, 'the arch at 1.02 t_min should stand: crown drop %.3g m' % drop)
+		self.assertIsNone(hinges)
+
+	def testCollapsesBelowWithFiveHinges(self):
+		a, t = arch(0.98)
+		drop, hinges = load(a)
+		self.assertGreater(drop, 0.1 * R, 'the arch at 0.98 t_min should collapse: crown drop %.3g m' % drop)
+		self.assertEqual(hinges, archMinimumThickness(N).hinges)
+
+
+if __name__ == '__main__':
+	harness.run(ArchUnderItsWeight)
