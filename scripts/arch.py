@@ -80,7 +80,7 @@ t = cli.thickness if cli.thickness is not None else cli.ratio * limit.ratio * R
 stone = O.materials.append(
         RdemMat(young=cli.young, poisson=0.2, density=cli.density, tensileStrength=float('inf'), cohesion=float('inf'), frictionAngle=math.atan(cli.friction),
                 dampingNormal=1.0, dampingShear=1.0, label='stone'))
-O.engines = rdem.engines(poisson=None, recontact='always', contactSamples=1, damping=0.2)
+O.engines = rdem.engines(formulation=None, recontact='always', contactSamples=1, damping=0.2)
 try:
 	a = rdem.masonry.arch(cli.span, t, cli.depth, cli.voussoirs, shape=cli.shape, rise=(cli.rise or cli.span / 4) if cli.shape == 'segmental' else None,
 	                      pointedness=cli.pointedness, supports=cli.supports, pierHeight=cli.pier_height if cli.supports == 'piers' else None,

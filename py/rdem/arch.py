@@ -6,7 +6,7 @@ the crown, and the opening of every joint on its intrados and extrados side (whe
 
 Typical use::
 
-    O.engines = rdem.engines(poisson=None, recontact='always', contactSamples=1, gravity=(0, 0, -9.81), damping=0.2)
+    O.engines = rdem.engines(formulation=None, recontact='always', contactSamples=1, gravity=(0, 0, -9.81), damping=0.2)
     stone = RdemMat(young=1e9, poisson=0.2, density=2000, tensileStrength=float('inf'), frictionAngle=math.atan(1.0))
     a = rdem.masonry.arch(span=2.0, thickness=0.1, depth=0.2, voussoirs=8, material=stone)
 """

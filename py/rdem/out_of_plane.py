@@ -60,7 +60,7 @@ class OneWayWallPush:
 		mat = O.materials.append(
 		        RdemMat(young=young, poisson=0.2, density=density, tensileStrength=float('inf'), cohesion=float('inf'), frictionAngle=math.atan(friction),
 		                dampingNormal=1.0, dampingShear=1.0, label='wall'))
-		O.engines = build.engines(poisson=None, recontact='always', contactSamples=1, gravity=(0, 0, -gravity), damping=0.2)
+		O.engines = build.engines(formulation=None, recontact='always', contactSamples=1, gravity=(0, 0, -gravity), damping=0.2)
 		self.base = O.bodies.append(build.block((L / 2, t / 2, -c / 2), (L / 2 + 0.05, t / 2 + 0.1, c / 2), mat, fixed=True))
 		self.courses = [O.bodies.append(build.block((L / 2, t / 2, (k + 0.5) * c), (L / 2, t / 2, c / 2), mat)) for k in range(courses)]
 		beam = build.block((L / 2, t / 2, h + c / 2), (L / 2, t / 2, c / 2), mat)
@@ -137,7 +137,7 @@ class Parapet:
 		        RdemMat(young=young, poisson=0.2, density=density, tensileStrength=float('inf'), cohesion=float('inf'), frictionAngle=math.atan(friction),
 		                dampingNormal=1.0, dampingShear=1.0, label='parapet'))
 		self.material = mat
-		O.engines = build.engines(poisson=None, recontact='always', contactSamples=1, gravity=(0, 0, -gravity))
+		O.engines = build.engines(formulation=None, recontact='always', contactSamples=1, gravity=(0, 0, -gravity))
 		self.roof = O.bodies.append(build.block((0, 0, -0.05), (2 * h + 2 * b + 0.2, depth + 0.2, 0.05), mat, fixed=True))
 		self.block = O.bodies.append(build.block((0, 0, h), (b, depth, h), mat))
 		O.dt = -1

@@ -27,7 +27,7 @@ def arch(factor):
 	stone = O.materials.append(
 	        RdemMat(young=1e9, poisson=0.2, density=2000, tensileStrength=float('inf'), cohesion=float('inf'), frictionAngle=math.atan(1.0),
 	                dampingNormal=1.0, dampingShear=1.0, label='stone'))
-	O.engines = rdem.engines(poisson=None, recontact='always', contactSamples=1, damping=0.2)
+	O.engines = rdem.engines(formulation=None, recontact='always', contactSamples=1, damping=0.2)
 	t = factor * archMinimumThickness(N).ratio * R
 	a = rdem.masonry.arch(2 * R, t, DEPTH, N, material=stone)
 	O.dt = -1

@@ -33,7 +33,7 @@ def grid(safety, rotations=True, damping=0.0, gravity=(0, 0, 0), leapfrogEnergy=
 	angular velocities ~speed/H."""
 	harness.freshScene()
 	mat = O.materials.append(RdemMat(young=sc.E, poisson=0.2, tensileStrength=sc.INF, cohesion=sc.INF))
-	O.engines = rdem.engines(poisson=None, recontact=False, safety=safety, damping=damping, gravity=gravity)
+	O.engines = rdem.engines(formulation=None, recontact=False, safety=safety, damping=damping, gravity=gravity)
 	if not leapfrogEnergy:
 		O.engines = [e for e in O.engines if not isinstance(e, RdemLeapfrogEnergy)]
 	ids = rdem.blockGrid((3, 3, 3), (2 * sc.H, ) * 3, mat)

@@ -26,7 +26,7 @@ TOL = 1e-5
 def heldGrid(formulation, elements='auto', counts=(2, 2, 2), sizes=(2 * sc.H, ) * 3):
 	harness.freshScene()
 	mat = O.materials.append(RdemMat(young=sc.E, poisson=0.2, tensileStrength=sc.INF, cohesion=sc.INF))
-	O.engines = rdem.engines(poisson=formulation, recontact=False, dt=1e-12)
+	O.engines = rdem.engines(formulation=formulation, recontact=False, dt=1e-12)
 	ids = rdem.blockGrid(counts, sizes, mat)
 	rdem.bond(ids)
 	if formulation:
