@@ -148,5 +148,6 @@ def bibliographyRst(path):
 
 
 def pythonModules(root):
-	"The modules of py/rdem, as ``rdem.X``."
-	return ['rdem'] + ['rdem.' + os.path.basename(f)[:-3] for f in sorted(glob.glob(os.path.join(root, 'py', 'rdem', '*.py'))) if not f.endswith('__init__.py')]
+	"""The modules of py/rdem, as ``yade.rdem.X``: the package's name in the launcher (``rdem`` is an alias of it,
+	tools/python-path/sitecustomize.py) and in YADE's tree once merged, so that autodoc finds its functions there."""
+	return ['yade.rdem'] + ['yade.rdem.' + os.path.basename(f)[:-3] for f in sorted(glob.glob(os.path.join(root, 'py', 'rdem', '*.py'))) if not f.endswith('__init__.py')]
