@@ -40,6 +40,19 @@ autodoc_default_options = {'members': True, 'undoc-members': True}
 suppress_warnings = ['myst.xref_missing', 'myst.header', 'ref.citation']
 
 YADE_WRAPPER = 'https://yade-dem.org/doc/yade.wrapper.html#yade.wrapper.'
+
+# Every Markdown page of doc/ is a topic of the guide: topics/<name>.md (generated here, not in git) includes it, so a
+# page added to doc/ appears without touching the guide. theory.md (a pointer to rdemTheory.rst), validation.md and
+# changelog.md have their own places.
+TOPICS = os.path.join(here, 'topics')
+os.makedirs(TOPICS, exist_ok=True)
+for _f in os.listdir(TOPICS):
+	if _f.endswith('.md'):
+		os.remove(os.path.join(TOPICS, _f))
+for _f in sorted(os.listdir(os.path.join(root, 'doc'))):
+	if _f.endswith('.md') and _f not in ('theory.md', 'validation.md', 'changelog.md'):
+		with open(os.path.join(TOPICS, _f), 'w', encoding='utf-8') as _out:
+			_out.write('```{include} ../../%s\n:relative-images:\n```\n' % _f)
 OURS = set(rdem_classes.classNames(root))
 
 

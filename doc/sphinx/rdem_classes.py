@@ -33,14 +33,27 @@ def isBoostFunction(obj):
 	return type(obj).__name__ == 'function' and type(obj).__module__ == 'Boost.Python'
 
 
+STATIC = re.compile(r'^\.\. ystaticattr:: (\w+)\.(\w+)\(=(.*)\)\n\n((?:\t.*\n?|\n)*)', re.M)
+
+
+def staticAttrs(cls):
+	"""Static attributes (YADE_CLASS_BASE_DOC_STATICATTRS): YADE appends their docs to the class docstring as
+	``.. ystaticattr:: Class.name(=default)`` blocks (lib/serialization/Serializable.hpp); {name: (text, default)}."""
+	return {m.group(2): (inspect.cleandoc(m.group(4)), m.group(3)) for m in STATIC.finditer(cls.__doc__ or '')}
+
+
 def members(cls):
 	"""The attributes and methods a class itself defines (not its bases'): lists of (name, docstring text, fields) and
 	(name, docstring), in the order YADE registers them; names starting with _ left out."""
 	attrs, methods = [], []
+	static = staticAttrs(cls)
 	for k, v in vars(cls).items():
 		if k.startswith('_'):
 			continue
-		if isinstance(v, property) or type(v).__name__ == 'StaticProperty':
+		if type(v).__name__ == 'StaticProperty':
+			text, default = static.get(k, ('', ''))
+			attrs.append((k, text, {'ydefault': default, 'static': True}))
+		elif isinstance(v, property):
 			text, fields = splitAttrDoc(v.__doc__)
 			attrs.append((k, text, fields))
 		elif isBoostFunction(v) or inspect.isfunction(v) or inspect.isroutine(v):
@@ -55,7 +68,8 @@ def methodDoc(doc):
 
 
 def classDoc(cls):
-	return inspect.cleandoc(cls.__doc__ or '')
+	"The class docstring without the blocks of its static attributes (documented as attributes)."
+	return inspect.cleandoc(STATIC.sub('', cls.__doc__ or ''))
 
 
 def indent(text, n):
@@ -82,6 +96,8 @@ def classRst(name, tex=lambda s: s):
 		out += ['']
 		flags = int(fields.get('yattrflags') or 0)
 		note = ', '.join(n for bit, n in ((2, 'read-only'), (1, 'not saved'), (4, 'checked on change')) if flags & bit)
+		if fields.get('static'):
+			note = 'static: one value for the class' + (', ' + note if note else '')
 		out += indent(tex(text) + ('\n\n*(%s)*' % note if note else ''), 6) + ['']
 	for k, doc in methods:
 		out += ['   .. py:method:: %s(...)' % k, ''] + indent(tex(methodDoc(doc)), 6) + ['']
@@ -132,5 +148,6 @@ def bibliographyRst(path):
 
 
 def pythonModules(root):
-	"The modules of py/rdem, as ``rdem.X``."
-	return ['rdem'] + ['rdem.' + os.path.basename(f)[:-3] for f in sorted(glob.glob(os.path.join(root, 'py', 'rdem', '*.py'))) if not f.endswith('__init__.py')]
+	"""The modules of py/rdem, as ``yade.rdem.X``: the package's name in the launcher (``rdem`` is an alias of it,
+	tools/python-path/sitecustomize.py) and in YADE's tree once merged, so that autodoc finds its functions there."""
+	return ['yade.rdem'] + ['yade.rdem.' + os.path.basename(f)[:-3] for f in sorted(glob.glob(os.path.join(root, 'py', 'rdem', '*.py'))) if not f.endswith('__init__.py')]

@@ -11,8 +11,8 @@ ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..')
 THEORY = os.path.join(ROOT, 'doc', 'sphinx', 'rdemTheory.rst')
 
 
-def sources():
-	files = sorted(glob.glob(os.path.join(ROOT, 'pkg', '**', '*.[ch]pp'), recursive=True))
+def sources(pattern=os.path.join('pkg', '**', '*.[ch]pp')):
+	files = sorted(glob.glob(os.path.join(ROOT, pattern), recursive=True))
 	out = []
 	for f in files:
 		with open(f, encoding='utf-8') as fh:
@@ -47,7 +47,8 @@ class DocPointers(unittest.TestCase):
 		self.assertIn('rdem-theory-5-4', labels)
 		self.assertIn('5.4', sections)
 		bad, used = [], 0
-		for f, text in sources():
+		# pkg/rdem, and the docstrings of py/rdem (also carried into YADE's tree)
+		for f, text in sources() + sources(os.path.join('py', 'rdem', '*.py')):
 			for label in re.findall(r'<(rdem-theory[\w-]*)>`', text):
 				used += 1
 				if label not in labels:

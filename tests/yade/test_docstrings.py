@@ -9,7 +9,7 @@ import unittest
 import harness
 import yade
 
-ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..')
+ROOT = os.path.join(os.path.dirname(os.path.abspath(sys.argv[0])), '..', '..')  # under YADE, __file__ names its launcher
 sys.path.insert(0, os.path.join(ROOT, 'doc', 'sphinx'))
 import rdem_classes  # noqa: E402  the guide's reader of the classes, so that the test checks what the guide shows
 
