@@ -22,7 +22,8 @@ How to run
     build/bin/yade -n scripts/arch.py --help
 
 Outputs (in --out, default output/arch): results.json, history.txt (yade.plot's saveDataTxt), arch.png (the arch at the
-start and at the end, with the hinges; crown drop against time and load), ParaView files in vtk/ (blocks.*.vtm).
+start and at the end, with the hinges; crown drop against time and load), frames/arch-NNN.png (the arch every 0.1 s: an
+animation of the collapse), ParaView files in vtk/ (blocks.boxes.*.vtu, every 0.1 s).
 """
 import argparse
 import json
@@ -115,6 +116,30 @@ def outline():
 	return out
 
 
+os.makedirs(os.path.join(cli.out, 'frames'), exist_ok=True)
+for old in os.listdir(os.path.join(cli.out, 'frames')):
+	os.remove(os.path.join(cli.out, 'frames', old))
+limits = None
+
+
+def frame(k):
+	"""The blocks' sections now as frames/arch-k.png (same axes for every frame)."""
+	global limits
+	f, ax = plt.subplots(figsize=(6, 4))
+	for poly in outline():
+		xs, zs = zip(*(poly + poly[:1]))
+		ax.fill(xs, zs, color='0.8', ec='C3', lw=0.6)
+	if limits is None:
+		limits = (ax.get_xlim(), (ax.get_ylim()[0] - 0.3 * R, ax.get_ylim()[1]))
+	ax.set_xlim(*limits[0])
+	ax.set_ylim(*limits[1])
+	ax.set_aspect('equal')
+	ax.set_title('t = %.2f s, crown drop %.3f m%s' % (O.time, a.crownDrop(), (', load multiplier %.3f' % state['lam']) if cli.load == 'tilt' else ''))
+	f.tight_layout()
+	f.savefig(os.path.join(cli.out, 'frames', 'arch-%03d.png' % k), dpi=80)
+	plt.close(f)
+
+
 vtk = VTKRecorder(fileName=os.path.join(cli.out, 'vtk', 'blocks.'), recorders=['boxes'])
 wall0, lastReport, vtkNext = time.time(), time.time(), 0.0
 collapse, hingesAtCollapse = None, None
@@ -141,6 +166,7 @@ while O.time < end:
 		hingesAtCollapse = a.hinges()
 	if O.time >= vtkNext:
 		vtk()
+		frame(len(os.listdir(os.path.join(cli.out, 'frames'))))
 		vtkNext += 0.1
 	if time.time() - lastReport > 5:
 		lastReport = time.time()

@@ -61,8 +61,10 @@ for T in periods:
 	for f in factors:
 		O.reset()
 		p = Parapet(b=cli.b, h=cli.h)
-		hist = []
 		over, largest = p.shake(f * amin, T)
+		with open(os.path.join(cli.out, 'history-%g-%g.txt' % (T, f)), 'w') as out:
+			out.write('# time [s]  rotation [rad] (pulse A = %.6g m/s2, T = %g s, starting at 0.05 s)\n' % (f * amin, T))
+			out.writelines('%.6f %.8f\n' % row for row in p.history)
 		pulse = lambda t, A=f * amin: A * math.sin(2 * math.pi * t / T) if t <= T else 0.0
 		runs.append(dict(period=T, factor=f, amplitude=f * amin, modelOverturned=over, equationOverturned=eq.overturns(pulse, T), largestRotation=largest,
 		                 steps=O.iter, timeStep=O.dt))

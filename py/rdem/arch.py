@@ -78,7 +78,7 @@ class Arch:
 	def jointOpenings(self, ring=0):
 		"""Per joint of the ring from the left springing (0) to the right one: ``(intrados gap, extrados gap, relative
 		rotation)``, the gaps [m] being the separation along the joint's normal of the two sides' material points that were
-		at the joint's intrados and extrados points (positive: open), the rotation [rad] that of the right-hand voussoir
+		at the joint's intrados and extrados points (positive: open, negative: the contact springs' compression), the rotation [rad] that of the right-hand voussoir
 		(or support) relative to the left-hand one about $+y$. A hinge at the intrados has a closed intrados and an open
 		extrados."""
 		lay = self.layout
@@ -91,11 +91,11 @@ class Arch:
 		for k, (P, Q) in enumerate(lay.jointFaces[ring]):
 			left, right = sides[k], sides[k + 1]
 			f = ((Q[0] - P[0]), (Q[1] - P[1]))
-			n = Vector3(f[1], 0, -f[0]).normalized()  # normal to the joint in the x-z plane
+			n = Vector3(f[1], 0, -f[0]).normalized()  # normal to the joint in the x-z plane, towards the right-hand side
 			gaps = []
 			for p in (P, Q):
 				a, b = self._now(left, (p[0], yc, p[1])), self._now(right, (p[0], yc, p[1]))
-				gaps.append(abs((b - a).dot(n)))
+				gaps.append((b - a).dot(n))
 			rot = []
 			for unit in (left, right):
 				q = O.bodies[self._bodyOf(unit)].state.ori * self._ref[unit][1].conjugate()

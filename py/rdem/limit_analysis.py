@@ -278,3 +278,80 @@ class OneWayWall:
 	def instabilityDisplacement(self):
 		"""$\\Delta_u = \\Delta(\\theta_u) = t$ [m]."""
 		return self.displacement(self.thetaU)
+
+
+def archTiltMultiplier(voussoirs, ratio):
+	"""Collapse multiplier $\\lambda_c$ of a semicircular arch of $N$ equal voussoirs with radial joints and thickness
+	``ratio`` $= t/R$ on fixed abutments, under its weight and a horizontal body force $\\lambda$ times it towards $-x$ (a
+	tilt of the base by $\\arctan\\lambda$, or a quasi-static horizontal ground acceleration $\\lambda g$): the least
+	multiplier over the four-hinge mechanisms with hinges on the joints (kinematic theorem, Heyman 1966; no sliding).
+
+	A mechanism has hinges at joints $h_1 < h_2 < h_3 < h_4$ ($0..N$ from the left springing), each on the intrados or the
+	extrados; the voussoirs between $h_1$ and $h_2$ turn about hinge 1, those between $h_3$ and $h_4$ about hinge 4, those
+	between $h_2$ and $h_3$ about the intersection of the lines through hinges 1–2 and 4–3. It is admissible if every hinge
+	opens its joint on the other side (an intrados hinge opens the extrados). Its multiplier makes the virtual power of
+	the loads vanish, $\\lambda = -\\sum m v_z / \\sum m v_x$ over the voussoirs' centroids, with the motion that the
+	horizontal load drives ($-\\sum m v_x > 0$). Lengths over $R$.
+
+	:param voussoirs: $N \\ge 3$.
+	:param ratio: $t/R$ in $(0, 1)$.
+	:return: ``(multiplier, hinges)``, hinges ``[(joint, 'intrados' or 'extrados')]``; the multiplier is negative if the
+	    arch cannot stand under its weight alone ($t$ below $t_{min}$)."""
+	if isinstance(voussoirs, bool) or not isinstance(voussoirs, numbers.Integral) or voussoirs < 3:
+		raise ValueError('voussoirs = %r: must be an integer >= 3' % (voussoirs, ))
+	t = _positive('ratio', ratio)
+	if not t < 1:
+		raise ValueError('ratio = %r: must be < 1' % (ratio, ))
+	N = int(voussoirs)
+	delta = math.pi / N
+	ri, re = 1 - t / 2, 1 + t / 2
+	rbar = (2.0 / 3.0) * (re**3 - ri**3) / (re * re - ri * ri) * math.sin(delta / 2) / (delta / 2)
+	G = [(rbar * math.cos(math.pi - (k + 0.5) * delta), rbar * math.sin(math.pi - (k + 0.5) * delta)) for k in range(N)]
+
+	def point(k, side):
+		r = ri if side == 'intrados' else re
+		a = math.pi - k * delta
+		return (r * math.cos(a), r * math.sin(a))
+
+	def velocity(centre, omega, p):
+		return (-omega * (p[1] - centre[1]), omega * (p[0] - centre[0]))
+
+	best = (float('inf'), None)
+	sides = ('intrados', 'extrados')
+	for h1 in range(N + 1):
+		for h2 in range(h1 + 1, N + 1):
+			for h3 in range(h2 + 1, N + 1):
+				for h4 in range(h3 + 1, N + 1):
+					for s in ((0, 1, 0, 1), (1, 0, 1, 0)):
+						hs = [(h1, sides[s[0]]), (h2, sides[s[1]]), (h3, sides[s[2]]), (h4, sides[s[3]])]
+						P = [point(k, side) for k, side in hs]
+						# instantaneous centre of the middle body: lines P1P2 and P4P3
+						d1, d2 = (P[1][0] - P[0][0], P[1][1] - P[0][1]), (P[2][0] - P[3][0], P[2][1] - P[3][1])
+						den = d1[0] * d2[1] - d1[1] * d2[0]
+						if abs(den) < 1e-14:
+							continue
+						u = ((P[3][0] - P[0][0]) * d2[1] - (P[3][1] - P[0][1]) * d2[0]) / den
+						I = (P[0][0] + u * d1[0], P[0][1] + u * d1[1])
+						wa = 1.0
+						# same velocity of hinge 2 on bodies a and b, of hinge 3 on bodies b and c (collinear centres)
+						k2 = 0 if abs(P[1][0] - I[0]) > abs(P[1][1] - I[1]) else 1
+						wb = wa * (P[1][k2] - P[0][k2]) / (P[1][k2] - I[k2])
+						k3 = 0 if abs(P[2][0] - P[3][0]) > abs(P[2][1] - P[3][1]) else 1
+						wc = wb * (P[2][k3] - I[k3]) / (P[2][k3] - P[3][k3])
+						rel = [wa - 0.0, wb - wa, wc - wb, 0.0 - wc]  # right minus left at each hinge
+						sx = sz = 0.0
+						for k in range(h1, h4):
+							centre, w = (P[0], wa) if k < h2 else ((I, wb) if k < h3 else (P[3], wc))
+							v = velocity(centre, w, G[k])
+							sx, sz = sx + v[0], sz + v[1]
+						if sx > 0:  # the motion the load (towards -x) drives: -sum v_x > 0
+							rel, sx, sz = [-r for r in rel], -sx, -sz
+						if sx == 0:
+							continue
+						# admissible: an intrados hinge needs a negative relative rotation, an extrados hinge a positive one
+						if not all((r < 0) if side == 'intrados' else (r > 0) for r, (_, side) in zip(rel, hs)):
+							continue
+						lam = -sz / sx
+						if lam < best[0]:
+							best = (lam, hs)
+	return best

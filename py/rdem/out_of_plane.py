@@ -152,15 +152,17 @@ class Parapet:
 		starting ``before`` s from now) and run until the block falls ($|\\theta| > \\pi/4$, or $|\\theta| > \\alpha$ after the
 		pulse: the criterion of :meth:`rdem.rocking.RockingBlockEquation.overturns`) or up to ``after`` s after the pulse's end
 		(default $8/p$, as that method).
-		Returns (overturned, largest $|\\theta|$)."""
+		Returns (overturned, largest $|\\theta|$); the rotation's history is in :attr:`history`."""
 		dt = period / 400
 		record = ground_motion.sinePulse(amplitude, period, dt=dt, before=O.time + before)
 		earthquake.shaker(record, ids=[self.roof], mode='prescribed')
 		end = O.time + before + period
 		stop = end + (after if after is not None else 8 / self.equation.p)
 		largest = 0.0
+		self.history = []  # (time [s], rotation [rad]) every ``every`` steps
 		while O.time < stop:
 			build.run(every)
+			self.history.append((O.time, self.angle()))
 			th = abs(self.angle())
 			largest = max(largest, th)
 			if th > math.pi / 4 or (O.time > end and th > self.alpha):

@@ -8,7 +8,7 @@ import sys
 import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'py'))
-from rdem.limit_analysis import stackTilt, archMinimumThickness, OneWayWall  # noqa: E402
+from rdem.limit_analysis import stackTilt, archMinimumThickness, archTiltMultiplier, OneWayWall  # noqa: E402
 
 
 class StackTilt(unittest.TestCase):
@@ -137,6 +137,105 @@ class ArchMinimumThickness(unittest.TestCase):
 		with self.assertRaisesRegex(ValueError, r'voussoirs = 8.0'):
 			archMinimumThickness(8.0)
 
+
+
+def solve(A, b):
+	"""Gaussian elimination with partial pivoting (small dense systems)."""
+	n = len(b)
+	M = [list(row) + [b[i]] for i, row in enumerate(A)]
+	for c in range(n):
+		p = max(range(c, n), key=lambda r: abs(M[r][c]))
+		M[c], M[p] = M[p], M[c]
+		for r in range(c + 1, n):
+			f = M[r][c] / M[c][c]
+			for k in range(c, n + 1):
+				M[r][k] -= f * M[c][k]
+	x = [0.0] * n
+	for r in reversed(range(n)):
+		x[r] = (M[r][n] - sum(M[r][k] * x[k] for k in range(r + 1, n))) / M[r][r]
+	return x
+
+
+def mechanismStatics(N, t, hinges):
+	"""Equilibrium of the three bodies of a four-hinge mechanism (hinge forces at the hinge points, weights and the
+	horizontal load lambda times them at the voussoirs' centroids): 9 equations, 8 hinge force components and lambda.
+	Returns (lambda, the thrust line's r at every joint from 1 to N), independently of archTiltMultiplier's kinematics."""
+	delta = math.pi / N
+	ri, re = 1 - t / 2, 1 + t / 2
+	rbar = (2.0 / 3.0) * (re**3 - ri**3) / (re * re - ri * ri) * math.sin(delta / 2) / (delta / 2)
+	m = delta * (re * re - ri * ri) / 2
+	G = [(rbar * math.cos(math.pi - (k + 0.5) * delta), rbar * math.sin(math.pi - (k + 0.5) * delta)) for k in range(N)]
+	P = [((ri if side == 'intrados' else re) * math.cos(math.pi - k * delta), (ri if side == 'intrados' else re) * math.sin(math.pi - k * delta)) for k, side in hinges]
+	h = [k for k, _ in hinges]
+	bodies = [range(h[0], h[1]), range(h[1], h[2]), range(h[2], h[3])]
+	A = [[0.0] * 9 for _ in range(9)]
+	b = [0.0] * 9
+
+	def force(row, f, sign, p):  # hinge force unknowns f, f+1 (x, z) acting with sign at p on the body of rows row..row+2
+		A[row][f] += sign
+		A[row + 1][f + 1] += sign
+		A[row + 2][f + 1] += sign * p[0]
+		A[row + 2][f] -= sign * p[1]
+
+	for j, body in enumerate(bodies):
+		r = 3 * j
+		W = m * len(body)
+		A[r][8] -= W  # x: -lambda W
+		b[r + 1] += W  # z: -W moved to the right-hand side
+		A[r + 2][8] += sum(m * G[k][1] for k in body)  # moment of (-lambda m, -m) at G: -m Gx + lambda m Gz
+		b[r + 2] += sum(m * G[k][0] for k in body)
+		if j == 0:
+			force(r, 0, 1, P[0])
+			force(r, 2, -1, P[1])
+		elif j == 1:
+			force(r, 2, 1, P[1])
+			force(r, 4, -1, P[2])
+		else:
+			force(r, 4, 1, P[2])
+			force(r, 6, 1, P[3])
+	x = solve(A, b)
+	lam = x[8]
+	F, M, rs = [x[0], x[1]], P[0][0] * x[1] - P[0][1] * x[0], []
+	for k in range(h[0] + 1, N + 1):  # the thrust line from the left support's force, voussoir by voussoir
+		f = (-lam * m, -m)
+		F = [F[0] + f[0], F[1] + f[1]]
+		M += G[k - 1][0] * f[1] - G[k - 1][1] * f[0]
+		a = math.pi - k * delta
+		rs.append(M / (math.cos(a) * F[1] - math.sin(a) * F[0]))
+	return lam, rs
+
+
+class ArchTilt(unittest.TestCase):
+
+	def testZeroAtTheMinimumThickness(self):
+		for N in (8, 10):
+			lam, hinges = archTiltMultiplier(N, archMinimumThickness(N).ratio)
+			self.assertAlmostEqual(lam, 0, delta=1e-8)
+
+	def testStaticsOfTheMechanism(self):
+		# the least mechanism's multiplier equals the statics of its three bodies, and the thrust line of that equilibrium
+		# lies inside the section at every joint: statically admissible too, so it is the exact collapse multiplier
+		N = 8
+		for factor in (1.2, 1.5, 2.0):
+			t = factor * archMinimumThickness(N).ratio
+			lam, hinges = archTiltMultiplier(N, t)
+			lamStatics, rs = mechanismStatics(N, t, hinges)
+			self.assertAlmostEqual(lam, lamStatics, delta=1e-9 * max(1, lam))
+			for r in rs:
+				self.assertTrue(1 - t / 2 - 1e-9 <= r <= 1 + t / 2 + 1e-9, 'factor %g: r = %g outside' % (factor, r))
+		lam, hinges = archTiltMultiplier(N, 1.5 * archMinimumThickness(N).ratio)
+		self.assertAlmostEqual(lam, 0.16361, delta=1e-5)
+		self.assertEqual(hinges, [(0, 'extrados'), (2, 'intrados'), (4, 'extrados'), (7, 'intrados')])
+
+	def testGrowsWithThickness(self):
+		lams = [archTiltMultiplier(8, f * 0.10086)[0] for f in (1.1, 1.3, 1.5, 2.0)]
+		self.assertEqual(lams, sorted(lams))
+
+	def testBadArguments(self):
+		with self.assertRaisesRegex(ValueError, r'ratio = 1.5: must be < 1'):
+			archTiltMultiplier(8, 1.5)
+		with self.assertRaisesRegex(ValueError, r'voussoirs = 2'):
+			archTiltMultiplier(2, 0.1)
 
 
 class OneWayWallRelation(unittest.TestCase):
