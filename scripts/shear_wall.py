@@ -115,6 +115,7 @@ k = parser.add_argument_group('model')
 k.add_argument('--formulation', choices=['consistent', 'paper', 'off'], default='consistent', help="Poisson effect: consistent (cells), paper, off (default consistent)")
 k.add_argument('--failure-stress', choices=['total', 'spring'], default='total', help='springs break on the total stress of their face (default) or their own')
 k.add_argument('--springs', type=int, default=2, help='springs per face edge (default 2)')
+k.add_argument('--contact-samples', type=int, default=None, help="contact sample grid per face edge (default: --springs, the grid the walls of doc/validation.md were run with; 1: the vertices, rdem.engines' default)")
 k.add_argument('--softening', choices=['off', 'on'], default='on', help='softening law of the springs (default on; off: brittle, the paper)')
 k.add_argument('--head-joints', choices=['unbonded', 'bonded'], default=jnt['headJoints'],
                help='head joints without bond (compression and friction only, MannMuller1982) or bonded like the bed joints (default %(default)s, the rule set)')
@@ -170,6 +171,7 @@ try:
 	                  compressiveFractureEnergy=cli.bond_Gfc)
 	total = cli.failure_stress == 'total' and cli.formulation == 'consistent'
 	O.engines = rdem.engines(segmentsPerEdge=cli.springs,
+	                         contactSamples=cli.contact_samples or cli.springs,
 	                         formulation=None if cli.formulation == 'off' else cli.formulation,
 	                         damping=cli.damping,
 	                         gravity=(0, 0, -cli.gravity),

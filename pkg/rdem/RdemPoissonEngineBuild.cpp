@@ -230,8 +230,7 @@ string RdemPoissonEngine::materialMix(const std::set<Body::id_t>& ids) const
 	std::ostringstream msg;
 	msg << "blocks of " << labels.size() << " materials (";
 	for (auto it = labels.begin(); it != labels.end(); ++it) {
-		msg << (it == labels.begin() ? "" : "; ") << "E " << rdem::numberText(it->first.first) << " Pa, nu " << rdem::numberText(it->first.second)
-		    << ":";
+		msg << (it == labels.begin() ? "" : "; ") << "E " << double(it->first.first) << " Pa, nu " << double(it->first.second) << ":";
 		for (const string& l : it->second)
 			msg << " " << l;
 	}
