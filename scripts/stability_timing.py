@@ -35,7 +35,7 @@ cli = parser.parse_args(sys.argv[1:])
 if cli.repeat < 1:
 	sys.exit('--repeat = %d: must be >= 1' % cli.repeat)
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tests', 'yade'))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(sys.argv[0])), '..', 'tests', 'yade'))  # under YADE, __file__ names YADE's launcher
 import stability_cases as sc  # noqa: E402 (the scenes of the test suite)
 from yade import O  # noqa: E402
 from yade import rdem  # noqa: E402
