@@ -4,8 +4,8 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
-#include <pkg/rdem/RdemCellStrainUpdater.hpp>
 #include <pkg/rdem/RdemCellNetwork.hpp>
+#include <pkg/rdem/RdemCellStrainUpdater.hpp>
 
 namespace yade {
 
