@@ -36,6 +36,10 @@ namespace {
 	/// Overlaps below this are touching, not contact: grid neighbours along an edge or a corner overlap by round-off [m].
 	Real touchTolerance(const Block& A, const Block& B) { return 1e-9 * math::min(A.half.minCoeff(), B.half.minCoeff()); }
 
+	/// How far outside a block a vertex may lie and still count as on its surface (rdem::facesCross): round-off of the
+	/// positions of blocks laid side by side, 1e-6 of the smaller half-extent [m].
+	Real faceTouchTolerance(const Block& A, const Block& B) { return 1e-6 * math::min(A.half.minCoeff(), B.half.minCoeff()); }
+
 	/* Sample points of block X (which = 0 for body 1, 1 for body 2) that entered block Y, appended to geom. normal is the
 	   pair's contact normal from body 1 to body 2 (rdem::contactFaceAxis); X separates from Y along u = -normal (body 1)
 	   or +normal (body 2), and a sample's depth is its distance to Y's surface along u (rdem::sampleDepth). Only the faces
@@ -189,10 +193,11 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 	RdemGeom probe;
 	probe.samplesPerEdge = contactSamples();
 	sampleContacts(pair, s1, s2, tol, contactSamples(), probe);
-	if (probe.sampleKey.empty() && contactSamples() == 1 && segmentsPerEdge > 1) {
-		/* Vertices only, and none of either block inside the other although they overlap: faces that cross (a beam across
-		   a wall, no corner of one on the other). The contact then samples the face grid of segmentsPerEdge for its life;
-		   its samples count from the depth at which they enter (δ₀), so the switch adds no energy. */
+	if (probe.sampleKey.empty() && contactSamples() == 1 && segmentsPerEdge > 1 && rdem::facesCross<Real>(A, B, faceTouchTolerance(A, B))) {
+		/* Vertices only, and no vertex of either block in or on the other although they overlap: faces that cross (a beam
+		   across a wall). The contact then samples the face grid of segmentsPerEdge for its life; its samples count from
+		   the depth at which they enter (δ₀), so the switch adds no energy. Blocks side by side with coincident faces (a
+		   course's head joints) have their vertices on each other's edges and keep the vertex samples. */
 		probe.samplesPerEdge = segmentsPerEdge;
 		sampleContacts(pair, s1, s2, tol, segmentsPerEdge, probe);
 	}

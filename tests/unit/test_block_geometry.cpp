@@ -654,4 +654,36 @@ TEST(BlockGeometry, EdgeEdgeContactOnlyWhereFacesCannotSee)
 	EXPECT_FALSE(rdem::edgeEdgeContact<Scalar>(c.A, c.B, tol).hit);
 }
 
+// ------------------------------------------------------------------------------------------------ facesCross
+
+// Two beams 2 × 0.2 × 0.2 m laid across each other (one along x, the other along y on top of it, sunk d): they overlap,
+// yet no vertex of either is in the other: faces that cross, which vertex samples cannot see.
+TEST(BlockGeometry, CrossedBeamsHaveFacesThatCross)
+{
+	const V3 half(1, 0.1, 0.1);
+	for (const Scalar d : { 1e-6, 1e-3 }) {
+		SCOPED_TRACE("d = " + std::to_string(d));
+		const Block A { V3::Zero(), M3::Identity(), half };
+		const Block B { V3(0, 0, 0.2 - d), Eigen::AngleAxis<Scalar>(M_PI / 2, V3::UnitZ()).toRotationMatrix(), half };
+		ASSERT_TRUE(rdem::blocksOverlap<Scalar>(A, B, 1e-9));
+		EXPECT_FALSE(rdem::vertexInOrOn<Scalar>(A, B, 1e-9));
+		EXPECT_FALSE(rdem::vertexInOrOn<Scalar>(B, A, 1e-9));
+		EXPECT_TRUE(rdem::facesCross<Scalar>(A, B, 1e-9));
+	}
+}
+
+// Side by side with coincident faces, pressed 1e-6 m into each other (a course's head joint), and a cube standing
+// on a larger block: vertices lie on (or in) the other block, so the faces do not cross. The coincident vertices lie on
+// B's edges to round-off, within the tolerance; 1e-3 m apart sideways, A's vertices leave B and B's leave A.
+TEST(BlockGeometry, CoincidentOrRestingFacesDoNotCross)
+{
+	const Block A = cube(V3::Zero());
+	EXPECT_FALSE(rdem::facesCross<Scalar>(A, cube(V3(1 - 1e-6, 0, 0)), 1e-9));
+	EXPECT_FALSE(rdem::facesCross<Scalar>(A, cube(V3(1 - 1e-6, 1e-12, -1e-12)), 1e-9));
+	EXPECT_FALSE(rdem::facesCross<Scalar>(A, Block { V3(0, 0, -1 + 1e-6), M3::Identity(), V3(2, 2, 0.5) }, 1e-9));
+	EXPECT_TRUE(rdem::vertexInOrOn<Scalar>(A, cube(V3(1 - 1e-6, 1e-3, 0)), 1e-9)); // A's +y corners reach into B
+	EXPECT_TRUE(rdem::vertexInOrOn<Scalar>(cube(V3(1 - 1e-6, 1e-3, 0)), A, 1e-9));
+}
+
+
 } // namespace

@@ -363,5 +363,29 @@ namespace rdem {
 		return edgeEdgeContact(BlockPair<S>(A, B), tol);
 	}
 
+	/* Whether a vertex of A lies in B or on its surface, within tol [m] (B's box grown by tol on every side). Two blocks
+	   that overlap although no vertex of either is in or on the other have faces that cross (a beam laid across a wall):
+	   vertex samples cannot see that contact. Side-by-side blocks whose faces coincide (the head joints of a course) have
+	   their vertices on each other's edges, so they count as touching at the vertices, not as crossing. */
+	template <class S> bool vertexInOrOn(const OrientedBlock<S>& A, const OrientedBlock<S>& B, S tol)
+	{
+		using std::abs;
+		const Eigen::Matrix<S, 3, 3> toB = B.rot.transpose();
+		for (int corner = 0; corner < 8; ++corner) {
+			Eigen::Matrix<S, 3, 1> v = A.pos;
+			for (int k = 0; k < 3; ++k)
+				v += S((corner >> k) & 1 ? 1 : -1) * A.half[k] * A.rot.col(k);
+			const Eigen::Matrix<S, 3, 1> q = toB * (v - B.pos);
+			if (abs(q[0]) <= B.half[0] + tol && abs(q[1]) <= B.half[1] + tol && abs(q[2]) <= B.half[2] + tol) return true;
+		}
+		return false;
+	}
+
+	/// Faces that cross: no vertex of either block in or on the other (vertexInOrOn), although the blocks overlap.
+	template <class S> bool facesCross(const OrientedBlock<S>& A, const OrientedBlock<S>& B, S tol)
+	{
+		return !vertexInOrOn(A, B, tol) && !vertexInOrOn(B, A, tol);
+	}
+
 } // namespace rdem
 } // namespace yade
