@@ -9,6 +9,7 @@
 #include <pkg/rdem/RdemContactGate.hpp>
 #include <pkg/rdem/RdemPrefetch.hpp>
 #include <pkg/rdem/math/BlockGeometry.hpp>
+#include <pkg/rdem/math/FacePatch.hpp>
 #include <pkg/rdem/math/SegmentGrid.hpp>
 #include <pkg/rdem/math/SeparationBound.hpp>
 #include <limits>
@@ -120,10 +121,49 @@ namespace {
 		sampleInside(B, s2, A, s1, 1, n, normal, g);
 		edgeInside(pair, s1, s2, tol, n, g);
 	}
+
+	/// Where the springs of g's patch are for blocks A and B: the mid-points of their two material points (global) [m].
+	vector<Vector3r> patchMidpoints(const RdemGeom& g, const Block& A, const Block& B)
+	{
+		const auto       springs = g.patchSprings();
+		vector<Vector3r> out(springs.size);
+		for (size_t i = 0; i < springs.size; ++i)
+			out[i] = (A.pos + A.rot * springs.point1(i) + B.pos + B.rot * springs.point2(i)) / 2;
+		return out;
+	}
+
+	/* The contact history of a patch (RdemPhys::contactShear … by spring, contactOffset < 0 for a spring out of contact)
+	   passed to the samples of this step, at old springs' mid-points `from`: each sample takes the history of the nearest
+	   spring that was in contact, its offset lowered to the sample's depth (as the law does from step to step). */
+	void handOverToSamples(const vector<Vector3r>& from, const RdemGeom& g, RdemPhys& p)
+	{
+		const vector<int> near = rdem::nearestPoints<Real>(from, g.samplePoint);
+		vector<int>       key;
+		vector<Vector3r>  shear, dashpot;
+		vector<Real>      offset;
+		for (size_t k = 0; k < near.size(); ++k) {
+			const int j = near[k];
+			if (j < 0 || size_t(j) >= p.contactOffset.size() || !(p.contactOffset[size_t(j)] >= 0)) continue;
+			key.push_back(g.sampleKey[k]); // ascending, as sampleKey
+			shear.push_back(p.contactShear[size_t(j)]);
+			dashpot.push_back(p.contactDashpot[size_t(j)]);
+			offset.push_back(math::min(p.contactOffset[size_t(j)], g.sampleDepth[k]));
+		}
+		p.contactKey.swap(key);
+		p.contactShear.swap(shear);
+		p.contactDashpot.swap(dashpot);
+		p.contactOffset.swap(offset);
+	}
 }
 
 void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom&)
 {
+	if (!(patchAngleTolerance > 0 && patchAngleTolerance < 1))
+		throw std::invalid_argument(
+		        "Ig2_RdemBlock_RdemBlock_RdemGeom.patchAngleTolerance = " + rdem::numberText(patchAngleTolerance) + ": must be > 0 and < 1");
+	if (!(patchTravelTolerance > 0 && patchTravelTolerance <= 0.1))
+		throw std::invalid_argument(
+		        "Ig2_RdemBlock_RdemBlock_RdemGeom.patchTravelTolerance = " + rdem::numberText(patchTravelTolerance) + ": must be > 0 and <= 0.1");
 	if (segmentsPerEdge < 1)
 		throw std::invalid_argument(
 		        "Ig2_RdemBlock_RdemBlock_RdemGeom.segmentsPerEdge = " + std::to_string(segmentsPerEdge) + ": must be an integer >= 1");
@@ -185,6 +225,16 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 		}
 		return false;
 	}
+	if (persistentContacts) {
+		auto g            = shared_ptr<RdemGeom>(new RdemGeom);
+		g->samplesPerEdge = contactSamples();
+		if (derivePatch(A, B, s1.ori, s2.ori, *g, nullptr)) {
+			g->ell1 = faceDistance(A, g->normal);
+			g->ell2 = faceDistance(B, g->normal);
+			I->geom = g;
+			return true;
+		}
+	}
 	RdemGeom probe;
 	probe.samplesPerEdge = contactSamples();
 	sampleContacts(pair, s1, s2, tol, contactSamples(), probe);
@@ -194,6 +244,64 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 	g->ell2 = faceDistance(B, probe.sampleNormal[0]);
 	I->geom = g; // replaces a certificate that no longer holds
 	return true; // samples of this step are already in place
+}
+
+bool Ig2_RdemBlock_RdemBlock_RdemGeom::patchHolds(RdemGeom& g, const State& s1, const State& s2, const Vector3r& shift2) const
+{
+	const Quaternionr q1c = s1.ori.conjugate();
+	const Vector3r    rel = q1c * (s2.pos + shift2 - s1.pos);
+	if (!(rdem::rigidTravel<Real>(g.patchRelPos, g.patchRelOri, rel, q1c * s2.ori, g.patchRadius) <= g.patchTravel)) return false;
+	g.normal = (s1.ori * g.segNormal1 - s2.ori * g.segNormal2).normalized();
+	return true;
+}
+
+bool Ig2_RdemBlock_RdemBlock_RdemGeom::derivePatch(const Block& A, const Block& B, const Quaternionr& q1, const Quaternionr& q2, RdemGeom& g, RdemPhys* p) const
+{
+	const Real hMin = math::min(A.half.minCoeff(), B.half.minCoeff());
+	// Gap tolerance: a tenth of the smaller half-extent, to tell the faces that meet from the others (two faces of a
+	// block are 2h apart); the pair overlaps already (blocksOverlap).
+	const auto fp = rdem::facePatch<Real>(A, B, contactSamples(), patchAngleTolerance, hMin / 10);
+	if (!fp.found) return false;
+	const Vector3r   nA = fp.faceA.normal(A), nB = fp.faceB.normal(B), n = (nA - nB).normalized();
+	vector<Vector3r> mid(fp.point1.size());
+	for (size_t i = 0; i < mid.size(); ++i)
+		mid[i] = (fp.point1[i] + fp.point2[i]) / 2;
+	if (p) {
+		// The history of the old patch, or of the last step's samples (keys as the law left them), by nearest point.
+		vector<Vector3r> from;
+		if (g.nPatch() > 0 && p->contactKey.empty() && p->contactOffset.size() == g.nPatch()) from = patchMidpoints(g, A, B);
+		else if (!g.sampleKey.empty() && g.sampleKey == p->contactKey)
+			from = g.samplePoint;
+		const vector<int> near = rdem::nearestPoints<Real>(from, mid);
+		vector<Vector3r>  shear(mid.size(), Vector3r::Zero()), dashpot(mid.size(), Vector3r::Zero());
+		vector<Real>      offset(mid.size(), -1);
+		for (size_t i = 0; i < mid.size(); ++i) {
+			const int  j     = near[i];
+			const Real depth = -(fp.point2[i] - fp.point1[i]).dot(n);
+			if (j < 0 || !(depth > 0) || !(p->contactOffset[size_t(j)] >= 0)) continue;
+			shear[i]   = p->contactShear[size_t(j)];
+			dashpot[i] = p->contactDashpot[size_t(j)];
+			offset[i]  = math::min(p->contactOffset[size_t(j)], depth);
+		}
+		p->contactKey.clear();
+		p->contactShear.swap(shear);
+		p->contactDashpot.swap(dashpot);
+		p->contactOffset.swap(offset);
+	}
+	g.patch.clear();
+	for (size_t i = 0; i < mid.size(); ++i)
+		rdem::PatchSprings<Real>::append(
+		        g.patch, A.rot.transpose() * (fp.point1[i] - A.pos), B.rot.transpose() * (fp.point2[i] - B.pos), fp.pointArea[i]);
+	g.patchArea   = fp.area;
+	g.segNormal1  = A.rot.transpose() * nA;
+	g.segNormal2  = B.rot.transpose() * nB;
+	g.normal      = n;
+	g.patchRelPos = A.rot.transpose() * (B.pos - A.pos);
+	g.patchRelOri = q1.conjugate() * q2;
+	g.patchRadius = B.half.norm();
+	g.patchTravel = patchTravelTolerance * hMin;
+	g.clearSamples();
+	return true;
 }
 
 bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
@@ -219,15 +327,25 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 		skippedTests += 1;
 		return false;
 	}
+	// A face-to-face contact whose blocks have not moved enough to change its patch: its springs are in place.
+	if (I->phys && static_cast<RdemGeom*>(I->geom.get())->nPatch() > 0 && patchHolds(*static_cast<RdemGeom*>(I->geom.get()), state1, state2, shift2))
+		return true;
 	const Block A { state1.pos, state1.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape1.get())->extents };
 	const Block B { state2.pos + shift2, state2.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape2.get())->extents };
 	if (!I->phys) return force ? bond(A, B, I) : findContact(A, B, state1, state2, I);
 
 	const rdem::BlockPair<Real> pair(A, B);
-	const Real                  tol = touchTolerance(A, B);
-	RdemGeom&                   g   = *static_cast<RdemGeom*>(I->geom.get());
+	const Real                  tol     = touchTolerance(A, B);
+	RdemGeom&                   g       = *static_cast<RdemGeom*>(I->geom.get());
+	RdemPhys&                   p       = *static_cast<RdemPhys*>(I->phys.get());
+	const bool                  overlap = rdem::blocksOverlap<Real>(pair, tol);
+	if (overlap && persistentContacts && derivePatch(A, B, state1.ori, state2.ori, g, &p)) return true;
+	// Sampled: a patch whose faces no longer meet hands its history to the samples.
+	const vector<Vector3r> from = g.nPatch() > 0 ? patchMidpoints(g, A, B) : vector<Vector3r>();
+	g.clearPatch();
 	g.clearSamples();
-	if (rdem::blocksOverlap<Real>(pair, tol)) sampleContacts(pair, state1, state2, tol, g.samplesPerEdge, g);
+	if (overlap) sampleContacts(pair, state1, state2, tol, g.samplesPerEdge, g);
+	if (!from.empty()) handOverToSamples(from, g, p);
 	return true; // a real interaction stays; the law erases it when no sample is in contact
 }
 

@@ -129,6 +129,9 @@ Real RdemTimeStepper::gershgorin(Scene* sc) const
 			both(s1.pos + s1.ori * p1, normal, g->segmentArea());
 		for (size_t k = 0; k < g->sampleKey.size(); ++k)
 			both(g->samplePoint[k], g->sampleNormal[k], g->sampleArea[k]);
+		const auto springs = g->patchSprings(); // a face-to-face contact's springs, at body 1's material points
+		for (size_t k = 0; k < springs.size; ++k)
+			both(s1.pos + s1.ori * Vector3r(springs.point1(k)), normal, springs.area(k));
 	}
 	if (contactBound) addContactBound(omega2, bonded, sc);
 	if (RdemPoissonEngine* poisson = RdemPoissonEngine::of(sc)) {
@@ -153,7 +156,7 @@ namespace {
 		const State& s1 = *Body::byId(I.getId1(), sc)->state;
 		const State& s2 = *Body::byId(I.getId2(), sc)->state;
 		const long   b1 = I.getId1(), b2 = I.getId2();
-		if (g.nSegments() == 0 && g.sampleKey.empty()) return;
+		if (g.nSegments() == 0 && g.sampleKey.empty() && g.nPatch() == 0) return;
 		K.beginPair(b1, b2);
 		C.beginPair(b1, b2);
 		const Real     wn = p.weightNormal, ws = p.weightShear;
@@ -174,6 +177,14 @@ namespace {
 			K.addPointSpring(b1, b2, arm1, arm2, g.sampleNormal[k], wn * p.kn * a, ws * p.ks * a);
 			const Vector2r c = pointDashpots(p, s1, s2, g.samplePoint[k], g.sampleNormal[k], a, a / contactArea, capDt);
 			C.addPointSpring(b1, b2, arm1, arm2, g.sampleNormal[k], c[0], c[1]);
+		}
+		const auto springs = g.patchSprings(); // a face-to-face contact's springs, at body 1's material points
+		for (size_t k = 0; k < springs.size; ++k) {
+			const Vector3r arm1 = s1.ori * Vector3r(springs.point1(k)), arm2 = s1.pos + arm1 - s2.pos;
+			const Real     a = springs.area(k);
+			K.addPointSpring(b1, b2, arm1, arm2, normal, wn * p.kn * a, ws * p.ks * a);
+			const Vector2r c = pointDashpots(p, s1, s2, s1.pos + arm1, normal, a, a / g.patchArea, capDt);
+			C.addPointSpring(b1, b2, arm1, arm2, normal, c[0], c[1]);
 		}
 	}
 
@@ -264,7 +275,7 @@ vector<Real> RdemTimeStepper::springSignature(Scene* sc) const
 		if (!g || !p) continue;
 		nReal += 1;
 		nSegments += Real(g->nSegments());
-		nSamples += Real(g->sampleKey.size());
+		nSamples += Real(g->sampleKey.size() + g->nPatch());
 		stiffness += p->weightNormal * p->kn + p->weightShear * p->ks;
 	}
 	for (const auto& b : *sc->bodies)
@@ -283,7 +294,7 @@ bool RdemTimeStepper::contactsPossible(Scene* sc) const
 		if (!I->isReal()) continue;
 		const auto* g = dynamic_cast<RdemGeom*>(I->geom.get());
 		if (!g) continue;
-		if (!g->sampleKey.empty()) return true;
+		if (!g->sampleKey.empty() || g->nPatch() > 0) return true;
 		if (g->nSegments() > 0) bonded[size_t(I->getId1())] = bonded[size_t(I->getId2())] = 1;
 	}
 	if (!contactBound) return false;

@@ -218,5 +218,47 @@ namespace rdem {
 		return best;
 	}
 
+	/* The springs of a face-to-face contact as the law reads them at every step: one contiguous array of 7 numbers per
+	   spring, its material point in body 1's frame (3, relative to the centroid), in body 2's frame (3) and its
+	   tributary area, so that a contact's springs take one pass over adjacent memory (a quarter of a 64-byte line per
+	   number triple in double). The only way in: the law, the geometry functor and the time stepper go through it. */
+	template <class S> struct PatchSprings {
+		static constexpr int stride = 7;
+		static_assert(sizeof(Eigen::Matrix<S, 3, 1>) == 3 * sizeof(S), "a Vector3 must be three packed scalars for PatchSprings' layout");
+		const S* data;
+		size_t   size;
+		PatchSprings(const std::vector<S>& v)
+		        : data(v.data())
+		        , size(v.size() / stride)
+		{
+		}
+		Eigen::Map<const Eigen::Matrix<S, 3, 1>> point1(size_t i) const { return Eigen::Map<const Eigen::Matrix<S, 3, 1>>(data + stride * i); }
+		Eigen::Map<const Eigen::Matrix<S, 3, 1>> point2(size_t i) const { return Eigen::Map<const Eigen::Matrix<S, 3, 1>>(data + stride * i + 3); }
+		S                                        area(size_t i) const { return data[stride * i + 6]; }
+		/// Appends a spring with material points p1 (body 1's frame), p2 (body 2's frame) [m] and area [m²] to v.
+		static void append(std::vector<S>& v, const Eigen::Matrix<S, 3, 1>& p1, const Eigen::Matrix<S, 3, 1>& p2, S a)
+		{
+			v.insert(v.end(), { p1[0], p1[1], p1[2], p2[0], p2[1], p2[2], a });
+		}
+	};
+
+	/// For each point of `to`, the index of the nearest point of `from` (-1 if `from` is empty): how a contact's spring
+	/// history passes to the springs of a patch derived again, or between sampled points and a patch.
+	template <class S> std::vector<int> nearestPoints(const std::vector<Eigen::Matrix<S, 3, 1>>& from, const std::vector<Eigen::Matrix<S, 3, 1>>& to)
+	{
+		std::vector<int> out(to.size(), -1);
+		for (size_t i = 0; i < to.size(); ++i) {
+			S best = std::numeric_limits<S>::infinity();
+			for (size_t j = 0; j < from.size(); ++j) {
+				const S d = (from[j] - to[i]).squaredNorm();
+				if (d < best) {
+					best   = d;
+					out[i] = int(j);
+				}
+			}
+		}
+		return out;
+	}
+
 } // namespace rdem
 } // namespace yade
