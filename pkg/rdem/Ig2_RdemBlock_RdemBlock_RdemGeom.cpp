@@ -122,37 +122,81 @@ namespace {
 		edgeInside(pair, s1, s2, tol, n, g);
 	}
 
-	/// Where the springs of g's patch are for blocks A and B: the mid-points of their two material points (global) [m].
-	vector<Vector3r> patchMidpoints(const RdemGeom& g, const Block& A, const Block& B)
+	/* The contact points of the last step whose history (RdemPhys::contactShear, contactDashpot, contactOffset, in the
+	   same order) passes to the points of a new patch or to samples: where they are now (global) [m] and how far each
+	   spring is compressed, depth - offset (-1: not in contact) [m]. What passes is the compression, not the offset: a
+	   point taking over at another depth starts with the force per area of the point it replaces, so that re-deriving
+	   a patch, or going between patch and samples, neither makes nor loses elastic energy beyond the change of the
+	   tributary areas. */
+	struct ContactHistory {
+		vector<Vector3r> pos;
+		vector<Real>     compression;
+	};
+
+	/// The history of g's patch for blocks A and B (normal n of this step).
+	ContactHistory patchHistory(const RdemGeom& g, const RdemPhys& p, const Block& A, const Block& B, const Vector3r& n)
 	{
-		const auto       springs = g.patchSprings();
-		vector<Vector3r> out(springs.size);
-		for (size_t i = 0; i < springs.size; ++i)
-			out[i] = (A.pos + A.rot * springs.point1(i) + B.pos + B.rot * springs.point2(i)) / 2;
-		return out;
+		const auto     springs = g.patchSprings();
+		ContactHistory h;
+		for (size_t i = 0; i < springs.size; ++i) {
+			const Vector3r P1 = A.pos + A.rot * springs.point1(i), P2 = B.pos + B.rot * springs.point2(i);
+			h.pos.push_back((P1 + P2) / 2);
+			const Real depth = -(P2 - P1).dot(n);
+			h.compression.push_back(i < p.contactOffset.size() && p.contactOffset[i] >= 0 ? math::max(depth - p.contactOffset[i], Real(0)) : Real(-1));
+		}
+		return h;
 	}
 
-	/* The contact history of a patch (RdemPhys::contactShear … by spring, contactOffset < 0 for a spring out of contact)
-	   passed to the samples of this step, at old springs' mid-points `from`: each sample takes the history of the nearest
-	   spring that was in contact, its offset lowered to the sample's depth (as the law does from step to step). */
-	void handOverToSamples(const vector<Vector3r>& from, const RdemGeom& g, RdemPhys& p)
+	/// The history of the last step's samples of g, if the law left it in p (its keys are g's sample keys).
+	ContactHistory sampleHistory(const RdemGeom& g, const RdemPhys& p)
 	{
-		const vector<int> near = rdem::nearestPoints<Real>(from, g.samplePoint);
-		vector<int>       key;
-		vector<Vector3r>  shear, dashpot;
-		vector<Real>      offset;
-		for (size_t k = 0; k < near.size(); ++k) {
-			const int j = near[k];
-			if (j < 0 || size_t(j) >= p.contactOffset.size() || !(p.contactOffset[size_t(j)] >= 0)) continue;
+		ContactHistory h;
+		if (g.sampleKey.empty() || g.sampleKey != p.contactKey) return h;
+		h.pos = g.samplePoint;
+		for (size_t k = 0; k < g.sampleKey.size(); ++k)
+			h.compression.push_back(math::max(g.sampleDepth[k] - p.contactOffset[k], Real(0)));
+		return h;
+	}
+
+	/* The history `from` (with its arrays still in p) passed to new contact points at `pos` with depths `depth` [m]:
+	   each point in contact takes the shear elongation and dashpot force of the nearest old point that was in contact,
+	   and its compression, at most its own depth (ContactHistory). Returns the new points' offsets (-1: no history; the
+	   law starts the point at its depth) and replaces p's shear and dashpot arrays by the new points'. */
+	vector<Real> handOver(const ContactHistory& from, const vector<Vector3r>& pos, const vector<Real>& depth, RdemPhys& p)
+	{
+		const vector<int> near = rdem::nearestPoints<Real>(from.pos, pos);
+		vector<Vector3r>  shear(pos.size(), Vector3r::Zero()), dashpot(pos.size(), Vector3r::Zero());
+		vector<Real>      offset(pos.size(), Real(-1));
+		for (size_t i = 0; i < pos.size(); ++i) {
+			const int j = near[i];
+			if (j < 0 || !(depth[i] > 0) || !(from.compression[size_t(j)] >= 0)) continue;
+			shear[i]   = p.contactShear[size_t(j)];
+			dashpot[i] = p.contactDashpot[size_t(j)];
+			offset[i]  = depth[i] - math::min(from.compression[size_t(j)], depth[i]);
+		}
+		p.contactShear.swap(shear);
+		p.contactDashpot.swap(dashpot);
+		return offset;
+	}
+
+	/// The history of a patch passed to this step's samples of g (handOver), as the law's sample history in p.
+	void handOverToSamples(const ContactHistory& from, const RdemGeom& g, RdemPhys& p)
+	{
+		vector<Real> offset = handOver(from, g.samplePoint, g.sampleDepth, p);
+		vector<int>      key;
+		vector<Vector3r> shear, dashpot;
+		vector<Real>     kept;
+		for (size_t k = 0; k < offset.size(); ++k) {
+			if (offset[k] < 0) continue;
 			key.push_back(g.sampleKey[k]); // ascending, as sampleKey
-			shear.push_back(p.contactShear[size_t(j)]);
-			dashpot.push_back(p.contactDashpot[size_t(j)]);
-			offset.push_back(math::min(p.contactOffset[size_t(j)], g.sampleDepth[k]));
+			shear.push_back(p.contactShear[k]);
+			dashpot.push_back(p.contactDashpot[k]);
+			kept.push_back(offset[k]);
 		}
 		p.contactKey.swap(key);
 		p.contactShear.swap(shear);
 		p.contactDashpot.swap(dashpot);
-		p.contactOffset.swap(offset);
+		p.contactOffset.swap(kept);
 	}
 }
 
@@ -267,25 +311,15 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::derivePatch(const Block& A, const Block& 
 	for (size_t i = 0; i < mid.size(); ++i)
 		mid[i] = (fp.point1[i] + fp.point2[i]) / 2;
 	if (p) {
-		// The history of the old patch, or of the last step's samples (keys as the law left them), by nearest point.
-		vector<Vector3r> from;
-		if (g.nPatch() > 0 && p->contactKey.empty() && p->contactOffset.size() == g.nPatch()) from = patchMidpoints(g, A, B);
-		else if (!g.sampleKey.empty() && g.sampleKey == p->contactKey)
-			from = g.samplePoint;
-		const vector<int> near = rdem::nearestPoints<Real>(from, mid);
-		vector<Vector3r>  shear(mid.size(), Vector3r::Zero()), dashpot(mid.size(), Vector3r::Zero());
-		vector<Real>      offset(mid.size(), -1);
-		for (size_t i = 0; i < mid.size(); ++i) {
-			const int  j     = near[i];
-			const Real depth = -(fp.point2[i] - fp.point1[i]).dot(n);
-			if (j < 0 || !(depth > 0) || !(p->contactOffset[size_t(j)] >= 0)) continue;
-			shear[i]   = p->contactShear[size_t(j)];
-			dashpot[i] = p->contactDashpot[size_t(j)];
-			offset[i]  = math::min(p->contactOffset[size_t(j)], depth);
-		}
+		// The history of the old patch, or of the last step's samples, passed to the new springs (handOver).
+		const ContactHistory from = g.nPatch() > 0 && p->contactKey.empty() && p->contactOffset.size() == g.nPatch()
+		        ? patchHistory(g, *p, A, B, (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized())
+		        : sampleHistory(g, *p);
+		vector<Real> depth(mid.size());
+		for (size_t i = 0; i < mid.size(); ++i)
+			depth[i] = -(fp.point2[i] - fp.point1[i]).dot(n);
+		vector<Real> offset = handOver(from, mid, depth, *p);
 		p->contactKey.clear();
-		p->contactShear.swap(shear);
-		p->contactDashpot.swap(dashpot);
 		p->contactOffset.swap(offset);
 	}
 	g.patch.clear();
@@ -341,11 +375,13 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	const bool                  overlap = rdem::blocksOverlap<Real>(pair, tol);
 	if (overlap && persistentContacts && derivePatch(A, B, state1.ori, state2.ori, g, &p)) return true;
 	// Sampled: a patch whose faces no longer meet hands its history to the samples.
-	const vector<Vector3r> from = g.nPatch() > 0 ? patchMidpoints(g, A, B) : vector<Vector3r>();
+	const ContactHistory from = g.nPatch() > 0 && p.contactKey.empty() && p.contactOffset.size() == g.nPatch()
+	        ? patchHistory(g, p, A, B, (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized())
+	        : ContactHistory();
 	g.clearPatch();
 	g.clearSamples();
 	if (overlap) sampleContacts(pair, state1, state2, tol, g.samplesPerEdge, g);
-	if (!from.empty()) handOverToSamples(from, g, p);
+	if (!from.pos.empty()) handOverToSamples(from, g, p);
 	return true; // a real interaction stays; the law erases it when no sample is in contact
 }
 

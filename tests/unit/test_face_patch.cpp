@@ -99,6 +99,9 @@ TEST(FacePatch, PointsOfAnyPatchHaveItsAreaAndFirstMoments)
 	const auto oct = rdem::clipToBox<Scalar>(d, P2(-1, -1), P2(1, 1));
 	for (int m = 1; m <= 5; ++m)
 		expectExactMoments(oct, m);
+	// m = 1: the whole patch is one cut cell, whose area goes to its vertices (cutCellPoints), not to one point: a patch
+	// must resist a moment.
+	EXPECT_EQ(rdem::patchPoints<Scalar>(oct, 1).size(), oct.size());
 }
 
 Block block(const V3& pos, const M3& rot, const V3& half) { return Block { pos, rot, half }; }

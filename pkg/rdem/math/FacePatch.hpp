@@ -15,7 +15,7 @@
 
    Spring points. The bounding rectangle of the patch in A's face frame is cut into m×m cells, and each cell is clipped
    to the patch. A full cell gives a quarter of its area to each of its four corners (the trapezoid rule; shared
-   corners are merged), a cut cell its area to its centroid. The points are thus the (m+1)×(m+1) trapezoid nodes of
+   corners are merged), a cut cell its area to its vertices. The points are thus the (m+1)×(m+1) trapezoid nodes of
    the sampled contacts wherever the patch is a rectangle aligned with A's face (grid neighbours, joints of a wall,
    stacked blocks), and for any patch the tributary areas sum to the patch area exactly and have its first moments
    exactly: a normal stress field that is affine over the patch gives the exact resultant force and moment.
@@ -99,8 +99,51 @@ namespace rdem {
 		S         area;
 	};
 
+	/* Spring points of a cell cut by the patch's edge, the convex polygon q of area a: its vertices v_k (repeated ones
+	   dropped), with the weights w_k = a/N + (v_k - v̄)·μ, S μ = a (c - v̄), v̄ the vertices' mean, c the centroid and
+	   S = Σ (v_k - v̄)(v_k - v̄)ᵀ: the least-norm weights with Σ w_k = a and Σ w_k v_k = a c, so that the piece has its
+	   area and first moments exactly and, unlike a single point at the centroid, a moment stiffness (a patch of one cut
+	   cell, m = 1, would otherwise be a single spring). For a rectangle they are a/4 at each corner. Where a weight would
+	   not be positive (a sliver), the centroid takes the whole area. Appended to out. */
+	template <class S> void cutCellPoints(const Polygon2<S>& q, S a, std::vector<PatchPoint<S>>& out)
+	{
+		Polygon2<S> v;
+		S           size = 0;
+		for (size_t i = 1; i < q.size(); ++i)
+			size = std::max(size, (q[i] - q[0]).norm());
+		for (const auto& x : q)
+			if (v.empty() || (x - v.back()).norm() > S(1e-9) * size) v.push_back(x);
+		while (v.size() > 1 && (v.front() - v.back()).norm() <= S(1e-9) * size)
+			v.pop_back();
+		const Point2<S> c = polygonCentroid<S>(q);
+		if (v.size() >= 3) {
+			Point2<S> mean = Point2<S>::Zero();
+			for (const auto& x : v)
+				mean += x / S(v.size());
+			Eigen::Matrix<S, 2, 2> M = Eigen::Matrix<S, 2, 2>::Zero();
+			for (const auto& x : v)
+				M += (x - mean) * (x - mean).transpose();
+			const S det = M.determinant();
+			if (det > S(1e-12) * M.trace() * M.trace()) {
+				const Point2<S> mu = M.inverse() * (a * (c - mean));
+				std::vector<S>  w;
+				bool            positive = true;
+				for (const auto& x : v) {
+					w.push_back(a / S(v.size()) + (x - mean).dot(mu));
+					positive = positive && w.back() > 0;
+				}
+				if (positive) {
+					for (size_t k = 0; k < v.size(); ++k)
+						out.push_back({ v[k], w[k] });
+					return;
+				}
+			}
+		}
+		out.push_back({ c, a });
+	}
+
 	/* Spring points of the convex patch polygon p (counter-clockwise, nonzero area) on an m×m grid of cells over its
-	   bounding rectangle (see the header): trapezoid nodes of the full cells, centroids of the cut ones. The areas sum
+	   bounding rectangle (see the header): trapezoid nodes of the full cells, vertices of the cut ones (cutCellPoints). The areas sum
 	   to polygonArea(p) and their first moments to the patch's, up to round-off. Cells cut to less than 1e-12 of a
 	   cell's area are dropped (slivers of round-off). */
 	template <class S> std::vector<PatchPoint<S>> patchPoints(const Polygon2<S>& p, int m)
@@ -130,7 +173,7 @@ namespace rdem {
 						for (int dj = 0; dj < 2; ++dj)
 							node[size_t((i + di) * (m + 1) + j + dj)] += area / 4;
 				} else
-					out.push_back({ polygonCentroid<S>(piece), area });
+					cutCellPoints<S>(piece, area, out);
 			}
 		for (int i = 0; i <= m; ++i)
 			for (int j = 0; j <= m; ++j) {
