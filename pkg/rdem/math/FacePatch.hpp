@@ -8,8 +8,8 @@
 
    Two blocks whose faces meet face to face (outward normals antiparallel within a tolerance, a small gap or overlap
    between the face planes) touch over the intersection of the two faces: a convex polygon, found once by clipping B's
-   face, projected orthogonally onto A's face plane, against A's face rectangle (Sutherland & Hodgman, Commun. ACM 17,
-   1974: one pass per half-plane of the rectangle), its area by the shoelace formula. The patch carries the contact
+   face, projected orthogonally onto A's face plane, against A's face rectangle ([SutherlandHodgman1974], doc/references.bib:
+   one pass per half-plane of the rectangle), its area by the shoelace formula. The patch carries the contact
    springs of eqs. (13) and (17) of the paper [P] at fixed material points of both blocks, as a bond carries its
    segments' springs, instead of points sampled again at every step (SegmentGrid.hpp, BlockGeometry.hpp).
 
