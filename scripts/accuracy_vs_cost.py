@@ -23,7 +23,8 @@ import os
 import resource
 import sys
 import time
-import rdem.batch
+from yade import rdem
+import yade.rdem.batch
 
 parser = argparse.ArgumentParser(prog='yade scripts/accuracy_vs_cost.py', description=__doc__.split('\n\n')[0])
 parser.add_argument('--quick', action='store_true', help='coarse sweeps (about 3 minutes)')
@@ -40,8 +41,8 @@ BASE = dict(blocks=10, springs=2, formulation='consistent', corotational=False, 
 def runPoint(point):
 	"""One point in this process: run to the first broken spring (or MAX_DISP); returns its figures."""
 	from yade import O
-	import rdem
-	from rdem.scenes import CompressionTest
+	from yade import rdem
+	from yade.rdem.scenes import CompressionTest
 	test = CompressionTest(blocksPerEdge=point['blocks'], segmentsPerEdge=point['springs'], poisson=NU, young=E, formulation=point['formulation'],
 	                       corotational=point['corotational'], rate=RATE, dt=None)
 	rdem.timeStepper().safety = point['safety']

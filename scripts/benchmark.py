@@ -55,7 +55,8 @@ import os
 import resource
 import sys
 import time
-import rdem.batch
+from yade import rdem
+import yade.rdem.batch
 
 parser = argparse.ArgumentParser(prog='yade scripts/benchmark.py', description=__doc__.split('\n\n')[0])
 parser.add_argument('--cases', nargs='+', default=['paper', 'crack', 'cpm', 'effects', 'scaling', 'instructions'], help='cases to run (default: all)')
@@ -115,8 +116,8 @@ def timed(nBodies, steps, warmup, windows=20):
 def runRdem(spec):
 	"""One refined-DEM case in this process; returns its figures."""
 	from yade import O
-	import rdem.build
-	from rdem.scenes import CompressionTest
+	from yade import rdem
+	from yade.rdem.scenes import CompressionTest
 	options = dict(spec.get('options', {}))
 	recontact = options.pop('recontact', None)
 	trackEnergy = options.pop('trackEnergy', False)
@@ -179,8 +180,8 @@ def runCrack(spec):
 	"""The paper scene from the start to its first broken spring, stepped with O.step() (see timed()), a check every 1000
 	steps; prints its progress."""
 	from yade import O
-	import rdem.build
-	from rdem.scenes import CompressionTest
+	from yade import rdem
+	from yade.rdem.scenes import CompressionTest
 	test = CompressionTest()
 	law = rdem.build.law()
 	t0 = time.perf_counter()
@@ -201,8 +202,8 @@ def runPhases(spec):
 	the cracked one (broken springs at its start); the window of the first break to neither. With spec['save'], the
 	state spec['saveAfter'] steps after the first broken spring is saved there, and the run stops."""
 	from yade import O
-	import rdem.build
-	from rdem.scenes import CompressionTest
+	from yade import rdem
+	from yade.rdem.scenes import CompressionTest
 	test = CompressionTest()
 	law = rdem.build.law()
 	broken = lambda: int(law.tensionBreaks + law.shearBreaks)
@@ -245,11 +246,11 @@ def collapseScene(n, h=0.02):
 	Returns the number of moving blocks."""
 	from yade import O
 	from yade.wrapper import RdemMat
-	import rdem.build as build
+	from yade.rdem import build
 	O.reset()
 	mat = O.materials.append(RdemMat(young=30e9, poisson=0.2, density=2300, frictionAngle=math.atan(0.6), label='dry'))
 	tilt = math.radians(45)
-	O.engines = build.engines(poisson=None, gravity=(9.81 * math.sin(tilt), 0, -9.81 * math.cos(tilt)), verletDist=0.05 * h, contactSamples=1)
+	O.engines = build.engines(formulation=None, gravity=(9.81 * math.sin(tilt), 0, -9.81 * math.cos(tilt)), verletDist=0.05 * h, contactSamples=1)
 	O.bodies.append(build.block((1.5 * n * h, n * h / 2, -h / 2), (1.5 * n * h, n * h / 2 + h, h / 2), mat, fixed=True))
 	return len(build.blockGrid((n, n, n), (h, h, h), mat))
 
@@ -272,7 +273,7 @@ def runCount(spec):
 	"""The paper scene (or a cube of spec['blocks'] per edge, time step from RdemTimeStepper; or the state saved in
 	spec['load']), built and stepped spec['steps'] times under callgrind (see countInstructions)."""
 	from yade import O
-	from rdem.scenes import CompressionTest
+	from yade.rdem.scenes import CompressionTest
 	blocks = spec.get('blocks', 10)
 	if spec.get('load'):
 		O.load(spec['load'])

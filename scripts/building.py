@@ -73,8 +73,8 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, Vector3, VTKRecorder, plot
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
-from rdem import ground_motion as gm
+from yade import rdem
+from yade.rdem import ground_motion as gm
 
 G = gm.G
 q, C, t = 0.065, 0.065, 0.01  # quarter module (l + t)/4, course h + t and joint of the 250x120x55 mm brick [m]
@@ -132,7 +132,7 @@ def bigHouse():
 wall0 = time.time()
 brick = O.materials.append(RdemMat(young=16.7e9, poisson=0.15, density=1800, tensileStrength=3e6, label='brick'))
 joint = RdemJoint(young=2e9, poisson=0.25, tensileStrength=cli.bond_ft * 1e6, cohesion=cli.bond_c * 1e6, frictionAngle=math.atan(0.75))
-O.engines = rdem.engines(poisson='consistent', failureStress='total', contactSamples=1, gravity=(0, 0, -9.81), damping=0.5)
+O.engines = rdem.engines(formulation='consistent', failureStress='total', contactSamples=1, gravity=(0, 0, -9.81), damping=0.5)
 try:
 	b = rdem.masonry.building(brickMaterial=brick, jointMaterial=joint, **(bigHouse() if cli.big else smallHouse()))
 except ValueError as e:

@@ -60,9 +60,9 @@ import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, PyRunner, VTKRecorder, plot
-import rdem
-from rdem import gui
-from rdem.scenes import CompressionTest
+from yade import rdem
+from yade.rdem import gui
+from yade.rdem.scenes import CompressionTest
 
 os.makedirs(cli.out, exist_ok=True)
 

@@ -69,8 +69,8 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, Vector3, VTKRecorder, plot
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
-from rdem import ground_motion as gm
+from yade import rdem
+from yade.rdem import ground_motion as gm
 
 os.makedirs(os.path.join(cli.out, 'vtk'), exist_ok=True)
 G = gm.G
@@ -102,7 +102,7 @@ joint = RdemJoint(young=2e9, poisson=0.25, tensileStrength=cli.bond_ft * 1e6, co
 def makeWall():
 	"""The wall on its base beam, with Poisson cells and failure on the total stress; returns (the wall, its block ids, the
 	base beam's, the top course's)."""
-	O.engines = rdem.engines(poisson='consistent', failureStress='total', contactSamples=1, gravity=(0, 0, -9.81), damping=0.5)
+	O.engines = rdem.engines(formulation='consistent', failureStress='total', contactSamples=1, gravity=(0, 0, -9.81), damping=0.5)
 	w = rdem.masonry.wall(cli.length, cli.height, cli.thickness, bond=cli.bond, blocksPerBrick=cli.blocks, baseBeam=0.1, brickMaterial=brick,
 	                      jointMaterial=joint)
 	rdem.poissonEngine().elements = 'cells'
@@ -114,7 +114,7 @@ def makeBuilding():
 	"""Four walls bonded at the corners (rdem.masonry.building) with a door (front) and a window (back) on a base beam
 	under a roof slab; springs break on their own stresses (no Poisson cells: the rocking and overturning of walls do not
 	depend on them). Returns (the building, its block ids, the base beam's, the walls' top courses')."""
-	O.engines = rdem.engines(poisson=None, contactSamples=1, gravity=(0, 0, -9.81), damping=0.5)
+	O.engines = rdem.engines(formulation=None, contactSamples=1, gravity=(0, 0, -9.81), damping=0.5)
 	q, C, t = 0.065, 0.065, 0.01  # quarter module (l + t)/4, course h + t and joint of the default brick [m]
 	courses = int(round((cli.height + t) / C))
 	door = ('front', 0, 4 * q - t / 2, 0.0, 8 * q, (2 * courses // 3) * C - t / 2)

@@ -42,7 +42,7 @@ for name in ('bricks', 'courses', 'steps', 'rounds'):
 
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
+from yade import rdem
 
 L, W, H, T = 0.25, 0.12, 0.055, 0.01
 
@@ -54,7 +54,7 @@ def wall(bond, bricks, courses, blocks=(1, 1, 1), thickness=2 * W + T, elements=
 	t = time.time()
 	brick = O.materials.append(RdemMat(young=16.7e9, poisson=0.15, density=1800, tensileStrength=float('inf'), cohesion=float('inf'), label='brick'))
 	joint = RdemJoint(young=2e9, poisson=0.25, tensileStrength=float('inf'), cohesion=float('inf'))
-	O.engines = rdem.engines(poisson='consistent', recontact=False)
+	O.engines = rdem.engines(formulation='consistent', recontact=False)
 	w = rdem.masonry.wall(bricks * (L + T) - T, courses * (H + T) - T, thickness, bond=bond, blocksPerBrick=blocks, baseBeam=0.1, topBeam=0.1,
 	                      brickMaterial=brick, jointMaterial=joint)
 	times['wall'] = time.time() - t
@@ -81,7 +81,7 @@ def cube():
 	"""The paper's scene with the consistent formulation (rdem.scenes.CompressionTest, 10³ blocks and two plates, 891
 	hexahedra): a 2×2×2 grid with about one element per block, elastic."""
 	O.reset()
-	from rdem.scenes import CompressionTest
+	from yade.rdem.scenes import CompressionTest
 	test = CompressionTest(blocksPerEdge=10, formulation='consistent', tensileStrength=float('inf'))
 	O.step()
 	return _Ids(test.ids)

@@ -72,7 +72,7 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, Vector3, VTKRecorder
 from yade.wrapper import RdemMat
-import rdem
+from yade import rdem
 
 os.makedirs(os.path.join(cli.out, 'vtk'), exist_ok=True)
 
@@ -84,7 +84,7 @@ def build(ny, softening, seed):
 	nx = 2 * int(round(cli.length / b / 2))  # even: mid-span is a block boundary
 	mat = O.materials.append(RdemMat(young=cli.young * 1e9, poisson=0.2, density=2400, tensileStrength=cli.ft * 1e6, cohesion=2 * cli.ft * 1e6, fractureEnergy=cli.gf,
 	                                 shearFractureEnergy=10 * cli.gf))
-	O.engines = rdem.engines(poisson=None, recontact=True, damping=cli.damping, softening=softening, strengthCoV=cli.strength_cov,
+	O.engines = rdem.engines(formulation=None, recontact=True, damping=cli.damping, softening=softening, strengthCoV=cli.strength_cov,
 	                         strengthPerSegment=cli.per_segment, seed=seed)
 	x0 = -nx * b / 2
 	rdem.blockGrid((nx, 1, ny), (b, cli.thickness, b), material=mat, origin=(x0, -cli.thickness / 2, 0))

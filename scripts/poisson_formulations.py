@@ -19,8 +19,8 @@ import argparse
 import sys
 import time
 from yade import O
-import rdem
-from rdem.scenes import CompressionTest
+from yade import rdem
+from yade.rdem.scenes import CompressionTest
 
 parser = argparse.ArgumentParser(prog='yade scripts/poisson_formulations.py', description=__doc__.split('\n\n')[0])
 parser.add_argument('--blocks', type=int, default=6, help='blocks per edge of the cube (default 6)')

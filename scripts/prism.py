@@ -47,8 +47,8 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, Vector3, VTKRecorder
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
-from rdem.scenes import MasonryPrism
+from yade import rdem
+from yade.rdem.scenes import MasonryPrism
 
 os.makedirs(os.path.join(cli.out, 'vtk'), exist_ok=True)
 BRICK = dict(young=16.7e9, poisson=0.15, density=1800, tensileStrength=cli.brick_ft * 1e6, cohesion=2 * cli.brick_ft * 1e6, label='brick')

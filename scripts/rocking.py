@@ -37,7 +37,7 @@ parser.add_argument('--pulse', choices=['none', 'sine', 'ricker'], default='none
 parser.add_argument('--amplitude', type=float, default=2.0, help='peak ground acceleration in units of g tan(alpha) (default 2)')
 parser.add_argument('--period', type=float, default=0.5, help='period of the sine pulse, or 1/peak frequency of the Ricker wavelet [s] (default 0.5)')
 parser.add_argument('--mode', choices=['prescribed', 'inertial'], default='prescribed', help='base motion or inertial load (default prescribed)')
-parser.add_argument('--contact-samples', type=int, default=1, help='contact sample grid per face edge (default 1: the vertices)')
+parser.add_argument('--contact-samples', type=int, default=1, help="contact sample grid per face edge (default 1: the vertices, rdem.engines' default)")
 parser.add_argument('--damping-constant', type=float, default=1.0, help='contact dashpots, 1 = critical (default 1)')
 parser.add_argument('--duration', type=float, default=2.0, help='simulated time [s] (default 2)')
 parser.add_argument('--out', default='output/rocking', help='output folder (default output/rocking)')
@@ -52,9 +52,9 @@ import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, VTKRecorder, plot
-import rdem
-from rdem import ground_motion as gm
-from rdem.scenes import RockingBlock
+from yade import rdem
+from yade.rdem import ground_motion as gm
+from yade.rdem.scenes import RockingBlock
 
 os.makedirs(os.path.join(cli.out, 'vtk'), exist_ok=True)
 alpha = math.atan(cli.b / cli.h)
@@ -68,7 +68,7 @@ if cli.pulse != 'none':
 	motion = gm.GroundMotion(x=record)
 	rdem.earthquake.shaker(motion, ids=[rock.base], mode=cli.mode)
 O.trackEnergy = True
-shaker = [e for e in O.engines if type(e).__name__ == 'RdemGroundShaker']
+shaker = [O.labeledEngine('groundShaker')] if cli.pulse != 'none' else []  # rdem.earthquake.shaker labels it
 # yade.plot keeps the history (plot.data): live curves with plot.plot() in a YADE with a GUI, history.txt by saveDataTxt.
 plot.reset()
 plot.plots = {'t': ('theta', ), 't ': ('energy', 'kinetic')}

@@ -42,8 +42,8 @@ import math
 import os
 import sys
 import time
-import rdem  # before the options: rdem.masonry.addWallArguments
-from rdem import wall_database
+from yade import rdem  # before the options: rdem.masonry.addWallArguments
+from yade.rdem import wall_database
 
 # 1. Options (defaults: the rule set of rdem.wall_database for --wall, so that --help shows the validated values) -------
 pre = argparse.ArgumentParser(add_help=False)
@@ -115,6 +115,7 @@ k = parser.add_argument_group('model')
 k.add_argument('--formulation', choices=['consistent', 'paper', 'off'], default='consistent', help="Poisson effect: consistent (cells), paper, off (default consistent)")
 k.add_argument('--failure-stress', choices=['total', 'spring'], default='total', help='springs break on the total stress of their face (default) or their own')
 k.add_argument('--springs', type=int, default=2, help='springs per face edge (default 2)')
+k.add_argument('--contact-samples', type=int, default=None, help="contact sample grid per face edge (default: --springs, the grid the walls of doc/validation.md were run with; 1: the vertices, rdem.engines' default)")
 k.add_argument('--softening', choices=['off', 'on'], default='on', help='softening law of the springs (default on; off: brittle, the paper)')
 k.add_argument('--head-joints', choices=['unbonded', 'bonded'], default=jnt['headJoints'],
                help='head joints without bond (compression and friction only, MannMuller1982) or bonded like the bed joints (default %(default)s, the rule set)')
@@ -146,7 +147,7 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, VTKRecorder, plot
 from yade.wrapper import RdemMat, RdemJoint
-from rdem import walltest
+from yade.rdem import walltest
 
 measured = spec['measured']
 sigma0 = cli.sigma0 * 1e6
@@ -170,7 +171,8 @@ try:
 	                  compressiveFractureEnergy=cli.bond_Gfc)
 	total = cli.failure_stress == 'total' and cli.formulation == 'consistent'
 	O.engines = rdem.engines(segmentsPerEdge=cli.springs,
-	                         poisson=None if cli.formulation == 'off' else cli.formulation,
+	                         contactSamples=cli.contact_samples or cli.springs,
+	                         formulation=None if cli.formulation == 'off' else cli.formulation,
 	                         damping=cli.damping,
 	                         gravity=(0, 0, -cli.gravity),
 	                         safety=cli.safety,

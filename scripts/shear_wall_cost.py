@@ -39,7 +39,7 @@ cli = parser.parse_args(sys.argv[1:])
 if cli.steps < 1 or cli.rounds < 1:
 	sys.exit('--steps = %d, --rounds = %d: both must be >= 1' % (cli.steps, cli.rounds))
 
-import rdem  # noqa: F401 (the plugin's classes for O.load)
+from yade import rdem  # noqa: F401 (the plugin's classes for O.load)
 from yade import O
 
 perBlockStep = []

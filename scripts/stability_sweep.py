@@ -33,9 +33,9 @@ from yade.wrapper import PyRunner, RdemFiniteGuard
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(sys.argv[0])))
 sys.path.insert(0, os.path.join(ROOT, 'tests', 'yade'))
 import stability_cases as sc
-import rdem
-import rdem.measure
-from rdem.scenes import CompressionTest
+from yade import rdem
+from yade import rdem
+from yade.rdem.scenes import CompressionTest
 
 parser = argparse.ArgumentParser(prog='yade scripts/stability_sweep.py', description=__doc__.split('\n\n')[0])
 parser.add_argument('--steps', type=int, default=20000, help='steps per elastic run (default 20000)')

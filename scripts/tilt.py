@@ -60,7 +60,7 @@ import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 from yade import O, VTKRecorder, plot
-from rdem.earthquake import DryWall
+from yade.rdem.earthquake import DryWall
 
 os.makedirs(os.path.join(cli.out, 'vtk'), exist_ok=True)
 try:

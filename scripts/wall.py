@@ -34,7 +34,7 @@ import math
 import os
 import sys
 import time
-import rdem  # before the options: rdem.masonry.addWallArguments
+from yade import rdem  # before the options: rdem.masonry.addWallArguments
 
 
 # 1. Options ---------------------------------------------------------------------------------------------------------
@@ -85,7 +85,7 @@ try:
 	                  frictionAngle=math.atan(cli.bond_mu))
 	total = cli.failure_stress == 'total' and cli.formulation == 'consistent'
 	O.engines = rdem.engines(segmentsPerEdge=cli.springs,
-	                         poisson=None if cli.formulation == 'off' else cli.formulation,
+	                         formulation=None if cli.formulation == 'off' else cli.formulation,
 	                         damping=cli.damping,
 	                         failureStress='total' if total else 'spring')
 	w = rdem.masonry.wall(cli.length, cli.height, cli.thickness, brick=cli.brick, joint=cli.joint, bond=cli.bond, blocksPerBrick=cli.blocks,

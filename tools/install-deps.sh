@@ -8,6 +8,8 @@ readonly PACKAGES=(
 	libboost-all-dev libeigen3-dev libbz2-dev zlib1g-dev libvtk9-dev libgtest-dev
 	python3-dev python3-numpy python3-ipython python3-matplotlib python3-pygraphviz python3-xlib
 	python3-sphinx python3-tk python3-mpmath python3-future
+	# the user guide (tools/docs.sh): Markdown pages through MyST, formulas by MathJax from Debian's copy (offline)
+	python3-myst-parser libjs-mathjax
 	# YADE's Qt viewer (feature GUI: gui/CMakeLists.txt and cMake/Find*.cmake of YADE 2025.2.0) and its Python side
 	qtbase5-dev libqt5opengl5-dev libqglviewer-dev-qt5 freeglut3-dev libglu1-mesa-dev libglib2.0-dev
 	pyqt5-dev-tools python3-pyqt5 python3-pyqt5.qtwebkit python3-pyqt5.qtsvg # yade.qt imports QtWebKit (or QtWebEngine); IPython's Qt check needs QtSvg

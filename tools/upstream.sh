@@ -2,7 +2,9 @@
 # The plugin merged into YADE 2025.2.0's own source tree, built there as YADE builds itself, as a maintainer would
 # before accepting it:
 #   1. writes YADE's source tree (from the tarball tools/build-yade.sh fetched) with pkg/rdem, py/rdem (installed as the
-#      module yade.rdem), the plugin's checks (scripts/checks-and-tests/checks) and the bib entries merged in;
+#      module yade.rdem), the plugin's checks (scripts/checks-and-tests/checks), the theory page
+#      (doc/sphinx/rdemTheory.rst, listed in YADE's theory toctree; the docstrings' :ref:`rdem-theory-…` point at it) and
+#      the bib entries merged in;
 #   2. builds and installs it with YADE's CMake, the features of tools/build-yade.sh and -DENABLE_USEFUL_ERRORS=ON
 #      (YADE's full warning set, as errors);
 #   3. runs `yade --test` and `yade --check` of that installation (the plugin's check among YADE's);
@@ -56,6 +58,11 @@ cp -r "$here/pkg/rdem" "$src/pkg/rdem"
 mkdir -p "$src/py/rdem"
 cp "$here"/py/rdem/*.py "$src/py/rdem/"
 cp "$here"/scripts/checks-and-tests/checks/*.py "$src/scripts/checks-and-tests/checks/"
+# the theory page, at the same path as here, in YADE's "Theoretical background" toctree after formulation.rst
+cp "$here/doc/sphinx/rdemTheory.rst" "$src/doc/sphinx/rdemTheory.rst"
+grep -q 'rdemTheory.rst' "$src/doc/sphinx/index-toctree-theory.rst" ||
+	sed -i 's/^\( *\)formulation\.rst$/&\n\1rdemTheory.rst/' "$src/doc/sphinx/index-toctree-theory.rst"
+grep -q 'rdemTheory.rst' "$src/doc/sphinx/index-toctree-theory.rst" || { log "could not add rdemTheory.rst to YADE's doc/sphinx/index-toctree-theory.rst"; exit 1; }
 # bib entries YADE's doc/references.bib does not have yet (by key; so a --refresh adds only new ones)
 python3 - "$here/doc/references.bib" "$src/doc/references.bib" <<'EOF'
 import re, sys

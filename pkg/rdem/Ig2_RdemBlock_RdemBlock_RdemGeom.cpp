@@ -6,7 +6,6 @@
 *************************************************************************/
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
 #include <pkg/rdem/NumberText.hpp>
-#include <pkg/rdem/RdemContactGate.hpp>
 #include <pkg/rdem/RdemPrefetch.hpp>
 #include <pkg/rdem/math/BlockGeometry.hpp>
 #include <pkg/rdem/math/FacePatch.hpp>
@@ -224,6 +223,7 @@ void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom
 
 bool Ig2_RdemBlock_RdemBlock_RdemGeom::stillApart(const Interaction& I) const
 {
+	const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr; // recorded by RdemContactGate
 	if (!I.geom || !travel || !travel->currentFor(*scene) || I.geom->getClassIndex() != RdemGap::getClassIndexStatic()) return false;
 	const auto& gap = static_cast<const RdemGap&>(*I.geom);
 	return gap.epoch == travel->epoch && travel->travel[size_t(I.getId1())] + travel->travel[size_t(I.getId2())] < gap.reach;
@@ -260,7 +260,8 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 	const Real                  tol = touchTolerance(A, B);
 	if (!rdem::blocksOverlap<Real>(pair, tol)) {
 		// Apart: a certificate of how long they stay so (rdem::separationSlack), if the blocks' travel is recorded.
-		const Real slack = skipApart && travel && travel->currentFor(*scene) ? rdem::separationSlack<Real>(pair, tol) : Real(-1);
+		const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr;
+		const Real              slack  = skipApart && travel && travel->currentFor(*scene) ? rdem::separationSlack<Real>(pair, tol) : Real(-1);
 		if (slack > 0) {
 			if (!I->geom || I->geom->getClassIndex() != RdemGap::getClassIndexStatic()) I->geom = shared_ptr<RdemGap>(new RdemGap);
 			auto& gap = static_cast<RdemGap&>(*I->geom);
@@ -282,6 +283,13 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 	RdemGeom probe;
 	probe.samplesPerEdge = contactSamples();
 	sampleContacts(pair, s1, s2, tol, contactSamples(), probe);
+	if (probe.sampleKey.empty() && contactSamples() == 1 && segmentsPerEdge > 1) {
+		/* Vertices only, and none of either block inside the other although they overlap: faces that cross (a beam across
+		   a wall, no corner of one on the other). The contact then samples the face grid of segmentsPerEdge for its life;
+		   its samples count from the depth at which they enter (δ₀), so the switch adds no energy. */
+		probe.samplesPerEdge = segmentsPerEdge;
+		sampleContacts(pair, s1, s2, tol, segmentsPerEdge, probe);
+	}
 	if (probe.sampleKey.empty()) return false;
 	auto g  = shared_ptr<RdemGeom>(new RdemGeom(probe));
 	g->ell1 = faceDistance(A, probe.sampleNormal[0]);

@@ -6,11 +6,12 @@
 *************************************************************************/
 #include <core/Scene.hpp>
 #include <pkg/rdem/FindEngine.hpp>
+#include <pkg/rdem/InteractionOrder.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
-#include <pkg/rdem/RdemForceAssembler.hpp>
 #include <pkg/rdem/RdemState.hpp>
 #include <pkg/rdem/math/BlockCells.hpp>
+#include <pkg/rdem/math/ContactBound.hpp>
 #include <pkg/rdem/math/FaceSprings.hpp>
 #include <pkg/rdem/math/Softening.hpp>
 #include <pkg/rdem/math/SortedKeys.hpp>
@@ -26,7 +27,7 @@ CREATE_LOGGER(Law2_RdemGeom_RdemPhys_FaceSprings);
 
 /* How to read this file: Law2_RdemGeom_RdemPhys_FaceSprings::go (at the end) sends a bond to bondForces and a contact of
    blocks that are not bonded to sampledContactForces. A bond's segments run one of three laws each step: restoringSpring
-   (an intact segment, eqs. 14-16), softeningSpring (an intact segment of a softening bond, doc/theory.md §2.1) or
+   (an intact segment, eqs. 14-16), softeningSpring (an intact segment of a softening bond, doc/sphinx/rdemTheory.rst §2.1) or
    brokenSegment (its contact spring, eqs. 13, 17). A face-to-face contact goes to patchContactForces. The physics of a point is in pkg/rdem/math/FaceSprings.hpp
    (rdem::restoringStress, rdem::contactSpringForce) and pkg/rdem/math/Softening.hpp (rdem::softeningStep), unit-tested
    there; this file turns
@@ -71,7 +72,7 @@ namespace {
 		}
 	};
 
-	/* Offset correction of a bond's intact shear springs (rdem::offsetSlip, doc/theory.md §5.4): the slip ½(E₁ + E₂)δ
+	/* Offset correction of a bond's intact shear springs (rdem::offsetSlip, doc/sphinx/rdemTheory.rst §5.4): the slip ½(E₁ + E₂)δ
 	   that the blocks' cell strains (RdemState::strain, scaled by RdemState::cellScale, from RdemCellStrainUpdater) give
 	   two blocks whose centroids are offset by δ along the face, in global coordinates and in the tangent plane of n [m]. */
 	Vector3r
@@ -87,7 +88,7 @@ namespace {
 	/* Normal stress the Poisson cells of the two blocks exert on their bonded face, positive in tension [Pa]: the cell
 	   force on the bond, -(c₁S₁ + c₂S₂) on body 2 along n (RdemPoissonEngine), as a traction over the face's weighted
 	   area w_n A, from the cells' elastic stresses of this step (RdemState::cellStress, along each block's axis of the
-	   bond). Added to the springs' σ = k_n u_n it is the total σ_nn of the face (doc/theory.md §5.6). Zero without cells. */
+	   bond). Added to the springs' σ = k_n u_n it is the total σ_nn of the face (doc/sphinx/rdemTheory.rst §5.6). Zero without cells. */
 	Real cellNormalStress(const State& s1, const State& s2, const RdemGeom& g, const RdemPhys& p)
 	{
 		if (p.cellCoef1 == 0 && p.cellCoef2 == 0) return 0;
@@ -196,7 +197,7 @@ namespace {
 		return false;
 	}
 
-	/* The softening spring of intact segment i at (s, r) (rdem::softeningStep, doc/theory.md §2.1), with opening un and
+	/* The softening spring of intact segment i at (s, r) (rdem::softeningStep, doc/sphinx/rdemTheory.rst §2.1), with opening un and
 	   shear elongation ust [m]; its plastic slip is kept in body 1's frame, so that it turns with the pair. Adds its force
 	   -(w_n σ n + w_s τ)A and the dissipation of the step (weighted by w_n for tension and crushing, w_s for shear and
 	   friction, as the forces); returns false if it broke in this step (ξ reached 1): the contact spring takes over its
@@ -280,7 +281,7 @@ namespace {
 	   cells (it inlines alike). */
 	template <bool withCells> void segmentForces(BondStep& b, RdemPhys& p, Energies& e, Breaks& breaks)
 	{
-		const bool perSegment = !p.segStrengthFactor.empty(); // heterogeneous strengths per segment (doc/theory.md §2.2)
+		const bool perSegment = !p.segStrengthFactor.empty(); // heterogeneous strengths per segment (doc/sphinx/rdemTheory.rst §2.2)
 		const auto k          = b.k;
 		forSegments(b.g.samplesPerEdge, [&](size_t i, Real s, Real r) {
 			if (perSegment) b.k = rdem::scaledStrengths(k, p.segStrengthFactor[i]);
@@ -299,7 +300,7 @@ namespace {
 	template <bool withCells> void softeningSegmentForces(BondStep& b, RdemPhys& p, Energies& e, Breaks& breaks)
 	{
 		const auto k          = Ip2_RdemMat_RdemMat_RdemPhys::softeningConstants(p);
-		const bool perSegment = !p.segStrengthFactor.empty(); // heterogeneous strengths per segment (doc/theory.md §2.2)
+		const bool perSegment = !p.segStrengthFactor.empty(); // heterogeneous strengths per segment (doc/sphinx/rdemTheory.rst §2.2)
 		forSegments(b.g.samplesPerEdge, [&](size_t i, Real s, Real r) {
 			const Vector3r d  = b.kin.displacement(s, r);
 			const Real     un = d.dot(b.n);
@@ -361,7 +362,7 @@ namespace {
 		std::vector<Real>     offset;
 	};
 
-	/* Blocks that are not bonded, in contact at the sample points of RdemGeom (doc/theory.md §4): each point's contact
+	/* Blocks that are not bonded, in contact at the sample points of RdemGeom (doc/sphinx/rdemTheory.rst §4): each point's contact
 	   spring (rdem::contactSpringForce), its history kept by sample key for the samples in contact in the last step
 	   (RdemPhys::contactKey, matched by rdem::matchSortedKeys). A point that starts its contact already δ₀ deep
 	   entered through a gap of the sampling (a region of overlap that held no sample point, or a change of the pair's
@@ -492,17 +493,7 @@ Vector2r Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(
 
 void Law2_RdemGeom_RdemPhys_FaceSprings::postLoad(Law2_RdemGeom_RdemPhys_FaceSprings&)
 {
-	tensionBreaks.reset();
-	shearBreaks.reset();
-	tensionBreaks += int(savedTensionBreaks);
-	shearBreaks += int(savedShearBreaks);
-}
-
-long Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(const Scene* scene)
-{
-	long n = 0;
-	forEachLaw(scene, [&](const Law2_RdemGeom_RdemPhys_FaceSprings& law) { n += law.tensionBreaks.get() + law.shearBreaks.get(); });
-	return n;
+	if (!shared) shared = shared_ptr<RdemSharedState>(new RdemSharedState);
 }
 
 bool Law2_RdemGeom_RdemPhys_FaceSprings::totalStressOf(const Scene* scene)
@@ -512,49 +503,6 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::totalStressOf(const Scene* scene)
 	return total;
 }
 
-bool Law2_RdemGeom_RdemPhys_FaceSprings::assemblerFollows(const Scene* scene)
-{
-	const long loop = rdem::engineIndex<InteractionLoop>(scene);
-	for (size_t i = size_t(std::max(loop, 0L)); i < scene->engines.size(); ++i)
-		if (dynamic_cast<const RdemForceAssembler*>(scene->engines[i].get())) return true;
-	return false;
-}
-
-void Law2_RdemGeom_RdemPhys_FaceSprings::checkForceAssembly(const Scene* scene)
-{
-	bool defers = false;
-	forEachLaw(scene, [&](const Law2_RdemGeom_RdemPhys_FaceSprings& law) { defers = defers || law.deferForces; });
-	if (defers && !assemblerFollows(scene))
-		throw std::runtime_error(
-		        "Law2_RdemGeom_RdemPhys_FaceSprings.deferForces is True but no RdemForceAssembler follows the InteractionLoop in O.engines, "
-		        "so nothing would apply the deferred forces: put RdemForceAssembler() right after the InteractionLoop (rdem.engines() does), "
-		        "or set deferForces=False");
-}
-
-bool Law2_RdemGeom_RdemPhys_FaceSprings::deferredApplied()
-{
-	if (!deferForces) return false;
-	const long iter    = scene->iter;
-	const long checked = assemblyChecked.load(std::memory_order_relaxed);
-	if (checked >= 0 && checked / 2 == iter) return checked % 2 == 1;
-	// First interaction of the step (possibly on several threads at once: the scan only reads the engine list).
-	const bool follows = assemblerFollows(scene);
-	if (!follows && !assemblyWarned.exchange(true))
-		LOG_ERROR("deferForces is True but no RdemForceAssembler follows the InteractionLoop: forces are added directly instead");
-	assemblyChecked.store(2 * iter + (follows ? 1 : 0), std::memory_order_relaxed);
-	return follows;
-}
-
-bool Law2_RdemGeom_RdemPhys_FaceSprings::takeActiveSetChanged(const Scene* scene)
-{
-	bool changed = false;
-	forEachLaw(scene, [&](Law2_RdemGeom_RdemPhys_FaceSprings& law) {
-		if (law.activeSetChanges.get() == 0) return;
-		changed = true;
-		law.activeSetChanges.reset();
-	});
-	return changed;
-}
 
 bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
@@ -571,10 +519,10 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	const bool   keep = g.nSegments() > 0 ? bondForces(g, p, pair, totalStress, e, breaks, on2)
 	          : g.nPatch() > 0            ? patchContactForces(g, p, pair, e, on2)
 	                                      : sampledContactForces(g, p, pair, e, on2);
-	if (breaks.tension) tensionBreaks += breaks.tension;
-	if (breaks.shear) shearBreaks += breaks.shear;
+	if (breaks.tension) shared->tensionBreaks += breaks.tension;
+	if (breaks.shear) shared->shearBreaks += breaks.shear;
 	if (!keep) {
-		if (deferForces) activeSetChanges += 1;
+		if (deferForces) shared->activeSetChanges += 1;
 		if (g.bonded) recordRelease(*I, g, p);
 		return false;
 	}
@@ -588,8 +536,9 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::applyForces(const Interaction& I, RdemP
 	p.force = f2;
 	// Body 1 receives -F at every point C: Σ (C - x₁) × (-F) = -(t₂ + (x₂ - x₁) × f₂).
 	const Vector3r t1 = -(t2 + dx.cross(f2));
-	if (deferredApplied()) {
-		if (p.forceIter != scene->iter - 1) activeSetChanges += 1; // new, or back after a pause: not in the assembler's lists
+	// deferForces, and the engine list was checked to have an RdemForceAssembler after the loop (RdemSharedState)
+	if (deferForces && shared->deferredForces) {
+		if (p.forceIter != scene->iter - 1) shared->activeSetChanges += 1; // new, or back after a pause: not in the assembler's lists
 		p.torque1   = t1;
 		p.torque2   = t2;
 		p.forceIter = scene->iter;
@@ -626,6 +575,101 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::bookEnergies(const rdem::SpringEnergies
 	scene->energy->add(e.fractureTension, "rdemFractureTension", fractureTensionIx, false);
 	scene->energy->add(e.fractureShear, "rdemFractureShear", fractureShearIx, false);
 	scene->energy->add(e.crushing, "rdemCrushing", crushingIx, false);
+}
+
+namespace {
+	/* Every point spring of interaction I as the law applies it in this configuration, f(b1, b2, point, r1, r2, n, k_n,
+	   k_s, c_n, c_s) with the point in global coordinates and its arms from the two centroids [m], the springs [N/m] and
+	   dashpots [N·s/m] (zero where none acts):
+	   each bond segment at its material point of body 1 (paper eq. 14: the restoring spring, or the contact spring of a
+	   broken segment, of the same k̄A), with the dashpot of a broken segment that touched in the last step (it left a
+	   stress; one that touches again before the next update is covered by the time step's safety factor, as contacts
+	   that start); each contact sample with its dashpot (eq. 13); each spring of a face-to-face patch at its material point
+	   of body 1, along the pair's normal, with its dashpot (eq. 13, its share of the patch area). Dashpots are capped as contactConstants caps them,
+	   for the step capDt (no cap for capDt = 0); a broken segment's share of the contact area is bounded by 1. */
+	template <class F> void forPointSprings(Scene* sc, const Interaction& I, Real capDt, F f)
+	{
+		const auto&  g  = *static_cast<const RdemGeom*>(I.geom.get());
+		const auto&  p  = *static_cast<const RdemPhys*>(I.phys.get());
+		const State& s1 = *Body::byId(I.getId1(), sc)->state;
+		const State& s2 = *Body::byId(I.getId2(), sc)->state;
+		const long   b1 = I.getId1(), b2 = I.getId2();
+		const auto   dashpots = [&](const Vector3r& point, const Vector3r& n, Real a, Real share) {
+                        const Vector2r c(p.weightNormal * p.cn * a, p.weightShear * p.cs * a);
+                        return capDt > 0 ? Vector2r(c.cwiseMin(Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(s1, s1.pos, s2, s2.pos, point, n, share, capDt)))
+			                   : c;
+		};
+		const Vector3r normal = g.normal.squaredNorm() > 0 ? g.normal : Vector3r(s1.ori * g.segNormal1);
+		const Real     A      = g.segmentArea();
+		const auto     points = g.segmentPoints1();
+		for (size_t i = 0; i < points.size(); ++i) {
+			const Vector3r arm1 = s1.ori * points[i], point = s1.pos + arm1;
+			const bool     damped = i < p.segState.size() && p.segState[i] != int(rdem::SegmentState::Intact) && i < p.segSigma.size()
+			        && (p.segSigma[i] < 0 || p.segTau[i] > 0);
+			const Vector2r c = damped ? dashpots(point, normal, A, 1) : Vector2r::Zero();
+			f(b1, b2, point, arm1, Vector3r(point - s2.pos), normal, p.weightNormal * p.kn * A, p.weightShear * p.ks * A, c[0], c[1]);
+		}
+		Real contactArea = 0;
+		for (Real a : g.sampleArea)
+			contactArea += a;
+		for (size_t k = 0; k < g.sampleKey.size(); ++k) {
+			const Real     a = g.sampleArea[k];
+			const Vector2r c = dashpots(g.samplePoint[k], g.sampleNormal[k], a, a / contactArea);
+			f(b1,
+			  b2,
+			  g.samplePoint[k],
+			  Vector3r(g.samplePoint[k] - s1.pos),
+			  Vector3r(g.samplePoint[k] - s2.pos),
+			  g.sampleNormal[k],
+			  p.weightNormal * p.kn * a,
+			  p.weightShear * p.ks * a,
+			  c[0],
+			  c[1]);
+		}
+		const auto springs = g.patchSprings(); // a face-to-face contact's springs, at body 1's material points
+		for (size_t k = 0; k < springs.size; ++k) {
+			const Vector3r arm1 = s1.ori * Vector3r(springs.point1(k)), point = s1.pos + arm1;
+			const Real     a = springs.area(k);
+			const Vector2r c = dashpots(point, normal, a, a / g.patchArea);
+			f(b1, b2, point, arm1, Vector3r(point - s2.pos), normal, p.weightNormal * p.kn * a, p.weightShear * p.ks * a, c[0], c[1]);
+		}
+	}
+} // namespace
+
+void Law2_RdemGeom_RdemPhys_FaceSprings::addStiffness(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt)
+{
+	for (const Interaction* I : rdem::interactionsInIdOrder(sc)) {
+		const auto& g = *static_cast<const RdemGeom*>(I->geom.get());
+		if (g.nSegments() == 0 && g.sampleKey.empty() && g.nPatch() == 0) continue;
+		K.beginPair(I->getId1(), I->getId2());
+		C.beginPair(I->getId1(), I->getId2());
+		forPointSprings(
+		        sc,
+		        *I,
+		        capDt,
+		        [&](long b1, long b2, const Vector3r&, const Vector3r& r1, const Vector3r& r2, const Vector3r& n, Real kn, Real ks, Real cn, Real cs) {
+			        K.addPointSpring(b1, b2, r1, r2, n, kn, ks);
+			        C.addPointSpring(b1, b2, r1, r2, n, cn, cs); // nothing where no dashpot acts (zero)
+		        });
+	}
+}
+
+void Law2_RdemGeom_RdemPhys_FaceSprings::addOmega2Bound(Scene* sc, vector<Real>& omega2)
+{
+	for (const Interaction* I : rdem::interactionsInIdOrder(sc)) {
+		const State& s1 = *Body::byId(I->getId1(), sc)->state;
+		const State& s2 = *Body::byId(I->getId2(), sc)->state;
+		forPointSprings(
+		        sc,
+		        *I,
+		        0,
+		        [&](long b1, long b2, const Vector3r& point, const Vector3r&, const Vector3r&, const Vector3r& n, Real kn, Real ks, Real, Real) {
+			        for (const auto& side : { std::make_pair(b1, &s1), std::make_pair(b2, &s2) })
+				        if (side.second->blockedDOFs != State::DOF_ALL)
+					        omega2[size_t(side.first)] += rdem::pointSpringOmega2<Real>(
+					                point - side.second->pos, n, 1, kn, ks, side.second->mass, side.second->inertia.minCoeff());
+		        });
+	}
 }
 
 } // namespace yade

@@ -4,7 +4,6 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
-#include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/OpenMPLoops.hpp>
 #include <pkg/rdem/RdemCellNetwork.hpp>
 #include <pkg/rdem/RdemForceAssembler.hpp>
@@ -104,12 +103,11 @@ void RdemCellNetwork::rebuild(Scene* scene)
 	brokenSeen        = -1;
 }
 
-void RdemCellNetwork::updateIntact(Scene* scene)
+void RdemCellNetwork::updateIntact(long brokenSprings)
 {
 	// Intact fractions change only when a spring breaks or a bond is released: recompute them only then.
-	const long broken = Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(scene);
-	if (broken == brokenSeen) return;
-	brokenSeen = broken;
+	if (brokenSprings == brokenSeen) return;
+	brokenSeen = brokenSprings;
 	for (size_t k = 0; k < bond.size(); ++k) {
 		const Interaction& I = *intr[k];
 		if (!I.isReal() || !static_cast<const RdemGeom*>(I.geom.get())->bonded) { // released (then maybe a contact): off for good
@@ -121,10 +119,10 @@ void RdemCellNetwork::updateIntact(Scene* scene)
 	}
 }
 
-void RdemCellNetwork::updateStrains(Scene* scene, int threads)
+void RdemCellNetwork::updateStrains(Scene* scene, long brokenSprings, int threads)
 {
 	if (!refresh(scene)) return;
-	updateIntact(scene);
+	updateIntact(brokenSprings);
 	const long nBlocks = long(body.size()), nBonds = long(bond.size());
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(static) num_threads(rdem::threadsFor(threads))
@@ -265,10 +263,10 @@ vector<Real> RdemCellNetwork::omega2Bound(Scene* scene)
 	return w2;
 }
 
-void RdemCellNetwork::addStiffness(Scene* scene, bool releaseOnCrack, rdem::BlockStiffness<Real>& K)
+void RdemCellNetwork::addStiffness(Scene* scene, bool releaseOnCrack, long brokenSprings, rdem::BlockStiffness<Real>& K)
 {
 	if (!refresh(scene)) return;
-	updateIntact(scene);
+	updateIntact(brokenSprings);
 	// the openings u_n = n·(P₂ - P₁) at the face centres, as updateStrains, linearised: gradients n and r×n
 	vector<size_t> openingOf(bond.size());
 	for (size_t k = 0; k < bond.size(); ++k) {

@@ -13,7 +13,7 @@
 
 namespace yade {
 
-/* The Poisson cells at run time (doc/theory.md §5.4): their bonds and blocks in compact arrays, built from the scene's
+/* The Poisson cells at run time (doc/sphinx/rdemTheory.rst §5.4): their bonds and blocks in compact arrays, built from the scene's
    interactions and states when they change (a new RdemPoissonEngine.build, bodies or interactions added or removed),
    then two passes per step that follow no pointer to an interaction: updateStrains before the interaction loop (the
    blocks' poses, the bonds' openings and normals, the cells' strains and elastic stresses, written to each block's
@@ -24,8 +24,9 @@ public:
 	/// Rebuilds the arrays if the scene changed since the last call; false if there is no cell.
 	bool refresh(Scene* scene);
 	/// Before the law: poses, openings u_n = n·(P₂ - P₁) at the face centres, crack scales, RdemState::strain,
-	/// ::cellScale and ::cellStress of every cell. On `threads` OpenMP threads (the calling engine's ompThreads, ≤ 0: all).
-	void updateStrains(Scene* scene, int threads);
+	/// ::cellScale and ::cellStress of every cell; brokenSprings: the scene's count (RdemSharedState), the crack scales
+	/// are recomputed when it changes. On `threads` OpenMP threads (the calling engine's ompThreads, ≤ 0: all).
+	void updateStrains(Scene* scene, long brokenSprings, int threads);
 	/// After the law: ∂W/∂ε of every cell (its elastic stress plus the reaction of its bonds' offset correction), then the
 	/// normal force -Σ c ∂W/∂ε of every bond at its face centre, added to the blocks in a fixed order. Adds the cells'
 	/// energy ½ s εᵀKε and the energy released by a drop of s [J]. Threads as for updateStrains.
@@ -34,7 +35,7 @@ public:
 	vector<Real> omega2Bound(Scene* scene);
 	/// Adds the cells' linear stiffness ½ s εᵀ CᵀKC ε on the bond openings at the current poses to K (RdemTimeStepper);
 	/// the offset correction of running bond is left out (it acts through the shear springs, of lower stiffness).
-	void addStiffness(Scene* scene, bool releaseOnCrack, rdem::BlockStiffness<Real>& K);
+	void addStiffness(Scene* scene, bool releaseOnCrack, long brokenSprings, rdem::BlockStiffness<Real>& K);
 	/// Number of blocks with a cell.
 	size_t nCells() const { return nCellBlocks; }
 	/// Incremented by RdemPoissonEngine::build: arrays made before it are rebuilt.
@@ -70,7 +71,7 @@ private:
 	size_t                          nCellBlocks = 0;
 	long builtGeneration = -1, builtInteractions = -1, builtBodies = -1, brokenSeen = -1;
 	void rebuild(Scene* scene);
-	void updateIntact(Scene* scene);
+	void updateIntact(long brokenSprings);
 };
 
 } // namespace yade

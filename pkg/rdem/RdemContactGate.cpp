@@ -8,11 +8,10 @@
 #include <core/Scene.hpp>
 #include <pkg/common/Collider.hpp>
 #include <pkg/rdem/FindEngine.hpp>
-#include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
-#include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/OpenMPLoops.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemContactGate.hpp>
+#include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/math/SeparationBound.hpp>
 #include <atomic>
 #include <numeric>
@@ -42,13 +41,10 @@ namespace {
 	}
 }
 
-bool rdem::BodyTravel::currentFor(const Scene& scene) const { return iter == scene.iter && !scene.isPeriodic && epoch >= 0; }
-
-void RdemContactGate::updateTravel()
+void RdemContactGate::updateTravel(rdem::BodyTravel& t)
 {
-	rdem::BodyTravel& t          = *travel;
-	const long        nBodiesNow = long(scene->bodies->size());
-	bool              restart    = t.iter != scene->iter - 1 || long(t.travel.size()) != nBodiesNow;
+	const long nBodiesNow = long(scene->bodies->size());
+	bool       restart    = t.iter != scene->iter - 1 || long(t.travel.size()) != nBodiesNow;
 	if (restart) {
 		t.travel.assign(size_t(nBodiesNow), 0);
 		t.body.assign(size_t(nBodiesNow), nullptr);
@@ -88,7 +84,6 @@ void RdemContactGate::updateTravel()
 		t.epoch = ++lastEpoch;
 	}
 	t.iter = scene->iter;
-	rdem::forEachLoopFunctor<Ig2_RdemBlock_RdemBlock_RdemGeom>(scene, [&](Ig2_RdemBlock_RdemBlock_RdemGeom& ig2) { ig2.travel = travel; });
 }
 
 string RdemContactGate::topologyReason() const
@@ -129,17 +124,17 @@ void RdemContactGate::setColliders(bool deadFlag) const
 
 void RdemContactGate::action()
 {
-	Law2_RdemGeom_RdemPhys_FaceSprings::checkForceAssembly(scene); // before the loop: refused before forces are made
+	RdemSharedState& sh = RdemSharedState::of(scene, shared); // checks the engines when they changed: before the loop makes forces
 	if (open) {
 		// Latched (possibly set by the user or restored by O.load): make sure the collider runs.
 		if (reason.empty()) {
 			reason = "opened by the user";
 			setColliders(false);
 		}
-		updateTravel();
+		updateTravel(sh.travel);
 		return;
 	}
-	if (Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(scene) > 0) reason = "a restoring spring broke";
+	if (sh.brokenSprings() > 0) reason = "a restoring spring broke";
 	else if (long(scene->bodies->size()) != nBodies || long(scene->interactions->size()) != nInteractions) {
 		reason        = topologyReason();
 		nBodies       = long(scene->bodies->size());
@@ -149,7 +144,7 @@ void RdemContactGate::action()
 	setColliders(!open);
 	if (open) {
 		LOG_INFO("contact detection on from iteration " << scene->iter << ": " << reason);
-		updateTravel();
+		updateTravel(sh.travel);
 	}
 }
 

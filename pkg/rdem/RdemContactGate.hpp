@@ -6,37 +6,16 @@
 *************************************************************************/
 #pragma once
 
-#include <core/Body.hpp>
 #include <core/GlobalEngine.hpp>
+#include <pkg/rdem/RdemSharedState.hpp>
 
 namespace yade {
-
-namespace rdem {
-	/* How far each body has moved since a reference step [m]: by body id, the sum over steps of rdem::rigidTravel,
-	   which bounds the displacement of every point of the body. Kept by RdemContactGate while contact detection runs,
-	   read by Ig2_RdemBlock_RdemBlock_RdemGeom to know when a pair found apart must be tested again
-	   (math/SeparationBound.hpp). */
-	struct BodyTravel {
-		long                 iter  = -1; ///< the step whose configurations travel is up to date with (-1: none yet)
-		long                 epoch = -1; ///< changes whenever the record restarts: a certificate of another epoch is void
-		vector<Real>         travel;     ///< by body id [m]
-		vector<const Body*>  body;       ///< by body id: the configuration last seen (body, its shape, position, orientation)
-		vector<const Shape*> shape;
-		vector<Vector3r>     pos;
-		vector<Quaternionr>  ori;
-		vector<Real>         radius; ///< circumradius of the block about its centroid, 0 for other shapes [m]
-		/// Whether the record holds the configurations of step iter of a scene that is not periodic.
-		bool currentFor(const Scene& scene) const;
-	};
-}
 
 /// Keeps the collider dead while no new contact is possible: one intact bonded assembly and nothing else; once open,
 /// records how far each block has moved (rdem::BodyTravel) for the geometry functor's pairs found apart.
 class RdemContactGate : public GlobalEngine {
 public:
 	void action() override;
-	/// The travel record, shared with the scene's Ig2_RdemBlock_RdemBlock_RdemGeom.
-	const shared_ptr<rdem::BodyTravel> travel { new rdem::BodyTravel };
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(RdemContactGate,GlobalEngine,R"""(Contact detection on demand: switches the :yref:`Collider` of ``O.engines`` on only once new contacts can occur.
 
@@ -46,9 +25,10 @@ While every body is an :yref:`RdemBlock`, all blocks form **one** assembly conne
 
 Place it just before the collider (``rdem.engines()`` does); ``open=True`` forces the collider on.
 
-*Pairs found apart.* While open, the gate records at every step how far each block has moved since (a bound on the displacement of any of its points, ``rdem::rigidTravel``) and hands the record to :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom`, which then tests a pair of neighbours it found apart again only once the two blocks may have moved enough to touch (:yref:`Ig2_RdemBlock_RdemBlock_RdemGeom::skipApart`, doc/performance.md). A cost of a few tens of instructions per block and step.)""",
+*Pairs found apart.* While open, the gate records at every step how far each block has moved since (a bound on the displacement of any of its points, ``rdem::rigidTravel``) in :yref:`RdemSharedState`, where :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom` reads it, which then tests a pair of neighbours it found apart again only once the two blocks may have moved enough to touch (:yref:`Ig2_RdemBlock_RdemBlock_RdemGeom::skipApart`. A cost of a few tens of instructions per block and step.)""",
 		((bool,open,false,,"Whether contact detection is on (latches once true)."))
 		((string,reason,"",Attr::readonly,"Why the gate opened (empty while closed)."))
+		((shared_ptr<RdemSharedState>,shared,,,"What the plugin's engines share (:yref:`RdemSharedState`: the broken springs, the travel record; handed by ``rdem.engines()``; None: the law's, taken at the first step)."))
 		((long,nBodies,-1,(Attr::readonly|Attr::noSave),"Number of bodies at the last topology check (-1: none yet)."))
 		((long,nInteractions,-1,(Attr::readonly|Attr::noSave),"Number of interactions at the last topology check."))
 	);
@@ -60,9 +40,9 @@ private:
 	string topologyReason() const;
 	/// Set the dead flag of every collider of the scene.
 	void setColliders(bool dead) const;
-	/// Add this step's motion of every body to the travel record (restarted with a new epoch when steps were missed or
-	/// bodies changed) and hand the record to the geometry functors.
-	void updateTravel();
+	/// Add this step's motion of every body to the travel record t (restarted with a new epoch when steps were missed or
+	/// bodies changed).
+	void updateTravel(rdem::BodyTravel& t);
 };
 REGISTER_SERIALIZABLE(RdemContactGate);
 

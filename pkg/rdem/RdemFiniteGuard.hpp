@@ -20,7 +20,7 @@ public:
 
 Named after what it is rather than after a verb as YADE names engines: the name is in saved scenes (``O.save``) and in the scripts, tests and documents of the plugin; a rename would break saved scenes.
 
-Placed after :yref:`NewtonIntegrator` (``rdem.engines(finiteGuard=True)``, the default), it checks every body every step and throws ``RuntimeError`` (so ``O.run`` stops and Python sees the error) with a message naming the iteration, the first body (lowest id) with a non-finite quantity, that quantity, and every interaction on that body whose :yref:`RdemPhys::force` is non-finite (the usual origin). Forces and torques are read for bodies with a blocked DOF; on a free body the integrator has already carried a non-finite force into the velocity and position of the same step, and the message names those. The check costs well under 1 % of a step of the paper's 1200-block scene (doc/stability.md).)""");
+Placed after :yref:`NewtonIntegrator` (``rdem.engines(finiteGuard=True)``, the default), it checks every body every step and throws ``RuntimeError`` (so ``O.run`` stops and Python sees the error) with a message naming the iteration, the first body (lowest id) with a non-finite quantity, that quantity, and every interaction on that body whose :yref:`RdemPhys::force` is non-finite (the usual origin). Forces and torques are read for bodies with a blocked DOF; on a free body the integrator has already carried a non-finite force into the velocity and position of the same step, and the message names those. The check costs well under 1 % of a step of the paper's 1200-block scene.)""");
 	// clang-format on
 	DECLARE_LOGGER;
 };

@@ -5,7 +5,6 @@
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
 #include <core/Scene.hpp>
-#include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/OpenMPLoops.hpp>
 #include <pkg/rdem/RdemForceAssembler.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
@@ -20,7 +19,7 @@ void RdemForceAssembler::rebuild()
 {
 	/* Sides grouped by body (rdem::groupByKey, a counting sort), then each body's short list sorted by the other body's
 	   id: O(sides) plus a few comparisons per side, instead of one sort of all sides (the rebuild runs at nearly every
-	   step once contacts come and go, doc/performance.md). Side 2k is interaction k seen from its first body, 2k+1
+	   step once contacts come and go). Side 2k is interaction k seen from its first body, 2k+1
 	   from its second. */
 	const size_t               nBodies = scene->bodies->size();
 	vector<const Interaction*> intrs; // the real interactions of the law, in container order
@@ -52,7 +51,7 @@ void RdemForceAssembler::prepareDirectSums(Scene* scene, long nBodies)
 	   (ForceContainer::addForceUnsynced), to which sync() adds the other engines' per-thread contributions; permanent
 	   forces still mark the container unsynced at its reset. ForceContainer::addForce writes the container's shared flag
 	   and per-thread maximum id at every call, a cache line every thread writes: its cost did not fall with a second
-	   thread (doc/performance.md). The container is first made to cover every body. */
+	   thread. The container is first made to cover every body. */
 	if (nBodies <= 0) return;
 	scene->forces.addMaxId(Body::id_t(nBodies - 1));
 	scene->forces.syncSizesOfContainers();
@@ -60,7 +59,7 @@ void RdemForceAssembler::prepareDirectSums(Scene* scene, long nBodies)
 
 void RdemForceAssembler::action()
 {
-	const bool changed = Law2_RdemGeom_RdemPhys_FaceSprings::takeActiveSetChanged(scene);
+	const bool changed = RdemSharedState::of(scene, shared).takeActiveSetChanged();
 	if (changed || builtIter != scene->iter - 1 || builtBodies != long(scene->bodies->size()) || builtInteractions != long(scene->interactions->size()))
 		rebuild();
 	builtIter          = scene->iter;

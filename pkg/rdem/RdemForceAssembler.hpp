@@ -8,6 +8,7 @@
 
 #include <core/GlobalEngine.hpp>
 #include <core/Interaction.hpp>
+#include <pkg/rdem/RdemSharedState.hpp>
 
 namespace yade {
 
@@ -19,11 +20,13 @@ public:
 	/// 0 … nBodies-1, each body by one thread only (see the definition for why); call it outside a parallel region.
 	static void prepareDirectSums(Scene* scene, long nBodies);
 	// clang-format off
-	YADE_CLASS_BASE_DOC(RdemForceAssembler,GlobalEngine,R"""(Applies the forces and torques that :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` left in :yref:`RdemPhys` (with :yref:`Law2_RdemGeom_RdemPhys_FaceSprings::deferForces`), summing them body by body in the order of the other body's id.
+	YADE_CLASS_BASE_DOC_ATTRS(RdemForceAssembler,GlobalEngine,R"""(Applies the forces and torques that :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` left in :yref:`RdemPhys` (with :yref:`Law2_RdemGeom_RdemPhys_FaceSprings::deferForces`), summing them body by body in the order of the other body's id.
 
 Floating-point sums depend on their order. The law alone adds its forces in the order of the interaction container, which ``O.load`` changes (interactions without geometry, e.g. released bonds, are not saved and come back at the end of the container when the collider finds the pair again); the sum of a body's forces then differs in the last bits and a reloaded run drifts from the uninterrupted one. Summed here in a fixed order, it continues bit for bit (tests/yade/test_save_load.py), and the result no longer depends on the number of threads. Place it right after the :yref:`InteractionLoop` (``rdem.engines()`` does).
 
-The per-body lists, sorted by the other body's id, are kept from step to step and rebuilt only when the law reports that an interaction started or stopped leaving forces, or when the number of bodies or interactions changed: a step costs one pass over the lists (doc/performance.md).)""");
+The per-body lists, sorted by the other body's id, are kept from step to step and rebuilt only when the law reports that an interaction started or stopped leaving forces (in :yref:`RdemSharedState`), or when the number of bodies or interactions changed: a step costs one pass over the lists.)""",
+		((shared_ptr<RdemSharedState>,shared,,,"What the plugin's engines share (:yref:`RdemSharedState`, handed by ``rdem.engines()``; None: the law's, taken at the first step)."))
+	);
 	// clang-format on
 
 private:
@@ -34,8 +37,8 @@ private:
 		Body::id_t        other;
 		bool              second;
 	};
-	vector<size_t> first;       // the list of body b is sides[first[b] .. first[b+1]) (not saved: rebuilt after O.load)
-	vector<Side>   sides;       // all lists, bodies in id order, each sorted by the other body's id
+	vector<size_t> first; // the list of body b is sides[first[b] .. first[b+1]) (not saved: rebuilt after O.load)
+	vector<Side>   sides; // all lists, bodies in id order, each sorted by the other body's id
 	long           builtIter = -1, builtBodies = -1, builtInteractions = -1;
 	void           rebuild();
 };

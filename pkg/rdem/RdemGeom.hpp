@@ -66,7 +66,7 @@ public:
 	/// Python: d = P₂ - P₁ of every bonded segment for the given states of the two blocks [m].
 	vector<Vector3r> segDispPy(const shared_ptr<State>& s1, const shared_ptr<State>& s2) const;
 	/* The attributes are laid out in memory in this order: what a bond's law reads every step (the face in both block
-	   frames, ``normal``) comes first, in as few cache lines as possible (doc/performance.md). */
+	   frames, ``normal``) comes first, in as few cache lines as possible. */
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemGeom,IGeom,R"""(Geometry of a pair of :yref:`RdemBlock` (built by :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom`).
 
@@ -74,7 +74,7 @@ public:
 
 *Face-to-face contacts.* Blocks that are not bonded and whose faces meet face to face (:yref:`Ig2_RdemBlock_RdemBlock_RdemGeom::persistentContacts`) touch over a patch, the intersection of the two faces (``rdem::facePatch``): its contact springs are fixed material points of both blocks, found once and kept, as a bond's segments (``patch``; the faces' outward normals in ``segNormal1``, ``segNormal2``, and this step's ``normal``); the patch is derived again only once the blocks have moved relative to each other by more than ``patchTravel`` since ``patchRelPos``, ``patchRelOri``.
 
-*Sampled contacts.* Other blocks that are not bonded interact where sample points of one block's faces (an $(n+1)\times(n+1)$ trapezoid grid per face, corners and edges included) have entered the other block: one normal for the pair (the face axis of least overlap), depth = distance to travel along it to leave the other block, weight = trapezoid area × cosine between the sampled face and the normal, halved because both blocks are sampled; plus one edge-to-edge contact when two edges cross (separating-axis test); see doc/theory.md.)""",
+*Sampled contacts.* Other blocks that are not bonded interact where sample points of one block's faces (an $(n+1)\times(n+1)$ trapezoid grid per face, corners and edges included) have entered the other block: one normal for the pair (the face axis of least overlap), depth = distance to travel along it to leave the other block, weight = trapezoid area × cosine between the sampled face and the normal, halved because both blocks are sampled; plus one edge-to-edge contact when two edges cross (separating-axis test); see :ref:`theory §4 <rdem-theory-4>`.)""",
 		((int,samplesPerEdge,2,,"$n$: segments per face edge of the bond, and sample-grid density of contacts; copied from :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom.segmentsPerEdge` when the bond is made (the same $n$: a segment is the patch of one spring, a sample its point; the name stays for saved scenes)."))
 		((bool,bonded,false,,"Whether the pair is bonded: its shared face carries $n\\times n$ segments."))
 		((Vector3r,segNormal1,Vector3r::Zero(),,"Outward unit normal of body 1's bonded face, in body-1 frame."))

@@ -21,7 +21,7 @@ public:
 	Vector3r velocityAt(Real t) const;
 	Vector3r displacementAt(Real t) const;
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemGroundShaker,GlobalEngine,R"""(Applies a ground motion (``rdem.ground_motion.GroundMotion``: acceleration, velocity and displacement sampled at ``times``, the last two integrated from the first) to the scene, in one of two ways (``rdem.earthquake.shaker`` makes it from a record; doc/earthquake.md):
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemGroundShaker,GlobalEngine,R"""(Applies a ground motion (``rdem.ground_motion.GroundMotion``: acceleration, velocity and displacement sampled at ``times``, the last two integrated from the first) to the scene, in one of two ways (``rdem.earthquake.shaker`` makes it from a record):
 
 * ``mode='prescribed'``: the base blocks ``ids`` move with the ground. Their translations are blocked (``xyz`` of :yref:`State::blockedDOFs`, set by ``rdem.earthquake.shaker``) and at every step their velocity is set to $(\mathbf{u}_g(t+\Delta t)-\mathbf{u}_g(t))/\Delta t$, so that :yref:`NewtonIntegrator` puts them exactly on the ground displacement $\mathbf{u}_g$ at every step. The structure is shaken through its bonds and contacts with the base, as on a shaking table: right for anything that rocks, slides or lifts off its base (rocking, overturning, a wall standing on a footing).
 * ``mode='inertial'``: the ground does not move; every body feels the inertial load $-m\,\mathbf{a}_g(t)$, added to :yref:`NewtonIntegrator::gravity` (``gravity`` $-\mathbf{a}_g$). Displacements are then relative to the ground: right for a structure bonded to a rigid base that does not lift off, and what building codes' spectra and most frame analyses assume; it avoids following large ground displacements.

@@ -18,7 +18,7 @@ public:
 	int nIntact() const;
 	/* The attributes are laid out in memory in this order: what the law reads and writes for an intact bond every step
 	   (stiffnesses, strengths, weights, forces, the per-segment arrays' headers) comes first, in as few cache lines as
-	   possible; the contact parameters and arrays a bond uses only once broken follow (doc/performance.md). */
+	   possible; the contact parameters and arrays a bond uses only once broken follow. */
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemPhys,IPhys,R"""(Physics of a pair of :yref:`RdemBlock` (made by :yref:`Ip2_RdemMat_RdemMat_RdemPhys`, used by :yref:`Law2_RdemGeom_RdemPhys_FaceSprings`).
 
@@ -37,8 +37,8 @@ Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact s
 		((vector<int>,segState,,,"Per bonded segment: 0 intact, 1 broken in tension (eq. 15), 2 broken in shear (eq. 16)."))
 		((vector<Real>,segSigma,,,"Per bonded segment: normal stress of the last step, positive in tension [Pa]."))
 		((vector<Real>,segTau,,,"Per bonded segment: magnitude of the shear stress of the last step [Pa]."))
-		((bool,softening,false,,"Whether the restoring springs soften (:yref:`Ip2_RdemMat_RdemMat_RdemPhys::softening`, doc/theory.md §2.1) instead of breaking at once (eqs. 15-16)."))
-		((Real,cellCoef1,0,Attr::readonly,"Poisson cells (doc/theory.md §5.4): $\\partial\\varepsilon/\\partial u_n$, how much this bond's opening adds to body 1's cell strain along its normal [1/m]; 0 without cells (set by :yref:`RdemPoissonEngine` ``.build``)."))
+		((bool,softening,false,,"Whether the restoring springs soften (:yref:`Ip2_RdemMat_RdemMat_RdemPhys::softening`, :ref:`theory §2.1 <rdem-theory-2-1>`) instead of breaking at once (eqs. 15-16)."))
+		((Real,cellCoef1,0,Attr::readonly,"Poisson cells (:ref:`theory §5.4 <rdem-theory-5-4>`): $\\partial\\varepsilon/\\partial u_n$, how much this bond's opening adds to body 1's cell strain along its normal [1/m]; 0 without cells (set by :yref:`RdemPoissonEngine` ``.build``)."))
 		((Real,cellCoef2,0,Attr::readonly,"As ``cellCoef1``, for body 2's cell [1/m]."))
 		((Vector3r,centroidOffset,Vector3r::Zero(),,"Offset $\\boldsymbol{\\delta}$ of body 2's centroid from body 1's along the bonded face, in body 1's frame [m]; nonzero (running bond) when the cells correct the intact shear springs by $\\tfrac12(E_1+E_2)\\boldsymbol{\\delta}$ (``rdem::offsetSlip``)."))
 		((Real,opening,0,(Attr::noSave|Attr::readonly),"Normal opening $u_n$ of the bond at its face centre in this step, positive = opening [m] (written by :yref:`RdemCellStrainUpdater` for bonds of cells)."))
@@ -62,7 +62,7 @@ Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact s
 		((vector<Real>,segCrush,,,"Per bonded segment, with softening: plastic crushing closure $\\kappa$ [m]."))
 		((vector<Real>,segSoftening,,,"Per bonded segment, with softening: softening $\\xi$ of $f_t$ and $c$, 0 (intact) to 1 (broken)."))
 		((vector<Vector3r>,segSlip,,,"Per bonded segment, with softening: plastic slip of the Coulomb surface, in body 1's frame [m]."))
-		((vector<Real>,segStrengthFactor,,,"Per bonded segment, with :yref:`Ip2_RdemMat_RdemMat_RdemPhys::strengthPerSegment`: the factor of its strengths and fracture energies (doc/theory.md §2.2); empty: the bond's strengths hold for every segment."))
+		((vector<Real>,segStrengthFactor,,,"Per bonded segment, with :yref:`Ip2_RdemMat_RdemMat_RdemPhys::strengthPerSegment`: the factor of its strengths and fracture energies (:ref:`theory §2.2 <rdem-theory-2-2>`); empty: the bond's strengths hold for every segment."))
 		,
 		/* ctor */ createIndex();
 		,

@@ -9,7 +9,6 @@
 #include <core/Scene.hpp>
 #include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
-#include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/OpenMPLoops.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemForceAssembler.hpp>
@@ -64,7 +63,7 @@ void RdemPoissonEngine::postLoad(RdemPoissonEngine&)
 void RdemPoissonEngine::prepare()
 {
 	/* Elements of the same shape, size, material and skin share one K_p: a regular grid has a handful of distinct
-	   matrices instead of one 4.6 kB matrix per element, and the product K_p·u runs from cache (doc/performance.md).
+	   matrices instead of one 4.6 kB matrix per element, and the product K_p·u runs from cache.
 	   Shapes are compared on node coordinates relative to node 0, rounded to 1e-10 of the element's diagonal, λ to 1e-12 of the largest. */
 	const size_t nEl = size_t(nElements());
 	stiffness.clear();
@@ -146,7 +145,7 @@ vector<Real> RdemPoissonEngine::elementScales()
 
 void RdemPoissonEngine::action()
 {
-	Law2_RdemGeom_RdemPhys_FaceSprings::checkForceAssembly(scene);
+	RdemSharedState::of(scene, shared); // checks the engines when they changed
 	if (nElements() > 0) hex8Action();
 	cellAction();
 }
@@ -155,7 +154,7 @@ void RdemPoissonEngine::hex8Action()
 {
 	if (!prepared()) prepare();
 	// The scales change only when a spring breaks or a bond is released or erased: recompute them only then.
-	const long broken = Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(scene), nIntrs = long(scene->interactions->size());
+	const long broken = RdemSharedState::of(scene, shared).brokenSprings(), nIntrs = long(scene->interactions->size());
 	if (broken != scalesBroken || nIntrs != scalesIntrs) {
 		scales       = elementScales();
 		scalesBroken = broken;
@@ -255,9 +254,20 @@ vector<Real> RdemPoissonEngine::omega2Bound()
 	return w2;
 }
 
-void RdemPoissonEngine::addStiffness(rdem::BlockStiffness<Real>& K)
+void RdemPoissonEngine::addOmega2Bound(Scene* sc, vector<Real>& omega2)
 {
-	scene = Omega::instance().getScene().get();
+	if (dead) return;
+	const vector<Real> P = omega2Bound();
+	for (size_t id = 0; id < P.size() && id < omega2.size(); ++id) {
+		const auto& b = Body::byId(Body::id_t(id), sc);
+		if (b && b->state->blockedDOFs != State::DOF_ALL) omega2[id] += P[id];
+	}
+}
+
+void RdemPoissonEngine::addStiffness(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>&, Real)
+{
+	if (dead) return;
+	scene = sc;
 	if (nElements() > 0) {
 		const vector<Real> s = elementScales(); // prepares the matrices
 		for (size_t e = 0; e < s.size(); ++e) {
@@ -267,7 +277,7 @@ void RdemPoissonEngine::addStiffness(rdem::BlockStiffness<Real>& K)
 			K.addElement(n, &stiffness[stiffnessOf[e]], s[e]);
 		}
 	}
-	cells.addStiffness(scene, releaseOnCrack, K);
+	cells.addStiffness(scene, releaseOnCrack, RdemSharedState::of(scene, shared).brokenSprings(), K);
 }
 
 int RdemPoissonEngine::nCells() const

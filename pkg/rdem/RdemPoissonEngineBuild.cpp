@@ -142,7 +142,7 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 	scene                                 = Omega::instance().getScene().get();
 	const std::set<Body::id_t> ids        = collectBlocks(idsIn);
 	const bool                 consistent = Ip2_RdemMat_RdemMat_RdemPhys::formulationOf(scene) == rdem::SpringModulus::Consistent;
-	// The paper's springs E/(1-ν²) plus D_p are an indefinite tensor for ν > (3-√5)/2 ≈ 0.382 (doc/theory.md §5.3): an
+	// The paper's springs E/(1-ν²) plus D_p are an indefinite tensor for ν > (3-√5)/2 ≈ 0.382 (doc/sphinx/rdemTheory.rst §5.3): an
 	// explicit run would blow up, so refuse it with the way out.
 	const Real nuPaperMax = (3 - math::sqrt(Real(5))) / 2;
 	if (!consistent)
@@ -152,17 +152,45 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 				throw std::invalid_argument(
 				        "RdemPoissonEngine.build: block " + std::to_string(id) + " has poisson = " + rdem::numberText(nu)
 				        + ", above 0.382 where the paper formulation (springs E/(1-nu^2) plus D_p) is not positive definite and a run"
-				          " blows up; use the consistent formulation, rdem.engines(poisson='consistent')");
+				          " blows up; use the consistent formulation, rdem.engines(formulation='consistent')");
 		}
 	const Neighbours nbr         = bondedNeighbours(ids);
 	const string     defect      = gridDefect(nbr);
-	const bool       cellsWanted = elements == "cells" || (elements == "auto" && !defect.empty());
+	const string     mixed       = materialMix(ids);
+	const bool       totalStress = Law2_RdemGeom_RdemPhys_FaceSprings::totalStressOf(scene);
+	/* 'auto': cells wherever the hexahedra would be wrong or refused. A hexahedron straddling two materials has one λ for
+	   both (Backus 1962), which averages out the lateral push of a soft layer on a stiff one: a stack-bonded brick-mortar
+	   prism of 20x20 blocks in plan then expands 44 % more than the layered medium (Backus's closed form), the cells are
+	   within 1.7 % (tests/yade/test_prism.py). */
+	string why;
+	bool   cellsWanted = false;
+	if (elements != "auto") {
+		cellsWanted = elements == "cells";
+		why         = "elements = '" + elements + "'";
+	} else if (!defect.empty()) {
+		cellsWanted = true;
+		why         = defect + ": not a grid of 2x2x2 groups";
+	} else if (consistent && !mixed.empty()) {
+		cellsWanted = true;
+		why         = mixed + ": the hexahedra would blend their lambda, the cells give each block its own";
+	} else if (consistent && totalStress) {
+		cellsWanted = true;
+		why         = "Law2_RdemGeom_RdemPhys_FaceSprings.totalStress needs the Poisson stress of every face, which only the cells give";
+	} else
+		why = string("a grid of 2x2x2 groups") + (mixed.empty() ? " of one material" : " in the paper's formulation (" + mixed + ")");
+	chosen = string(cellsWanted ? "cells" : "hex8") + ": " + why;
+	if (!consistent && !cellsWanted && !mixed.empty())
+		LOG_WARN(
+		        "RdemPoissonEngine.build: " << mixed
+		                                    << "; the paper's hexahedra blend their lambda where they straddle two materials, which "
+		                                       "averages out the lateral push of a soft layer on a stiff one; the consistent formulation "
+		                                       "gives every block its own lambda with Poisson cells");
 	if (!cellsWanted && !defect.empty())
 		throw std::invalid_argument(
 		        "RdemPoissonEngine.build: " + defect
 		        + "; the paper's hexahedra need a grid of 2x2x2 groups (one bonded neighbour per face). Poisson cells work on any layout: "
 		          "elements='cells' (or 'auto') with the consistent formulation");
-	if (!cellsWanted && Law2_RdemGeom_RdemPhys_FaceSprings::totalStressOf(scene))
+	if (!cellsWanted && totalStress)
 		throw std::invalid_argument(
 		        "RdemPoissonEngine.build: Law2_RdemGeom_RdemPhys_FaceSprings.totalStress needs the Poisson normal stress of every bond, "
 		        "which the cells give and the paper's hexahedra do not: elements = 'cells'");
@@ -171,7 +199,7 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 		        "RdemPoissonEngine.build: " + (defect.empty() ? string("elements = 'cells'") : defect)
 		        + "; Poisson cells, which work on any layout, belong to the consistent formulation (the paper's hexahedra need a grid of 2x2x2 "
 		          "groups): "
-		          "Ip2_RdemMat_RdemMat_RdemPhys.formulation = 'consistent', e.g. rdem.engines(poisson='consistent')");
+		          "Ip2_RdemMat_RdemMat_RdemPhys.formulation = 'consistent', e.g. rdem.engines(formulation='consistent')");
 	nodes.clear();
 	refPos.clear();
 	lambda.clear();
@@ -183,6 +211,31 @@ void RdemPoissonEngine::build(const vector<Body::id_t>& idsIn)
 	RdemCellNetwork::generation++;
 	scalePrev.clear(); // the first step takes the current scales
 	prepare();
+	if (elements == "auto" && cellsWanted && defect.empty()) {
+		LOG_WARN("RdemPoissonEngine.build: Poisson cells (elements='auto'): " << why);
+	} else {
+		LOG_INFO("RdemPoissonEngine.build: " << chosen);
+	}
+}
+
+string RdemPoissonEngine::materialMix(const std::set<Body::id_t>& ids) const
+{
+	// Materials count by their elastic constants: two RdemMat of the same E and ν (a platen of the specimen's) are one.
+	std::map<std::pair<Real, Real>, std::set<string>> labels; // per (E, ν): the labels (or #index) of its RdemMat
+	for (Body::id_t id : ids) {
+		const auto& m = *static_cast<RdemMat*>(Body::byId(id, scene)->material.get());
+		labels[{ m.young, m.poisson }].insert(m.label.empty() ? "#" + std::to_string(m.id) : m.label);
+	}
+	if (labels.size() < 2) return "";
+	std::ostringstream msg;
+	msg << "blocks of " << labels.size() << " materials (";
+	for (auto it = labels.begin(); it != labels.end(); ++it) {
+		msg << (it == labels.begin() ? "" : "; ") << "E " << double(it->first.first) << " Pa, nu " << double(it->first.second) << ":";
+		for (const string& l : it->second)
+			msg << " " << l;
+	}
+	msg << ")";
+	return msg.str();
 }
 
 void RdemPoissonEngine::buildPy(const py::list& ids)
@@ -287,7 +340,7 @@ void RdemPoissonEngine::addHex8Element(const std::array<Body::id_t, 8>& n, const
 
 void RdemPoissonEngine::setHex8SpringWeights(const std::set<Body::id_t>& ids, const Neighbours& nbr, bool consistent)
 {
-	// Spring weights of the consistent formulation (doc/theory.md §5.2); 1 in the paper's.
+	// Spring weights of the consistent formulation (doc/sphinx/rdemTheory.rst §5.2); 1 in the paper's.
 	forEachBond(scene, ids, [&](const Interaction& I, const RdemGeom& g, RdemPhys& p) {
 		p.weightNormal = p.weightShear = 1;
 		if (!consistent) return;
@@ -331,7 +384,7 @@ void RdemPoissonEngine::buildCells(const std::set<Body::id_t>& ids)
 	const long updater = rdem::engineIndex<RdemCellStrainUpdater>(scene), loop = rdem::engineIndex<InteractionLoop>(scene);
 	if (updater < 0 || (loop >= 0 && updater > loop))
 		throw std::invalid_argument("RdemPoissonEngine.build: Poisson cells need an RdemCellStrainUpdater before the InteractionLoop in O.engines "
-		                            "(rdem.engines(poisson='consistent') places it)");
+		                            "(rdem.engines(formulation='consistent') places it)");
 	for (Body::id_t id : ids)
 		if (!dynamic_cast<RdemState*>(Body::byId(id, scene)->state.get()))
 			throw std::invalid_argument(

@@ -12,7 +12,7 @@
 namespace yade {
 namespace rdem {
 
-	/* Software prefetch for YADE's InteractionLoop over a block assembly (doc/performance.md, section on prefetching).
+	/* Software prefetch for YADE's InteractionLoop over a block assembly.
 
 	   The loop visits the interactions in container order and, for each, follows two chains of pointers: interaction →
 	   geometry, physics → the physics' per-segment arrays, and interaction → both bodies → their states. Once a scene
@@ -34,7 +34,7 @@ namespace rdem {
 	constexpr size_t bytesPerInteraction = 2048;
 
 	/// Distance of the automatic mode: in the 28³ cube (2.4e4 blocks) 2, 4 and 8 were within the noise, 8 fastest in both
-	/// rounds, 16 slower (doc/performance.md).
+	/// rounds, 16 slower.
 	constexpr int autoPrefetchDistance = 8;
 
 	/// Size of the last-level cache one core uses [bytes] (Linux sysfs; 32 MiB if the system does not say).
@@ -43,8 +43,8 @@ namespace rdem {
 	/* The distance to prefetch at in a scene of nInteractions interactions for a requested distance: > 0 and 0 as
 	   given; < 0 (automatic) autoPrefetchDistance once the interactions' data, with their share of the bodies and
 	   Poisson elements, exceed the last-level cache, else 0. Below, prefetches only add instructions: the paper's
-	   1200-block scene (3260 bonds) was 10-20 % slower with them, and the gain starts between 1.3e4 and 2.2e4 bonds
-	   (doc/performance.md). */
+	   1200-block scene (3260 bonds) was 10-20 % slower with them, and the gain starts between 1.3e4 and 2.2e4 bonds.
+	*/
 	inline int prefetchDistanceFor(int requested, size_t nInteractions)
 	{
 		if (requested >= 0) return requested;

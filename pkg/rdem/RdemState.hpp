@@ -14,7 +14,7 @@ namespace yade {
 class RdemState : public State {
 public:
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS_CTOR(RdemState,State,R"""(State of an :yref:`RdemBlock` (made by :yref:`RdemMat`'s ``newAssocState``, as ``rdem.block`` does): YADE's :yref:`State` plus the block's *Poisson cell*, set by :yref:`RdemPoissonEngine` ``.build`` when the layout is not a grid of $2\times2\times2$ groups (doc/theory.md §5.4).
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR(RdemState,State,R"""(State of an :yref:`RdemBlock` (made by :yref:`RdemMat`'s ``newAssocState``, as ``rdem.block`` does): YADE's :yref:`State` plus the block's *Poisson cell*, set by :yref:`RdemPoissonEngine` ``.build`` when the layout is not a grid of $2\times2\times2$ groups (:ref:`theory §5.4 <rdem-theory-5-4>`).
 
 The cell's normal strains along the block's axes, $\varepsilon_d=\sum_q c_q u_{n,q}$ over the openings $u_{n,q}$ of the block's bonds along $d$ (:yref:`RdemPhys::cellCoef1`), are updated every step by :yref:`RdemCellStrainUpdater`; :yref:`RdemPoissonEngine` turns them into forces on the bonds.)""",
 		((Real,cellVolume,0,Attr::readonly,"Volume $V$ of the block's cell [m³] (half the block along a platen axis); 0: no cell."))

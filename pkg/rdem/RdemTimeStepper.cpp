@@ -8,14 +8,13 @@
 #include <core/Scene.hpp>
 #include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
+#include <pkg/rdem/InteractionOrder.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
-#include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
 #include <pkg/rdem/NumberText.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemMat.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
-#include <pkg/rdem/RdemPoissonEngine.hpp>
 #include <pkg/rdem/RdemTimeStepper.hpp>
 #include <pkg/rdem/math/ContactBound.hpp>
 #include <pkg/rdem/math/Elasticity.hpp>
@@ -33,29 +32,15 @@ YADE_PLUGIN((RdemTimeStepper));
 CREATE_LOGGER(RdemTimeStepper);
 
 namespace {
-	/// Adds, for one point spring, the Gershgorin terms 2(k_t/m + k_r/I_min) of one body [1/s²], from its normal and
-	/// shear stiffnesses k_n, k_s [N/m].
-	void addPoint(vector<Real>& sum, const State& s, Body::id_t id, const Vector3r& point, const Vector3r& n, Real kn, Real ks)
+	/// Per body id, whether the body carries a bond (an interaction with segments).
+	vector<char> bondedBodies(Scene* sc)
 	{
-		if (s.blockedDOFs == State::DOF_ALL) return;
-		sum[size_t(id)] += rdem::pointSpringOmega2<Real>(point - s.pos, n, 1, kn, ks, s.mass, s.inertia.minCoeff());
-	}
-
-	/// Dashpots (c_n, c_s) [N·s/m] of a point of area a [m²] that has `share` of its interaction's contact area: eq. (13)
-	/// per area times the weighted area, capped as the law caps them for the step dt (Law2…::dashpotCap; no cap for dt = 0).
-	Vector2r pointDashpots(const RdemPhys& p, const State& s1, const State& s2, const Vector3r& point, const Vector3r& n, Real a, Real share, Real dt)
-	{
-		const Vector2r c(p.weightNormal * p.cn * a, p.weightShear * p.cs * a);
-		return dt > 0 ? Vector2r(c.cwiseMin(Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(s1, s1.pos, s2, s2.pos, point, n, share, dt))) : c;
-	}
-
-	/// Whether segment i of a bond has a contact dashpot that acts: its restoring spring is broken (eq. 13; intact and
-	/// softening springs have none) and it touched in the last step (the law left it a stress). Segments that touch
-	/// again before the next update are covered by the safety factor, as contacts that start.
-	bool segmentDamped(const RdemPhys& p, size_t i)
-	{
-		return i < p.segState.size() && p.segState[i] != int(rdem::SegmentState::Intact) && i < p.segSigma.size()
-		        && (p.segSigma[i] < 0 || p.segTau[i] > 0);
+		vector<char> bonded(sc->bodies->size(), 0);
+		for (const auto& I : *sc->interactions) {
+			const auto* g = I->isReal() ? dynamic_cast<const RdemGeom*>(I->geom.get()) : nullptr;
+			if (g && g->nSegments() > 0) bonded[size_t(I->getId1())] = bonded[size_t(I->getId2())] = 1;
+		}
+		return bonded;
 	}
 
 	/// How contacts are made: the scene's formulation (Ip2_RdemMat_RdemMat_RdemPhys::formulationOf) and the sample grid of
@@ -107,88 +92,18 @@ namespace {
 	}
 }
 
-Real RdemTimeStepper::gershgorin(Scene* sc) const
+Real RdemTimeStepper::gershgorin(Scene* sc)
 {
 	vector<Real> omega2(sc->bodies->size(), 0); // row sums of the mass-normalised stiffness per body [1/s²]
-	vector<char> bonded(sc->bodies->size(), 0);
-	for (const auto& I : *sc->interactions) {
-		if (!I->isReal()) continue;
-		const auto* g = dynamic_cast<RdemGeom*>(I->geom.get());
-		const auto* p = dynamic_cast<RdemPhys*>(I->phys.get());
-		if (!g || !p) continue;
-		const State& s1 = *Body::byId(I->getId1(), sc)->state;
-		const State& s2 = *Body::byId(I->getId2(), sc)->state;
-		if (g->nSegments() > 0) bonded[size_t(I->getId1())] = bonded[size_t(I->getId2())] = 1;
-		const Vector3r normal = g->normal.squaredNorm() > 0 ? g->normal : Vector3r(s1.ori * g->segNormal1);
-		const auto     both   = [&](const Vector3r& point, const Vector3r& n, Real area) {
-                        const Real kn = p->weightNormal * p->kn * area, ks = p->weightShear * p->ks * area;
-                        addPoint(omega2, s1, I->getId1(), point, n, kn, ks);
-                        addPoint(omega2, s2, I->getId2(), point, n, kn, ks);
-		};
-		for (const Vector3r& p1 : g->segmentPoints1())
-			both(s1.pos + s1.ori * p1, normal, g->segmentArea());
-		for (size_t k = 0; k < g->sampleKey.size(); ++k)
-			both(g->samplePoint[k], g->sampleNormal[k], g->sampleArea[k]);
-		const auto springs = g->patchSprings(); // a face-to-face contact's springs, at body 1's material points
-		for (size_t k = 0; k < springs.size; ++k)
-			both(s1.pos + s1.ori * Vector3r(springs.point1(k)), normal, springs.area(k));
-	}
-	if (contactBound) addContactBound(omega2, bonded, sc);
-	if (RdemPoissonEngine* poisson = RdemPoissonEngine::of(sc)) {
-		if (!poisson->dead) {
-			const vector<Real> P = poisson->omega2Bound();
-			for (size_t id = 0; id < P.size() && id < omega2.size(); ++id) {
-				const auto& b = Body::byId(Body::id_t(id), sc);
-				if (b && b->state->blockedDOFs != State::DOF_ALL) omega2[id] += P[id];
-			}
-		}
-	}
+	for (RdemStiffnessSource* source : RdemSharedState::of(sc, shared).stiffnessSources)
+		source->addOmega2Bound(sc, omega2); // the law's springs, the Poisson engine's elements and cells
+	if (contactBound) addContactBound(omega2, bondedBodies(sc), sc);
 	const Real w2 = *std::max_element(omega2.begin(), omega2.end());
 	return w2 > 0 ? 2 / math::sqrt(w2) : std::numeric_limits<Real>::infinity();
 }
 
 namespace {
-	/// The springs of one interaction (its bonded segments and contact samples) as point springs of K [N/m], and the
-	/// dashpots of its contact samples and broken segments (eq. 13) as point dashpots of C [N·s/m].
-	void addInteraction(
-	        rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, const Interaction& I, const RdemGeom& g, const RdemPhys& p, Scene* sc, Real capDt)
-	{
-		const State& s1 = *Body::byId(I.getId1(), sc)->state;
-		const State& s2 = *Body::byId(I.getId2(), sc)->state;
-		const long   b1 = I.getId1(), b2 = I.getId2();
-		if (g.nSegments() == 0 && g.sampleKey.empty() && g.nPatch() == 0) return;
-		K.beginPair(b1, b2);
-		C.beginPair(b1, b2);
-		const Real     wn = p.weightNormal, ws = p.weightShear;
-		const Vector3r normal = g.normal.squaredNorm() > 0 ? g.normal : Vector3r(s1.ori * g.segNormal1);
-		const Real     A      = g.segmentArea();
-		const auto     points = g.segmentPoints1();
-		for (size_t i = 0; i < points.size(); ++i) {
-			const Vector3r arm1 = s1.ori * points[i], arm2 = s1.pos + arm1 - s2.pos;
-			K.addPointSpring(b1, b2, arm1, arm2, normal, wn * p.kn * A, ws * p.ks * A);
-			if (!segmentDamped(p, i)) continue;
-			const Vector2r c = pointDashpots(p, s1, s2, s1.pos + arm1, normal, A, 1, capDt); // share ≤ 1 in the law
-			C.addPointSpring(b1, b2, arm1, arm2, normal, c[0], c[1]);
-		}
-		const Real contactArea = std::accumulate(g.sampleArea.begin(), g.sampleArea.end(), Real(0));
-		for (size_t k = 0; k < g.sampleKey.size(); ++k) {
-			const Vector3r arm1 = g.samplePoint[k] - s1.pos, arm2 = g.samplePoint[k] - s2.pos;
-			const Real     a = g.sampleArea[k];
-			K.addPointSpring(b1, b2, arm1, arm2, g.sampleNormal[k], wn * p.kn * a, ws * p.ks * a);
-			const Vector2r c = pointDashpots(p, s1, s2, g.samplePoint[k], g.sampleNormal[k], a, a / contactArea, capDt);
-			C.addPointSpring(b1, b2, arm1, arm2, g.sampleNormal[k], c[0], c[1]);
-		}
-		const auto springs = g.patchSprings(); // a face-to-face contact's springs, at body 1's material points
-		for (size_t k = 0; k < springs.size; ++k) {
-			const Vector3r arm1 = s1.ori * Vector3r(springs.point1(k)), arm2 = s1.pos + arm1 - s2.pos;
-			const Real     a = springs.area(k);
-			K.addPointSpring(b1, b2, arm1, arm2, normal, wn * p.kn * a, ws * p.ks * a);
-			const Vector2r c = pointDashpots(p, s1, s2, s1.pos + arm1, normal, a, a / g.patchArea, capDt);
-			C.addPointSpring(b1, b2, arm1, arm2, normal, c[0], c[1]);
-		}
-	}
-
-	/* The contacts a free block without bonds can still make (contactBound, doc/theory.md §6): springs to fixed points at
+	/* The contacts a free block without bonds can still make (contactBound, doc/sphinx/rdemTheory.rst §6): springs to fixed points at
 	   the trapezoid sample grid of each of its six faces, at its own stiffness per area for its smallest half-extent
 	   (eq. 11). A flush contact with an equal block (springs in series, half as stiff, on half the mass in relative
 	   motion) has the same frequency; with a fixed block, this bound. */
@@ -210,18 +125,12 @@ namespace {
 	}
 }
 
-void RdemTimeStepper::assemble(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, vector<rdem::BodyScale<Real>>& scale) const
+void RdemTimeStepper::assemble(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, vector<rdem::BodyScale<Real>>& scale)
 {
-	const size_t nB = sc->bodies->size();
-	vector<char> bonded(nB, 0);
-	for (const auto& I : *sc->interactions) {
-		if (!I->isReal()) continue;
-		const auto* g = dynamic_cast<RdemGeom*>(I->geom.get());
-		const auto* p = dynamic_cast<RdemPhys*>(I->phys.get());
-		if (!g || !p) continue;
-		if (g->nSegments() > 0) bonded[size_t(I->getId1())] = bonded[size_t(I->getId2())] = 1;
-		addInteraction(K, C, *I, *g, *p, sc, capDt);
-	}
+	for (RdemStiffnessSource* source : RdemSharedState::of(sc, shared).stiffnessSources)
+		source->addStiffness(sc, K, C, capDt); // the law's springs and dashpots, the Poisson engine's elements and cells
+	const size_t       nB     = sc->bodies->size();
+	const vector<char> bonded = contactBound ? bondedBodies(sc) : vector<char>();
 	scale.assign(nB, rdem::BodyScale<Real>());
 	const ContactSetup setup = contactBound ? contactSetup(sc) : ContactSetup();
 	for (const auto& b : *sc->bodies) {
@@ -230,8 +139,6 @@ void RdemTimeStepper::assemble(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::B
 		scale[size_t(b->id)] = rdem::bodyScale<Real>(s.mass, s.inertia, s.ori.toRotationMatrix(), unsigned(s.blockedDOFs));
 		if (contactBound && s.blockedDOFs != State::DOF_ALL && !bonded[size_t(b->id)]) addContactsToCome(K, *b, setup);
 	}
-	if (RdemPoissonEngine* poisson = RdemPoissonEngine::of(sc))
-		if (!poisson->dead) poisson->addStiffness(K);
 }
 
 Real RdemTimeStepper::lanczos(Scene* sc)
@@ -264,15 +171,13 @@ Real RdemTimeStepper::lanczos(Scene* sc)
 	return rdem::dampedCriticalStep(est.upper(), dashpotRate);
 }
 
-vector<Real> RdemTimeStepper::springSignature(Scene* sc) const
+vector<Real> RdemTimeStepper::springSignature(Scene* sc)
 {
 	// what K depends on besides the poses: which springs exist and how stiff they are, which DOFs are free
 	Real nReal = 0, nSegments = 0, nSamples = 0, stiffness = 0, blocked = 0, mass = 0;
-	for (const auto& I : *sc->interactions) {
-		if (!I->isReal()) continue;
-		const auto* g = dynamic_cast<RdemGeom*>(I->geom.get());
-		const auto* p = dynamic_cast<RdemPhys*>(I->phys.get());
-		if (!g || !p) continue;
+	for (const Interaction* I : rdem::interactionsInIdOrder(sc)) {
+		const auto* g = static_cast<const RdemGeom*>(I->geom.get());
+		const auto* p = static_cast<const RdemPhys*>(I->phys.get());
 		nReal += 1;
 		nSegments += Real(g->nSegments());
 		nSamples += Real(g->sampleKey.size() + g->nPatch());
@@ -283,12 +188,12 @@ vector<Real> RdemTimeStepper::springSignature(Scene* sc) const
 			blocked += b->state->blockedDOFs;
 			mass += b->state->mass;
 		}
-	return { Real(sc->bodies->size()), nReal, nSegments, nSamples, stiffness, blocked, mass, Real(Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(sc)) };
+	return { Real(sc->bodies->size()), nReal, nSegments, nSamples, stiffness, blocked, mass, Real(brokenSprings(sc)) };
 }
 
-bool RdemTimeStepper::contactsPossible(Scene* sc) const
+bool RdemTimeStepper::contactsPossible(Scene* sc)
 {
-	if (Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(sc) > 0) return true;
+	if (brokenSprings(sc) > 0) return true;
 	vector<char> bonded(sc->bodies->size(), 0);
 	for (const auto& I : *sc->interactions) {
 		if (!I->isReal()) continue;
@@ -323,6 +228,22 @@ Real RdemTimeStepper::estimatePy(const string& how)
 	return dt;
 }
 
+vector<Real> RdemTimeStepper::stiffnessTimes(const vector<Real>& x)
+{
+	Scene*                        sc = Omega::instance().getScene().get();
+	const size_t                  nB = sc->bodies->size();
+	rdem::BlockStiffness<Real>    K(nB), C(nB);
+	vector<rdem::BodyScale<Real>> scale;
+	if (x.size() != 6 * nB)
+		throw std::invalid_argument(
+		        "RdemTimeStepper.stiffnessTimes: x has " + std::to_string(x.size()) + " values: must have 6 per body (" + std::to_string(6 * nB) + ")");
+	capDt = sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0);
+	assemble(sc, K, C, scale);
+	vector<Real> y(x.size());
+	K.multiply(x.data(), y.data());
+	return y;
+}
+
 void RdemTimeStepper::postLoad(RdemTimeStepper&)
 {
 	if (!(safety > 0 && safety <= 1)) throw std::invalid_argument("RdemTimeStepper.safety = " + rdem::numberText(safety) + ": must be in (0, 1]");
@@ -338,7 +259,7 @@ bool RdemTimeStepper::isActivated()
 	if (timeStepUpdateInterval < 1) throw std::invalid_argument("RdemTimeStepper.timeStepUpdateInterval = 0: must be an integer >= 1 [steps]");
 	// also at once when a spring breaks: its contact dashpot acts from the next step, and may need a shorter step now
 	return scene->iter % timeStepUpdateInterval == 0 || !(scene->dt > 0 && math::isfinite(scene->dt)) || (!active && scene->dt != checkedDt)
-	        || Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(scene) != brokenAtEstimate;
+	        || brokenSprings(scene) != brokenAtEstimate;
 }
 
 void RdemTimeStepper::checkFixedDt(Scene* sc)
@@ -347,7 +268,7 @@ void RdemTimeStepper::checkFixedDt(Scene* sc)
 	checkedDt            = sc->dt;
 	if (!(sc->dt > criticalDt)) return;
 	// above the springs' limit the run blows up; between it and the lower limit with the contact dashpots it may, but the
-	// dashpots' compression-only clamp and caps (Law2…::dashpotCap) often hold it (doc/stability.md): a warning
+	// dashpots' compression-only clamp and caps (Law2…::dashpotCap) often hold it: a warning
 	const bool         springs = sc->dt > springCriticalDt;
 	std::ostringstream msg;
 	msg << "O.dt = " << sc->dt << " s exceeds the critical time step " << (springs ? springCriticalDt : criticalDt) << " s ("
@@ -377,7 +298,7 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 		lastSignature = signature;
 		reused        = 0;
 	}
-	brokenAtEstimate = Law2_RdemGeom_RdemPhys_FaceSprings::brokenSprings(sc);
+	brokenAtEstimate = brokenSprings(sc);
 	if (!math::isfinite(criticalDt)) { // nothing elastic yet: nothing to check a fixed O.dt against
 		checkedDt = sc->dt;
 		return;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <core/TimeStepper.hpp>
+#include <pkg/rdem/RdemSharedState.hpp>
 #include <pkg/rdem/math/StiffnessSpectrum.hpp>
 
 namespace yade {
@@ -26,18 +27,20 @@ public:
 	Real estimate(Scene* scene);
 	/// Python: the estimate by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``).
 	Real estimatePy(const string& method);
-	/// The linear stiffness K of the scene (springs, contact samples, contacts that can still form, Poisson elements and
-	/// cells), its contact dashpots C (contact samples, broken segments, contacts that can still form) and each body's
-	/// mass normalisation.
-	void assemble(Scene* scene, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, vector<rdem::BodyScale<Real>>& scale) const;
+	/// Python: K·x, K the linear stiffness the estimate uses (assemble), x 6 values per body (u [m], θ [rad]) [N, N·m].
+	vector<Real> stiffnessTimes(const vector<Real>& x);
+	/// The linear stiffness K of the scene and its contact dashpots C, as their sources give them (RdemStiffnessSource:
+	/// the law's springs and dashpots, the Poisson engine's elements and cells), plus the contacts that can still form
+	/// (contactBound), and each body's mass normalisation.
+	void assemble(Scene* scene, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, vector<rdem::BodyScale<Real>>& scale);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemTimeStepper,TimeStepper,R"""(Time step for the refined DEM with the Poisson effect: ``O.dt = safety·Δt_crit``.
 
 YADE's :yref:`PWaveTimeStep<yade.utils.PWaveTimeStep>` ignores boxes and :yref:`GlobalStiffnessTimeStepper` assumes sphere contacts, so this stepper finds the highest eigenfrequency $\omega_{max}$ of the assembly itself; $\Delta t_{crit}=2/\omega_{max}$ (central differences) while no contact dashpot acts. The contact dashpots of eq. 13 act on the mid-step velocity and lower the limit: leapfrog is stable while $\lambda_{max}(\Delta t^2\tilde{K}+2\Delta t\tilde{C})\le 4$ ($\tilde{K}$, $\tilde{C}$ the mass-normalised stiffness and dashpots), which holds for $\Delta t_{crit}=4/(\lambda_C+\sqrt{\lambda_C^2+4\lambda_K})$, $\lambda_K=\omega_{max}^2$, $\lambda_C$ the largest eigenvalue of $\tilde{C}$ (``rdem::dampedCriticalStep``; for one oscillator $(2/\omega)(\sqrt{1+\zeta^2}-\zeta)$ [Belytschko2000]_, 0.41 of $2/\omega$ at critical damping). $\tilde{C}$ holds the dashpots of the contact samples, and of the broken segments that touch, capped as the law caps them for the current ``O.dt`` (a larger step lowers the caps); the contacts to come (``contactBound``) add their springs only.
 
-*Lanczos* (``method='lanczos'``, the default): $\omega_{max}^2=\lambda_{max}$ of $A=PSKSP$, $K$ the linear stiffness of the current configuration (every segment spring of a bond, every contact sample, the contacts blocks can still make with ``contactBound``, the Poisson elements and cells, without the geometric stiffness), $S$ the inverse square root of each block's mass and rotated inertia, $P$ its free DOFs; by Lanczos iterations with full reorthogonalisation, warm-started from the last estimate's Ritz vector, until the residual of the largest Ritz value $\theta$ is below ``lanczosTolerance``·$\theta$; $\lambda_{max}\approx\theta+r$ [Parlett1998]_ [ZhouLi2011]_. Measured against the exact limit (doc/stability.md): 0.02–0.05 % below it. $\lambda_C$ the same way, from its own Ritz vector, when a dashpot acts.
+*Lanczos* (``method='lanczos'``, the default): $\omega_{max}^2=\lambda_{max}$ of $A=PSKSP$, $K$ the linear stiffness of the current configuration (every segment spring of a bond, every contact sample, the contacts blocks can still make with ``contactBound``, the Poisson elements and cells, without the geometric stiffness), $S$ the inverse square root of each block's mass and rotated inertia, $P$ its free DOFs; by Lanczos iterations with full reorthogonalisation, warm-started from the last estimate's Ritz vector, until the residual of the largest Ritz value $\theta$ is below ``lanczosTolerance``·$\theta$; $\lambda_{max}\approx\theta+r$ [Parlett1998]_ [ZhouLi2011]_. Measured against the exact limit: 0.02–0.05 % below it. $\lambda_C$ the same way, from its own Ritz vector, when a dashpot acts.
 
-*Gershgorin* (``method='gershgorin'``, the fallback, 2.2–2.7 times below the limit): for every free block $b$, $\omega_b^2=\sum_i 2\left(k_{t,i}/m_b + k_{r,i}/I_{min,b}\right)+P_b/m_b$, summed over the springs $i$ of its segments and contact samples, $k_{t}=\max(\bar{k}_n,\bar{k}_s)A$, $k_{r}=A(\bar{k}_n|\mathbf{r}\times\mathbf{n}|^2+\bar{k}_s(|\mathbf{r}|^2+(\mathbf{r}\cdot\mathbf{n})^2))$ with $\mathbf{r}$ the arm from the centroid, and $P_b$ the Poisson row-sum bound of :yref:`RdemPoissonEngine`; $\omega_{max}\le\max_b\omega_b$. It leaves the dashpots out: at 0.37–0.44 of the undamped limit it is already about where critical dashpots put the limit (0.41 of it), and the law's caps keep the dashpots of small blocks below critical (doc/stability.md).
+*Gershgorin* (``method='gershgorin'``, the fallback, 2.2–2.7 times below the limit): for every free block $b$, $\omega_b^2=\sum_i 2\left(k_{t,i}/m_b + k_{r,i}/I_{min,b}\right)+P_b/m_b$, summed over the springs $i$ of its segments and contact samples, $k_{t}=\max(\bar{k}_n,\bar{k}_s)A$, $k_{r}=A(\bar{k}_n|\mathbf{r}\times\mathbf{n}|^2+\bar{k}_s(|\mathbf{r}|^2+(\mathbf{r}\cdot\mathbf{n})^2))$ with $\mathbf{r}$ the arm from the centroid, and $P_b$ the Poisson row-sum bound of :yref:`RdemPoissonEngine`; $\omega_{max}\le\max_b\omega_b$. It leaves the dashpots out: at 0.37–0.44 of the undamped limit it is already about where critical dashpots put the limit (0.41 of it), and the law's caps keep the dashpots of small blocks below critical.
 
 When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the user), a fixed ``O.dt`` above the Lanczos estimate of the springs' limit $2/\omega_{max}$ is refused when it is first seen (at the first step, or when it was changed): the step stops before the integrator moves anything and ``O.run`` raises ``RuntimeError`` with a message naming ``O.dt`` and the limit, unless ``refuseUnstableDt`` is false; if the limit falls below it later (contacts), if only the dashpots' limit is exceeded (their compression-only clamp and caps often keep such a run bounded, as the paper's 2 µs after cracking), or with the Gershgorin method, it warns once (and sets ``warned``). ``O.dt`` zero or not finite stops the run the same way.)""",
 		((Real,safety,0.8,Attr::triggerPostLoad,"Fraction of the critical step used for ``O.dt``."))
@@ -53,33 +56,36 @@ When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the
 		((Real,dashpotRate,0,(Attr::readonly|Attr::noSave),"$\\lambda_C$ of the last Lanczos estimate: largest eigenvalue of the mass-normalised contact dashpots [1/s]; 0 when no dashpot acts (a bonded assembly before it cracks)."))
 		((vector<Real>,lastSignature,,(Attr::hidden|Attr::readonly),"What the springs were at the last Lanczos estimate (reuseUnchanged; saved, so that a reloaded run takes the same decisions)."))
 		((int,reused,0,Attr::readonly,"Updates that kept the last Lanczos estimate since it was made (``reuseUnchanged``)."))
-		((Real,checkedDt,0,(Attr::hidden|Attr::readonly|Attr::noSave),"The fixed ``O.dt`` last checked against the limit [s]."))
-		((bool,contactBound,false,,"Also allow for the contacts that blocks can still make (scenes with a collider, ``rdem.engines(recontact=True)``): every free block that carries no bond gets the terms of a flush contact on each of its six faces, at its own stiffness per area (doc/theory.md §6). Without it the step follows only the contacts that exist: none for a falling block, and a step set while a corner touches is unstable once a face lands."))
+		((Real,checkedDt,0,(Attr::hidden|Attr::readonly),"The fixed ``O.dt`` last checked against the limit [s] (saved, as everything the next steps depend on: a reloaded run takes the same decisions)."))
+		((long,brokenAtEstimate,0,(Attr::hidden|Attr::readonly),"Springs broken when the last estimate was made (a break triggers a new one; saved)."))
+		((bool,contactBound,false,,"Also allow for the contacts that blocks can still make (scenes with a collider, ``rdem.engines(recontact=True)``): every free block that carries no bond gets the terms of a flush contact on each of its six faces, at its own stiffness per area (:ref:`theory §6 <rdem-theory-6>`). Without it the step follows only the contacts that exist: none for a falling block, and a step set while a corner touches is unstable once a face lands."))
+		((shared_ptr<RdemSharedState>,shared,,,"What the plugin's engines share (:yref:`RdemSharedState`: a spring that breaks triggers a new estimate; handed by ``rdem.engines()``; None: the law's, taken at the first step)."))
 		((Real,criticalDt,0,Attr::readonly,"Last estimate of the critical time step, without the safety factor [s]."))
-		((bool,contactLimit,true,,"While contacts act or can form (a contact sample, a broken spring, or with ``contactBound`` a free block without bonds), keep the automatic step below the Gershgorin bound too: ``O.dt = safety·min(criticalDt, contactDt)``. Contacts that form between two estimates bring their critical dashpots (eq. 13, $h=1$), whose limit, 0.41 of the undamped one for one oscillator, the estimate has not seen; the Gershgorin bound lies at 0.37–0.44 of the undamped limit. At 0.8 of the Lanczos limit the law's dashpot caps bind on such contacts and the contact dynamics change with the step (doc/stability.md: a rocking block that no longer overturns, a dry wall that falls below its tilt limit). A bonded assembly before its first break keeps the tight step."))
+		((bool,contactLimit,true,,"While contacts act or can form (a contact sample, a broken spring, or with ``contactBound`` a free block without bonds), keep the automatic step below the Gershgorin bound too: ``O.dt = safety·min(criticalDt, contactDt)``. Contacts that form between two estimates bring their critical dashpots (eq. 13, $h=1$), whose limit, 0.41 of the undamped one for one oscillator, the estimate has not seen; the Gershgorin bound lies at 0.37–0.44 of the undamped limit. At 0.8 of the Lanczos limit the law's dashpot caps bind on such contacts and the contact dynamics change with the step (measured: a rocking block that no longer overturns, a dry wall that falls below its tilt limit). A bonded assembly before its first break keeps the tight step."))
 		((Real,contactDt,0,(Attr::readonly|Attr::noSave),"The Gershgorin bound applied by ``contactLimit`` at the last automatic step [s]; inf while no contact can act (not computed for a fixed ``O.dt``)."))
-		((Real,springCriticalDt,0,(Attr::readonly|Attr::noSave),"Critical step of the springs alone, $2/\\omega_{max}$, of the last estimate [s]: a fixed ``O.dt`` above it is refused; one between ``criticalDt`` (with the contact dashpots) and it only warns."))
+		((Real,springCriticalDt,0,Attr::readonly,"Critical step of the springs alone, $2/\\omega_{max}$, of the last estimate [s]: a fixed ``O.dt`` above it is refused; one between ``criticalDt`` (with the contact dashpots) and it only warns."))
 		((bool,warned,false,(Attr::readonly|Attr::noSave),"Whether the too-large ``O.dt`` warning was printed (once per engine)."))
 		,
 		/* ctor */,
 		.def("estimate",&RdemTimeStepper::estimatePy,(py::arg("method")=""),"Critical time step of the current scene [s], without the safety factor, by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``).")
+		.def("stiffnessTimes",&RdemTimeStepper::stiffnessTimes,(py::arg("x")),"$K\\mathbf{x}$ [N, N·m], $K$ the linear stiffness of the current configuration that the estimate uses (the sources' terms, :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` and :yref:`RdemPoissonEngine`, plus the contacts to come with ``contactBound``), $\\mathbf{x}$ 6 values per body id: displacement [m] and small rotation [rad] in global axes (tests/yade/test_stiffness_source.py checks it against the forces).")
 	);
 	// clang-format on
 	DECLARE_LOGGER;
 
 private:
-	Real gershgorin(Scene* scene) const;
+	Real gershgorin(Scene* scene);
 	Real lanczos(Scene* scene);
 	void checkFixedDt(Scene* scene);
 	/// The step for which the dashpots are capped as the law caps them (Law2…::dashpotCap): O.dt when the estimate
 	/// is made, 0 (no cap) if O.dt is not yet set [s]. A step chosen larger than it lowers the caps, so the estimate holds.
 	Real capDt = 0;
-	/// Springs broken when the last estimate was made (a break triggers a new one).
-	long brokenAtEstimate = 0;
 	/// Whether a contact acts or can form: a contact sample, a broken spring, or (contactBound) a free block without bonds.
-	bool contactsPossible(Scene* scene) const;
+	bool contactsPossible(Scene* scene);
 	/// What K depends on besides the poses (reuseUnchanged).
-	vector<Real> springSignature(Scene* scene) const;
+	vector<Real> springSignature(Scene* scene);
+	/// Restoring springs broken so far in the scene (RdemSharedState).
+	long brokenSprings(Scene* sc) { return RdemSharedState::of(sc, shared).brokenSprings(); }
 };
 REGISTER_SERIALIZABLE(RdemTimeStepper);
 

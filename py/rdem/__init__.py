@@ -3,9 +3,9 @@
 Typical use inside a YADE script (``yade script.py`` with the launcher made by the build)::
 
     from yade import *
-    import rdem
+    from yade import rdem
     mat = O.materials.append(RdemMat(young=30e9, poisson=0.2, density=2300, tensileStrength=4.5e6))
-    O.engines = rdem.engines(segmentsPerEdge=2, poisson='paper')
+    O.engines = rdem.engines(segmentsPerEdge=2, formulation='paper')
     ids = rdem.blockGrid((10, 10, 10), (0.02, 0.02, 0.02), material=mat)
     rdem.bond(ids)
     rdem.poissonEngine().build(ids)
@@ -32,12 +32,12 @@ except ModuleNotFoundError as e:  # plain Python: only the YADE-free modules (rd
 	_yade = None
 
 if _yade is not None:
-	from .build import block, blockGrid, bond, bondPairs, engines, run, poissonEngine, newtonIntegrator, timeStepper, law, geomFunctor, contactGate
+	from .build import block, blockGrid, bond, bondPairs, engines, run, poissonEngine, newtonIntegrator, timeStepper, law, geomFunctor, contactGate, collider
 	from . import masonry, earthquake
 	from .measure import segmentTable, bondSnapshot, brokenSegments, breakCounts, apparentPoisson
 	from .export import CrackExport
 
 __all__ = ['wallLayout', 'WallLayout', 'buildingLayout', 'BuildingLayout', 'ground_motion'] + ([
-        'block', 'blockGrid', 'bond', 'bondPairs', 'masonry', 'earthquake', 'engines', 'run', 'poissonEngine', 'newtonIntegrator', 'timeStepper', 'law', 'geomFunctor', 'contactGate', 'segmentTable', 'bondSnapshot', 'brokenSegments', 'breakCounts',
+        'block', 'blockGrid', 'bond', 'bondPairs', 'masonry', 'earthquake', 'engines', 'run', 'poissonEngine', 'newtonIntegrator', 'timeStepper', 'law', 'geomFunctor', 'contactGate', 'collider', 'segmentTable', 'bondSnapshot', 'brokenSegments', 'breakCounts',
         'apparentPoisson', 'CrackExport'
 ] if _yade is not None else [])

@@ -2,15 +2,15 @@
 
 Every effect is a separate piece of the engine list, so a scene pays only for what it uses: no collider when no spring
 can break (all strengths infinite) and ``recontact=False``, a collider kept dead by :yref:`RdemContactGate` until a
-spring breaks, no Poisson engine when ``poisson=None``.
+spring breaks, no Poisson engine when ``formulation=None``.
 """
 import math
 from yade import O, utils, Vector3, Quaternion
 from yade.wrapper import (Body, RdemBlock, RdemMat, RdemJoint, ForceResetter, InsertionSortCollider, Bo1_Box_Aabb, InteractionLoop, Ig2_RdemBlock_RdemBlock_RdemGeom,
                           Ip2_RdemMat_RdemMat_RdemPhys, Law2_RdemGeom_RdemPhys_FaceSprings, RdemPoissonEngine, RdemCellStrainUpdater, RdemTimeStepper,
-                          NewtonIntegrator, RdemContactGate, RdemFiniteGuard, RdemForceAssembler)
+                          NewtonIntegrator, RdemContactGate, RdemFiniteGuard, RdemForceAssembler, RdemLeapfrogEnergy, RdemSharedState)
 
-#: The values of ``engines(poisson=...)``: the formulation of the springs (:yref:`Ip2_RdemMat_RdemMat_RdemPhys.formulation`, the
+#: The values of ``engines(formulation=...)``: the formulation of the springs (:yref:`Ip2_RdemMat_RdemMat_RdemPhys.formulation`, the
 #: scene's one setting) and whether there is a Poisson engine. Without one the springs are the paper's.
 POISSON_MODES = {None: ('paper', False), 'off': ('paper', False), 'paper': ('paper', True), 'consistent': ('consistent', True)}
 
@@ -66,47 +66,62 @@ def blockGrid(counts, sizes, material, origin=(0, 0, 0), orientation=Quaternion.
 	return O.bodies.append(bodies)
 
 
-def _functor(cls, dispatcher, hint):
-	"""The functor of class ``cls`` in the ``dispatcher`` of the InteractionLoop of O.engines; RuntimeError with ``hint``."""
-	for e in O.engines:
-		if isinstance(e, InteractionLoop):
-			for f in getattr(e, dispatcher).functors:
-				if isinstance(f, cls):
-					return f
-	raise RuntimeError('no %s in O.engines%s' % (cls.__name__, hint))
+#: The labels :func:`engines` gives its engines and functors (:yref:`Engine.label`): the helpers below, and any script,
+#: find them by these (``O.labeledEngine(label)``, or the label as a variable in a YADE script), not by scanning O.engines.
+LABELS = dict(gate='rdemGate',
+              collider='rdemCollider',
+              cellStrains='rdemCellStrains',
+              loop='rdemLoop',
+              geom='rdemIg2',
+              phys='rdemIp2',
+              law='rdemLaw2',
+              forces='rdemForces',
+              poisson='rdemPoisson',
+              stepper='rdemStepper',
+              newton='rdemNewton',
+              guard='rdemGuard',
+              energy='rdemEnergy')
 
 
-def _engine(cls, hint):
-	"""The engine of class ``cls`` in O.engines; RuntimeError with ``hint``."""
-	for e in O.engines:
-		if isinstance(e, cls):
-			return e
-	raise RuntimeError('no %s in O.engines%s' % (cls.__name__, hint))
+def _labeled(key, cls, hint):
+	"""The engine or functor that :func:`engines` labelled ``LABELS[key]``, checked to be a ``cls``; RuntimeError with ``hint``."""
+	try:
+		e = O.labeledEngine(LABELS[key])
+	except (ValueError, RuntimeError):
+		e = None
+	if not isinstance(e, cls):
+		raise RuntimeError('no %s labelled %r in O.engines (set O.engines = rdem.engines(...)%s)' % (cls.__name__, LABELS[key], hint))
+	return e
 
 
 def geomFunctor():
 	"""The :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom` of the current engine list (it makes the bonds)."""
-	return _functor(Ig2_RdemBlock_RdemBlock_RdemGeom, 'geomDispatcher', ': set O.engines = rdem.engines(...) before bonding')
+	return _labeled('geom', Ig2_RdemBlock_RdemBlock_RdemGeom, ' before bonding')
 
 
 def law():
 	"""The :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` of the current engine list."""
-	return _functor(Law2_RdemGeom_RdemPhys_FaceSprings, 'lawDispatcher', '')
+	return _labeled('law', Law2_RdemGeom_RdemPhys_FaceSprings, '')
 
 
 def poissonEngine():
 	"""The :yref:`RdemPoissonEngine` of the current engine list."""
-	return _engine(RdemPoissonEngine, ': make the engines with rdem.engines(poisson="paper" or "consistent")')
+	return _labeled('poisson', RdemPoissonEngine, ' with formulation="paper" or "consistent"')
 
 
 def contactGate():
 	"""The :yref:`RdemContactGate` of the current engine list (set ``open=True`` to run the collider from the start)."""
-	return _engine(RdemContactGate, ': make the engines with rdem.engines(recontact=True)')
+	return _labeled('gate', RdemContactGate, ' with recontact=True')
+
+
+def collider():
+	"""The :yref:`InsertionSortCollider` of the current engine list."""
+	return _labeled('collider', InsertionSortCollider, ' with recontact=True or "always"')
 
 
 def newtonIntegrator():
 	"""The :yref:`NewtonIntegrator` of the current engine list (its ``damping`` and ``gravity``)."""
-	return _engine(NewtonIntegrator, ': set O.engines = rdem.engines(...) first')
+	return _labeled('newton', NewtonIntegrator, '')
 
 
 def run(steps):
@@ -125,7 +140,7 @@ def run(steps):
 
 def timeStepper():
 	"""The :yref:`RdemTimeStepper` of the current engine list."""
-	return _engine(RdemTimeStepper, '')
+	return _labeled('stepper', RdemTimeStepper, '')
 
 
 def _aabb(b):
@@ -230,7 +245,7 @@ def _aligned(a, b):
 
 
 def engines(segmentsPerEdge=2,
-            poisson='paper',
+            formulation='paper',
             corotational=False,
             recontact=True,
             damping=0.0,
@@ -240,16 +255,18 @@ def engines(segmentsPerEdge=2,
             verletDist=None,
             finiteGuard=True,
             failureStress='spring',
-            contactSamples=None,
+            contactSamples=1,
             softening=False,
             strengthCoV=0.0,
             strengthPerSegment=False,
             stiffnessCoV=0.0,
-            seed=0):
-	"""The engine list of a refined-DEM scene.
+            seed=0,
+            **removed):
+	"""The engine list of a refined-DEM scene. Every engine and functor carries a label of :data:`LABELS` (``rdemNewton``,
+	``rdemPoisson``, ...), by which :func:`poissonEngine`, :func:`newtonIntegrator` and the others find it.
 
 	:param segmentsPerEdge: $n$, each bonded face carries $n\\times n$ springs (paper: 2).
-	:param poisson: ``'paper'`` (springs $E/(1-\\nu^2)$ + $D_p$ elements on $2\\times2\\times2$ grids, as published), ``'consistent'``
+	:param formulation: ``'paper'`` (springs $E/(1-\\nu^2)$ + $D_p$ elements on $2\\times2\\times2$ grids, as published), ``'consistent'``
 	    (springs $\\lambda+2\\mu$ + $D_p$ elements on grids, Poisson cells on any other layout: the full isotropic tensor, see
 	    doc/theory.md §5.2, §5.4) or ``None`` (refined DEM without the Poisson effect, springs as in the paper).
 	:param corotational: remove rigid rotations of the Poisson elements (needed for large rotations).
@@ -264,13 +281,17 @@ def engines(segmentsPerEdge=2,
 	:param verletDist: collider sweep distance [m] (default: none, the collider runs every step; set it to about 5 % of the
 	    block size for speed).
 	:param contactSamples: $m$, sample grid of the contacts of blocks that are not bonded, $(m+1)^2$ points per face
-	    (:yref:`Ig2_RdemBlock_RdemBlock_RdemGeom.contactSamplesPerEdge`); ``None``: ``segmentsPerEdge``; 1: the vertices only, as
-	    UDEC and 3DEC, which makes rocking impacts follow Housner's (doc/theory.md §4.2): use it for rocking, overturning
-	    and collapse.
+	    (:yref:`Ig2_RdemBlock_RdemBlock_RdemGeom.contactSamplesPerEdge`). 1 (default): the vertices, as UDEC and 3DEC, which
+	    makes rocking impacts dissipate what Housner's theory says (doc/theory.md §4.2), with the face grid of
+	    ``segmentsPerEdge`` for the contacts of faces that cross (no vertex of either block inside the other); $m > 1$: a
+	    face grid (inner samples store impact energy and give it back: +6 to +8 % energy kept at a rocking impact);
+	    ``None``: ``segmentsPerEdge``.
 	:param failureStress: ``'spring'`` (default, the paper's): restoring springs break on their own stresses (eqs. 15-16);
 	    ``'total'``: on the total normal stress of the face, springs plus Poisson cells
-	    (:yref:`Law2_RdemGeom_RdemPhys_FaceSprings.totalStress`, doc/theory.md §5.6; needs ``poisson='consistent'`` and
-	    cells: set ``rdem.poissonEngine().elements = 'cells'`` before ``build`` on a grid).
+	    (:yref:`Law2_RdemGeom_RdemPhys_FaceSprings.totalStress`, doc/theory.md §5.6; needs ``formulation='consistent'`` and
+	    cells, which ``rdem.poissonEngine().build`` then chooses).
+	:param poisson: not a parameter (it was the formulation's name, which ``poisson``, Poisson's ratio everywhere else,
+	    made a surprise): refused with a TypeError naming ``formulation``.
 	:param softening: ``False`` (default): the paper's brittle springs; ``True``: softening springs (tension, cohesion and
 	    a compression cap that soften with the fracture energies of the :yref:`RdemJoint` or :yref:`RdemMat`, the energy per
 	    unit crack area independent of the block size: :yref:`Ip2_RdemMat_RdemMat_RdemPhys.softening`, doc/theory.md §2.1).
@@ -282,8 +303,13 @@ def engines(segmentsPerEdge=2,
 	:param seed: seed of the random factors; a fixed seed reproduces a scene bit for bit.
 	:param finiteGuard: append :yref:`RdemFiniteGuard` after the integrator: the run stops at the first NaN or infinite
 	    position, velocity or force, naming the body and interactions (costs < 1 % of a step)."""
-	if poisson not in POISSON_MODES:
-		raise ValueError('poisson = %r: must be one of %s' % (poisson, sorted(k for k in POISSON_MODES if k)))
+	if 'poisson' in removed:
+		raise TypeError("rdem.engines(poisson=%r): the formulation's keyword is formulation=, e.g. rdem.engines(formulation=%r) "
+		                "('paper', 'consistent' or None); poisson is Poisson's ratio (RdemMat.poisson)" % (removed['poisson'], removed['poisson']))
+	if removed:
+		raise TypeError('rdem.engines() got an unexpected keyword argument %r' % sorted(removed)[0])
+	if formulation not in POISSON_MODES:
+		raise ValueError('formulation = %r: must be one of %s or None' % (formulation, sorted(k for k in POISSON_MODES if k)))
 	if not (isinstance(segmentsPerEdge, int) and segmentsPerEdge >= 1):
 		raise ValueError('segmentsPerEdge = %r: must be an integer >= 1' % (segmentsPerEdge, ))
 	if not (0 <= damping < 1):
@@ -298,32 +324,38 @@ def engines(segmentsPerEdge=2,
 		raise ValueError('gravity = %r: must be 3 finite numbers [m/s2]' % (gravity, ))
 	if failureStress not in ('spring', 'total'):
 		raise ValueError("failureStress = %r: must be 'spring' or 'total'" % (failureStress, ))
-	if failureStress == 'total' and poisson != 'consistent':
-		raise ValueError("failureStress = 'total' needs poisson = 'consistent' (the total stress of a face comes from the Poisson cells), not %r" % (poisson, ))
-	formulation, withPoisson = POISSON_MODES[poisson]
+	if failureStress == 'total' and formulation != 'consistent':
+		raise ValueError("failureStress = 'total' needs formulation = 'consistent' (the total stress of a face comes from the Poisson cells), not %r" % (formulation, ))
+	formulation, withPoisson = POISSON_MODES[formulation]
 	if contactSamples is not None and not (isinstance(contactSamples, int) and contactSamples >= 1):
 		raise ValueError('contactSamples = %r: must be an integer >= 1 (or None: segmentsPerEdge)' % (contactSamples, ))
-	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0)], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), strengthCoV=strengthCoV, strengthPerSegment=bool(strengthPerSegment), stiffnessCoV=stiffnessCoV, seed=int(seed))],
-	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True, totalStress=failureStress == 'total')])
+	L = LABELS
+	# one RdemSharedState for every engine and functor of the plugin: the crack state, the deferred forces' record, the travel
+	shared = RdemSharedState()
+	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0, shared=shared, label=L['geom'])], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), strengthCoV=strengthCoV, strengthPerSegment=bool(strengthPerSegment), stiffnessCoV=stiffnessCoV, seed=int(seed), label=L['phys'])],
+	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True, totalStress=failureStress == 'total', shared=shared, label=L['law'])], label=L['loop'])
 	eng = [ForceResetter()]
 	if recontact not in (True, False, 'always'):
 		raise ValueError("recontact = %r: must be True, False or 'always'" % (recontact, ))
 	if recontact is True:
-		eng.append(RdemContactGate())
+		eng.append(RdemContactGate(shared=shared, label=L['gate']))
 	if recontact:
-		eng.append(InsertionSortCollider([Bo1_Box_Aabb()], verletDist=verletDist if verletDist is not None else 0.0))
+		eng.append(InsertionSortCollider([Bo1_Box_Aabb()], verletDist=verletDist if verletDist is not None else 0.0, label=L['collider']))
 	if withPoisson and formulation == 'consistent':
-		eng.append(RdemCellStrainUpdater())  # Poisson cells of layouts that are not grids: strains before the law reads them
-	eng += [loop, RdemForceAssembler()]  # forces summed per body in a fixed order: O.load continues bit for bit
+		eng.append(RdemCellStrainUpdater(shared=shared, label=L['cellStrains']))  # Poisson cells of layouts that are not grids: strains before the law reads them
+	eng += [loop, RdemForceAssembler(shared=shared, label=L['forces'])]  # forces summed per body in a fixed order: O.load continues bit for bit
 	if withPoisson:
-		eng.append(RdemPoissonEngine(corotational=corotational))
+		eng.append(RdemPoissonEngine(corotational=corotational, shared=shared, label=L['poisson']))
 	# The automatic step is 0.8 of the tight (Lanczos) limit, also below the Gershgorin bound while contacts act or can form
-	# (RdemTimeStepper.contactLimit); a fixed step is checked against the Lanczos estimate, refused above it (doc/stability.md)
+	# (RdemTimeStepper.contactLimit); a fixed step is checked against the Lanczos estimate, refused above it
 	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None, contactBound=bool(recontact),
-	                          method='lanczos')
-	eng += [stepper, NewtonIntegrator(damping=damping, gravity=Vector3(gravity))]
+	                          method='lanczos', shared=shared, label=L['stepper'])
+	newton = NewtonIntegrator(damping=damping, gravity=Vector3(gravity), label=L['newton'])
+	eng += [stepper, newton]
 	if finiteGuard:
-		eng.append(RdemFiniteGuard())
+		eng.append(RdemFiniteGuard(label=L['guard']))
+	# with O.trackEnergy, the kinetic energy and the damping's work booked so that O.energy's total balances exactly
+	eng.append(RdemLeapfrogEnergy(integrator=newton, label=L['energy']))
 	if dt is not None:
 		O.dt = dt
 	return eng

@@ -2,7 +2,7 @@
 (:func:`rdem.building_layout.buildingLayout`), appends its blocks to ``O.bodies`` and bonds the touching pairs, each kind of
 joint with its :yref:`RdemJoint`.
 
-Typical use (after ``O.engines = rdem.engines(poisson='consistent', contactSamples=1, gravity=(0, 0, -9.81))``)::
+Typical use (after ``O.engines = rdem.engines(formulation='consistent', contactSamples=1, gravity=(0, 0, -9.81))``)::
 
     brick = RdemMat(young=16.7e9, poisson=0.15, density=1800, tensileStrength=3e6, label='brick')
     mortar = RdemJoint(young=2e9, poisson=0.25, tensileStrength=0.2e6, cohesion=0.3e6, frictionAngle=math.atan(0.75))

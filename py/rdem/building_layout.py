@@ -93,6 +93,7 @@ class Storey:
 
 	@property
 	def top(self):
+		"""Height of the storey's top [m]: ``z0 + height``."""
 		return self.z0 + self.height
 
 	def __repr__(self):

@@ -3,7 +3,7 @@ pulses) applied to a scene by :yref:`RdemGroundShaker` (doc/earthquake.md).
 
 Typical use::
 
-    from rdem import ground_motion as gm
+    from yade.rdem import ground_motion as gm
     motion = gm.GroundMotion(x=gm.readAT2('RSN6_IMPVALL.I_I-ELC180.AT2').baselineCorrected(2))
     rdem.earthquake.shaker(motion, ids=w.beams['base'])          # the base beam moves with the ground
     O.run(int(motion.duration / O.dt))
@@ -59,7 +59,7 @@ def shaker(motion, ids=None, mode='prescribed', scale=1.0):
 
 class DryWall:
 	"""A free-standing brick wall laid dry (no mortar), one block per brick, on a fixed base block: every bed and head
-	joint and the wall's footing are contacts, sampled at the vertices (``contactSamples=1``, doc/theory.md §4.2), with
+	joint and the wall's footing are contacts, sampled at the vertices (``contactSamples=1``, :ref:`theory §4.2 <rdem-theory-4-2>`), with
 	critical dashpots (``dampingConstant``) and Coulomb friction; nothing is bonded. The masonry spans
 	$x\\in[0, L]$, $y\\in[0, t]$, $z\\in[0, H]$ (:func:`rdem.wall_layout.wallLayout` with ``joint=0``); the base
 	reaches ``baseMargin`` beyond the wall's foot on every side and beyond its head once it has fallen towards $+y$
@@ -92,7 +92,7 @@ class DryWall:
 		self.material = O.materials.append(
 		        RdemMat(young=young, poisson=poisson, density=density, tensileStrength=float('inf'), cohesion=float('inf'), frictionAngle=math.atan(friction),
 		                dampingNormal=dampingConstant, dampingShear=dampingConstant, label='brick'))
-		O.engines = build.engines(poisson=None, recontact='always', contactSamples=contactSamples, gravity=(0, 0, -gravity))
+		O.engines = build.engines(formulation=None, recontact='always', contactSamples=contactSamples, gravity=(0, 0, -gravity))
 		L, H, t = self.layout.length, self.layout.height, self.layout.thickness
 		margin, depth = baseMargin, 0.05  # [m] the base reaches this far beyond the wall's foot and its head once fallen; its thickness
 		lo, hi = Vector3(-margin, -margin, -depth), Vector3(L + margin, t + H + margin, 0)

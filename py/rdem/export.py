@@ -45,6 +45,7 @@ class CrackExport:
 		self.snapshot = measure.bondSnapshot()  # the bonds of the scene when the export starts
 
 	def write(self):
+		"""Write the files of the current step: the broken segments and, if the scene has a Poisson engine, its elements."""
 		self._cracks()
 		try:
 			self._poisson(build.poissonEngine())

@@ -6,7 +6,7 @@ has broken through and opened, by ``GlExtra_RdemReleasedBonds``; the Poisson
 elements by ``GlExtra_RdemPoissonElements`` (off unless asked for). A YADE built without its GUI (``tools/setup.sh``
 without ``--gui``), ``yade -n`` or a missing display leave :func:`available` false; scripts then run headless::
 
-    from rdem import gui
+    from yade.rdem import gui
     if gui.available():
         gui.view()                  # a 3D view beside the controller YADE opens by itself
     gui.run(nSteps)                 # rdem.run(nSteps); with a view, O.run(nSteps) while the view draws

@@ -1,14 +1,14 @@
 """Masonry walls as refined-DEM scenes: :func:`wall` lays out a wall of bricks and mortar (:mod:`rdem.wall_layout`), appends
 its blocks to ``O.bodies`` and bonds them, every joint with its :yref:`RdemJoint`.
 
-Typical use (after ``O.engines = rdem.engines(poisson='consistent')``)::
+Typical use (after ``O.engines = rdem.engines(formulation='consistent')``)::
 
     brick = RdemMat(young=16.7e9, poisson=0.15, density=1800, tensileStrength=3e6, label='brick')
     mortar = RdemJoint(young=2e9, poisson=0.25, tensileStrength=0.2e6, cohesion=0.3e6, frictionAngle=math.atan(0.8))
     w = rdem.masonry.wall(1.51, 0.975, 0.12, bond='running', brickMaterial=brick, jointMaterial=mortar, topBeam=0.1, baseBeam=0.1)
     rdem.poissonEngine().build(w.ids)
 
-Joints (doc/theory.md §1.1, doc/wall-layout.md): with ``mortar='interface'`` every brick reaches the mid-planes of its joints
+Joints (:ref:`theory §1.1 <rdem-theory-1-1>`, doc/wall-layout.md): with ``mortar='interface'`` every brick reaches the mid-planes of its joints
 and each bed, head and collar bond puts brick, mortar and brick in series (:yref:`RdemJoint` of thickness $t$); with
 ``mortar='layer'`` the mortar is made of blocks of its own (so that its Poisson expansion acts on the bricks) and the
 brick–mortar bonds are interfaces of zero thickness with the joint's strengths. Blocks of one brick are bonded directly
@@ -205,3 +205,4 @@ def wall(length,
 
 
 from .building import building, Building  # noqa: E402  (rdem.masonry.building: a whole building of such walls)
+from .arch import arch, Arch  # noqa: E402  (rdem.masonry.arch: arches and barrel vaults of voussoirs)

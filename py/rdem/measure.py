@@ -100,7 +100,7 @@ def engineShare(engineClass, steps, repeats=3):
 def totalNormalStress(I):
 	"""Total normal stress of a bond's face in the last step, tension > 0 [Pa]: its springs' largest σ plus the Poisson
 	cells' normal stress on it, (c₁S₁ + c₂S₂)/(w_n A) (:yref:`RdemState.cellStress`, :yref:`RdemPhys.cellCoef1`), what the
-	springs break on with :yref:`Law2_RdemGeom_RdemPhys_FaceSprings.totalStress` (doc/theory.md §5.6)."""
+	springs break on with :yref:`Law2_RdemGeom_RdemPhys_FaceSprings.totalStress` (:ref:`theory §5.6 <rdem-theory-5-6>`)."""
 	g, p = I.geom, I.phys
 	a, b = O.bodies[I.id1].state, O.bodies[I.id2].state
 	ax1 = max(range(3), key=lambda k: abs(g.segNormal1[k]))

@@ -26,8 +26,8 @@ def rotationalInertiaScale(halfExtents):
 	order given) that makes the rotational terms of its Gershgorin row no larger than its translational ones:
 
 	every spring $i$ on the block's faces has an arm $|\\mathbf r_i|^2 \\le a^2 + b^2 + c^2$ from the centroid, so its
-	rotational stiffness $k_{r,i} = A(\\bar k_n |\\mathbf r\\times\\mathbf n|^2 + \\bar k_s (|\\mathbf r|^2 + (\\mathbf r\\cdot
-	\\mathbf n)^2)) \\le 3 k_{t,i} |\\mathbf r_i|^2$ with $k_{t,i} = \\max(\\bar k_n, \\bar k_s) A$ (RdemTimeStepper's
+	rotational stiffness
+	$k_{r,i} = A(\\bar k_n |\\mathbf r\\times\\mathbf n|^2 + \\bar k_s (|\\mathbf r|^2 + (\\mathbf r\\cdot\\mathbf n)^2)) \\le 3 k_{t,i} |\\mathbf r_i|^2$ with $k_{t,i} = \\max(\\bar k_n, \\bar k_s) A$ (RdemTimeStepper's
 	Gershgorin bound); with $I_{min} = m (b^2 + c^2)/3$,
 
 	.. math:: \\sum_i \\frac{k_{r,i}}{s I_{min}} \\le \\sum_i \\frac{k_{t,i}}{m} \\quad\\text{for}\\quad s = \\frac{9 (a^2 + b^2 + c^2)}{b^2 + c^2}.

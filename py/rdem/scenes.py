@@ -14,7 +14,11 @@ from . import build, measure
 
 
 class CompressionTest:
-	"""Build the compression scene into the current (empty) scene. Lengths in m, stresses in Pa, rate in m/s, time in s."""
+	"""Build the compression scene into the current (empty) scene. Lengths in m, stresses in Pa, rate in m/s, time in s.
+
+	``contactSamples``: the sample grid of the contacts between blocks that are not bonded; ``None``: ``segmentsPerEdge``,
+	the grid with which the paper's fixed ``dt`` of 2 µs was validated (not ``rdem.engines``' vertices: their corner
+	contacts need a smaller step, which ``dt=None`` takes)."""
 
 	def __init__(self,
 	             blocksPerEdge=10,
@@ -33,7 +37,8 @@ class CompressionTest:
 	             plateYoung=None,
 	             platePoisson=None,
 	             rate=1.0e-3,
-	             dt=2.0e-6):
+	             dt=2.0e-6,
+	             contactSamples=None):
 		if not (isinstance(blocksPerEdge, int) and blocksPerEdge >= 2):
 			raise ValueError('blocksPerEdge = %r: must be an integer >= 2' % (blocksPerEdge, ))
 		for name, value in (('size', size), ('plateHeight', plateHeight), ('rate', rate)):
@@ -75,8 +80,13 @@ class CompressionTest:
 			O.materials.append(self.plateMaterial)
 		breakable = tensileStrength < float('inf') or cohesion < float('inf')
 		h = size / blocksPerEdge
+		# Contacts of blocks that are not bonded on the face grid of the springs, unless told: the paper's fixed 2 µs step
+		# was validated with it. With rdem.engines' vertex samples the corners of diagonal neighbours that touch after
+		# the first crack are four times stiffer, the critical step falls to 1.89 µs, and at 2 µs the cube blows apart
+		# (doc/defaults.md); with dt=None the time stepper follows them.
 		O.engines = build.engines(segmentsPerEdge=segmentsPerEdge,
-		                          poisson=formulation,
+		                          contactSamples=contactSamples if contactSamples is not None else segmentsPerEdge,
+		                          formulation=formulation,
 		                          corotational=corotational,
 		                          recontact=breakable,
 		                          dt=dt,
@@ -135,16 +145,17 @@ class CompressionTest:
 
 
 class MasonryPrism:
-	"""A stack-bonded masonry prism with mortar layers of their own (the *layer* model, doc/theory.md §1.1, §5.5): ``courses``
+	"""A stack-bonded masonry prism with mortar layers of their own (the *layer* model, :ref:`theory §1.1 <rdem-theory-1-1>`, :ref:`theory §5.5 <rdem-theory-5-5>`): ``courses``
 	bricks of height ``brickHeight`` and ``courses - 1`` mortar layers of thickness ``mortarThickness``, all of the same
 	``width`` × ``width`` cross-section, each brick cut into ``blocks`` × ``blocks`` × ``blocksPerBrickHeight`` blocks and
 	each mortar layer into ``blocks`` × ``blocks`` × 1, between a bottom (fixed) and a top (loading) plate of one plate
-	block per column (free across the load: frictionless platens). Consistent formulation with Poisson cells, springs
-	breaking on the total normal stress of their face (``failureStress='total'``); brick–mortar faces are
+	block per column (free across the load: frictionless platens). Consistent formulation with Poisson cells (what
+	:yref:`RdemPoissonEngine.elements` ``'auto'`` chooses for two materials), springs breaking on the total normal stress
+	of their face (``failureStress='total'``, or ``'spring'``: the paper's criterion, the default of ``rdem.engines``); brick–mortar faces are
 	:yref:`RdemJoint` interfaces of thickness 0 with the bond's strengths. Lengths in m, stresses in Pa, rate in m/s.
 
 	:meth:`lateralStrain` measures the lateral strain of the middle brick's interior, :meth:`closedForm` gives that of an
-	infinite stack of the same layers (doc/theory.md §5.5)."""
+	infinite stack of the same layers (:ref:`theory §5.5 <rdem-theory-5-5>`)."""
 
 	def __init__(self,
 	             brick,
@@ -159,7 +170,8 @@ class MasonryPrism:
 	             plateHeight=0.02,
 	             rate=0.02,
 	             segmentsPerEdge=2,
-	             damping=0.0):
+	             damping=0.0,
+	             failureStress='total'):
 		for name, value in (('width', width), ('brickHeight', brickHeight), ('mortarThickness', mortarThickness), ('plateHeight', plateHeight), ('rate', rate)):
 			if not (math.isfinite(value) and value > 0):
 				raise ValueError('%s = %r: must be finite and > 0 [m, m/s]' % (name, value))
@@ -180,7 +192,7 @@ class MasonryPrism:
 		for m in (brick, mortar, self.plateMaterial):
 			if m.id < 0:
 				O.materials.append(m)
-		O.engines = build.engines(segmentsPerEdge=segmentsPerEdge, poisson='consistent', damping=damping, failureStress='total', recontact=True)
+		O.engines = build.engines(segmentsPerEdge=segmentsPerEdge, formulation='consistent', damping=damping, failureStress=failureStress, recontact=True)
 		d = width / blocks
 		z = 0.0
 		self.bottom = build.blockGrid((blocks, blocks, 1), (d, d, plateHeight), self.plateMaterial, origin=(0, 0, -plateHeight))
@@ -219,8 +231,7 @@ class MasonryPrism:
 		build.bondPairs(platePairs)
 		for i in self.bottom + self.top:
 			O.bodies[i].state.blockedDOFs = 'zXYZ'  # frictionless platens, before the cells: they are half cells
-		build.poissonEngine().elements = 'cells'
-		build.poissonEngine().build(self.ids)
+		build.poissonEngine().build(self.ids)  # 'auto': cells, since brick and mortar differ
 		for i in self.top:
 			O.bodies[i].state.vel = Vector3(0, 0, -rate)
 		self.area = width * width
@@ -271,7 +282,7 @@ class MasonryPrism:
 
 	def closedForm(self):
 		"""Lateral strain per unit compressive stress of an infinite stack of the prism's brick and mortar layers under uniform
-		vertical stress, bonded (equal lateral strain e in all layers, zero mean lateral stress) [1/Pa] (doc/theory.md §5.5):
+		vertical stress, bonded (equal lateral strain e in all layers, zero mean lateral stress) [1/Pa] (:ref:`theory §5.5 <rdem-theory-5-5>`):
 		e/σ = Σ t_i λ_i/M_i / Σ t_i (2(λ_i + μ_i) - 2λ_i²/M_i), over one period of the stack."""
 		num = den = 0.0
 		for m, t in ((self.brick, self.layers[0][2] - self.layers[0][1]), (self.mortar, self.layers[1][2] - self.layers[1][1])):
@@ -286,13 +297,13 @@ class RockingBlock:
 	"""Housner's rigid block (Housner 1963, Bull. Seismol. Soc. Am. 53(2):403-417): a block of half-width ``b``, half-height
 	``h`` and half-depth ``depth`` standing on a fixed base block, the two touching through sampled contacts only (no bond),
 	released at rest tilted by ``theta0`` about its +x corner (positive: resting on that corner). Contact springs with
-	critical dashpots (eq. 13, ``dampingConstant``) and Coulomb friction; the contact sample grid ``contactSamples`` (1: the
-	vertices, doc/theory.md §4.2). Lengths in m, angles in rad, SI units.
+	critical dashpots (eq. 13, ``dampingConstant``) and Coulomb friction; the contact sample grid ``contactSamples`` (None:
+	``rdem.engines``' default, the vertices; :ref:`theory §4.2 <rdem-theory-4-2>`). Lengths in m, angles in rad, SI units.
 
 	:meth:`angle` is the block's rotation about y (positive: tilted onto the +x corner)."""
 
 	def __init__(self, b=0.1, h=0.5, depth=0.1, theta0=0.0, young=30e9, poisson=0.2, density=2500, friction=0.8, dampingConstant=1.0,
-	             contactSamples=1, gravity=9.81):
+	             contactSamples=None, gravity=9.81):
 		for name, value in (('b', b), ('h', h), ('depth', depth), ('young', young), ('density', density), ('gravity', gravity)):
 			if not (math.isfinite(value) and value > 0):
 				raise ValueError('%s = %r: must be finite and > 0' % (name, value))
@@ -305,7 +316,7 @@ class RockingBlock:
 		self.material = O.materials.append(
 		        RdemMat(young=young, poisson=poisson, density=density, tensileStrength=float('inf'), cohesion=float('inf'), frictionAngle=math.atan(friction),
 		                dampingNormal=dampingConstant, dampingShear=dampingConstant, label='block'))
-		O.engines = build.engines(poisson=None, recontact='always', contactSamples=contactSamples, gravity=(0, 0, -gravity))
+		O.engines = build.engines(formulation=None, recontact='always', gravity=(0, 0, -gravity), **({} if contactSamples is None else dict(contactSamples=contactSamples)))
 		# A base wide enough for the block to land on when it overturns either way (falling about a corner, it reaches 2h + b).
 		self.base = O.bodies.append(build.block((0, 0, -0.1), (2 * h + 2 * b + 0.2, depth + 0.2, 0.1), self.material, fixed=True))
 		q = Quaternion(Vector3(0, 1, 0), theta0)

@@ -4,7 +4,7 @@ beam and a top beam, a constant vertical stress $\\sigma_0$ applied first, then 
 
 Typical use (scripts/shear_wall.py does all of it with every parameter an option)::
 
-    O.engines = rdem.engines(poisson='consistent', failureStress='total', damping=0.2)
+    O.engines = rdem.engines(formulation='consistent', failureStress='total', damping=0.2)
     w = rdem.masonry.wall(1.55, 2.005, 0.38, bond='english', baseBeam=0.2, topBeam=0.2, brickMaterial=brick, jointMaterial=mortar,
                           beamMaterial=concrete)
     rdem.poissonEngine().build(w.ids)
@@ -135,7 +135,7 @@ class ShearWallTest:
 		self._weight = -s.mass * build.newtonIntegrator().gravity[2]  # the top beam's own weight [N] (gravity along -z)
 		self._load = ForceEngine(ids=[self.top], force=Vector3.Zero)
 		engines = O.engines
-		k = next(k for k, e in enumerate(engines) if isinstance(e, NewtonIntegrator))
+		k = next(k for k, e in enumerate(engines) if e.label == build.LABELS['newton'])
 		# The couple that makes the moment at the masonry's top V (H0 - H): the actuator's force acts at the beam's centroid,
 		# half the beam's height b above the masonry, which adds V b/2 (both about +y, tilting the top towards +x).
 		self._couple = TorqueEngine(ids=[self.top], moment=Vector3.Zero) if boundary == 'cantilever' else None
@@ -279,7 +279,7 @@ def scaleRotationalInertia(ids):
 def unbondJoints(wall, kind='head'):
 	"""Start the joints of one ``kind`` of ``wall`` (``'head'``, ``'bed'``, ``'collar'`` or ``'beam'``, the keys of
 	``wall.joints``) without bond: every restoring spring of their bonds in the broken state, so that these joints carry
-	compression and friction through their contact springs (doc/theory.md §3; with softening, the residual friction) and no
+	compression and friction through their contact springs (:ref:`theory §3 <rdem-theory-3>`; with softening, the residual friction) and no
 	tension or cohesion. For head joints this is the assumption of [MannMuller1982]_ in their theory of the stair-stepped
 	shear failure of masonry: head joints are not compressed while their mortar hardens, shrink away from the bricks and
 	transmit no bond. Returns the set of the pairs (smaller id, larger id) made so, to leave them out of the crack counts.

@@ -5,8 +5,8 @@
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
 /* Unit tests of pkg/rdem/math/BlockGeometry.hpp: the face shared by two oriented boxes, the depth of a face sample
-   point in a block (sampleDepth), the contact normal of a pair (contactFaceAxis) and the separating-axis overlap test
-   (blocksOverlap). Blocks are unit cubes or
+   point in a block (sampleDepth), the contact normal of a pair (contactFaceAxis), the separating-axis overlap test
+   (blocksOverlap) and the contact of two crossing edges (edgeEdgeContact). Blocks are unit cubes or
    boxes with half-extents of 0.2-3 m and coordinates O(1-10) m, so round-off is ~1e-16-1e-15 m; the 1e-12 m (1e-13 m
    after a rigid motion) tolerances leave a margin of ≥ 10² while being far below any geometric offset tested. */
 #include <pkg/rdem/math/BlockGeometry.hpp>
@@ -571,6 +571,87 @@ TEST(BlockGeometry, ContactFaceAxisAgreesWithVertexProjections)
 	EXPECT_GT(single, tested / 2); // and most of them with a clear least overlapped axis
 	// the scaling of grazing faces in sampleDepth can raise a depth a little above the pair's overlap: 1.0047 measured
 	EXPECT_LT(worstRatio, 1.05);
+}
+
+// ------------------------------------------------------------------------------------------------ edgeEdgeContact
+
+// Two unit cubes whose edges cross at right angles, sunk d into each other: A turned 45° about x (its top is an edge
+// along x at z = √2/2), B turned 45° about y (its bottom is an edge along y), B's centre at (0, 0, √2 - d).
+struct CrossedEdges {
+	Block A, B;
+};
+CrossedEdges crossedEdges(Scalar d)
+{
+	const M3 RA = rotX(M_PI / 4), RB = Eigen::AngleAxis<Scalar>(M_PI / 4, V3::UnitY()).toRotationMatrix();
+	return { cube(V3::Zero(), RA), cube(V3(0, 0, std::sqrt(Scalar(2)) - d), RB) };
+}
+
+TEST(BlockGeometry, EdgeEdgeContactOfCrossedEdges)
+{
+	// The least overlapped axis is x × y = z, overlap d, far below every face axis (their overlaps are ~0.7 m): the
+	// contact is at the crossing, the mid-point of the two edges' closest points (0, 0, √2/2 - d/2), normal +z (A to B),
+	// depth d, which is also the penetration of the vertex projections along z.
+	for (const Scalar d : { 1e-6, 1e-3, 0.01 }) {
+		SCOPED_TRACE("d = " + std::to_string(d));
+		const auto c   = crossedEdges(d);
+		const auto hit = rdem::edgeEdgeContact<Scalar>(c.A, c.B, 1e-9);
+		ASSERT_TRUE(hit.hit);
+		EXPECT_NEAR((hit.normal - V3::UnitZ()).norm(), 0, geomTol);
+		EXPECT_NEAR(hit.depth, d, geomTol);
+		EXPECT_NEAR(hit.depth, overlapAlong(c.A, c.B, V3::UnitZ()), geomTol);
+		EXPECT_NEAR((hit.point - V3(0, 0, std::sqrt(0.5) - d / 2)).norm(), 0, geomTol);
+		// from B to A: the same contact point and depth, the normal reversed
+		const auto back = rdem::edgeEdgeContact<Scalar>(c.B, c.A, 1e-9);
+		ASSERT_TRUE(back.hit);
+		EXPECT_NEAR((back.normal + V3::UnitZ()).norm(), 0, geomTol);
+		EXPECT_NEAR(back.depth, d, geomTol);
+		EXPECT_NEAR((back.point - hit.point).norm(), 0, geomTol);
+	}
+	// Crossing off the centre: B moved by (0.3, -0.2, 0) crosses A's edge at x = 0.3, 0.2 from the middle of its own
+	// (both within the edges' half-length 0.5).
+	auto c = crossedEdges(0.01);
+	c.B.pos += V3(0.3, -0.2, 0);
+	const auto hit = rdem::edgeEdgeContact<Scalar>(c.A, c.B, 1e-9);
+	ASSERT_TRUE(hit.hit);
+	EXPECT_NEAR((hit.point - V3(0.3, 0, std::sqrt(0.5) - 0.005)).norm(), 0, geomTol); // B's edge at x = 0.3, A's at y = 0
+	EXPECT_NEAR(hit.depth, 0.01, geomTol);
+}
+
+TEST(BlockGeometry, EdgeEdgeContactIsCovariantUnderARigidMotion)
+{
+	// The same crossing after a rotation Q and a translation t of both blocks: point Q p + t, normal Q n, same depth.
+	const auto  c0 = crossedEdges(0.01);
+	const auto  h0 = rdem::edgeEdgeContact<Scalar>(c0.A, c0.B, 1e-9);
+	const M3    Q  = Eigen::AngleAxis<Scalar>(1.1, V3(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
+	const V3    t(2.5, -1.0, 7.0);
+	const Block A { Q * c0.A.pos + t, Q * c0.A.rot, c0.A.half }, B { Q * c0.B.pos + t, Q * c0.B.rot, c0.B.half };
+	const auto  h = rdem::edgeEdgeContact<Scalar>(A, B, 1e-9);
+	ASSERT_TRUE(h0.hit);
+	ASSERT_TRUE(h.hit);
+	EXPECT_NEAR(h.depth, h0.depth, 1e-13);
+	EXPECT_NEAR((h.normal - Q * h0.normal).norm(), 0, 1e-13);
+	EXPECT_NEAR((h.point - (Q * h0.point + t)).norm(), 0, 1e-13);
+}
+
+TEST(BlockGeometry, EdgeEdgeContactOnlyWhereFacesCannotSee)
+{
+	const Scalar tol = 1e-9;
+	// Face to face (stacked cubes overlapping 0.1 m): the least overlap is a face axis, no edge contact.
+	EXPECT_FALSE(rdem::edgeEdgeContact<Scalar>(cube(V3::Zero()), cube(V3(0, 0, 0.9)), tol).hit);
+	// A corner in a face (B turned 45° about z and x, its lowest corner 0.05 m into A's top): a face axis is the least,
+	// the face samples see the corner.
+	const M3 R
+	        = (Eigen::AngleAxis<Scalar>(std::atan(std::sqrt(Scalar(2))), V3::UnitX()) * Eigen::AngleAxis<Scalar>(M_PI / 4, V3::UnitZ())).toRotationMatrix();
+	const Block B = cube(V3(0, 0, 0.5 + std::sqrt(0.75) - 0.05), R);
+	EXPECT_FALSE(rdem::edgeEdgeContact<Scalar>(cube(V3::Zero()), B, tol).hit);
+	// Apart (the crossed edges 0.01 m from touching) or only touching: nothing.
+	EXPECT_FALSE(rdem::edgeEdgeContact<Scalar>(crossedEdges(-0.01).A, crossedEdges(-0.01).B, tol).hit);
+	EXPECT_FALSE(rdem::edgeEdgeContact<Scalar>(crossedEdges(0).A, crossedEdges(0).B, tol).hit);
+	// The crossing beyond the end of A's edge (B moved 0.6 m along x, A's edge ends at 0.5): B's edge passes the end
+	// of A's and no edge pair crosses, so the least overlapped axis gives no point within both edges.
+	auto c = crossedEdges(0.01);
+	c.B.pos += V3(0.6, 0, 0);
+	EXPECT_FALSE(rdem::edgeEdgeContact<Scalar>(c.A, c.B, tol).hit);
 }
 
 } // namespace

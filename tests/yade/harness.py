@@ -2,7 +2,7 @@
 import sys
 import unittest
 from yade import O, Matrix3, Vector3
-import rdem
+from yade import rdem
 
 
 def run(testCase):
@@ -21,7 +21,10 @@ def freshScene():
 class EnergyBalance:
 	"""Total energy of the scene after every step, for runs with ``O.trackEnergy = True``.
 
-	YADE's ``kinetic`` is ½mv² at the mid-step velocity v_{n-1/2}, while ``rdemElastic`` and ``gravWork`` (the potential
+	(``O.energy.total()`` is the same sum, but for the kinetic energy of fully blocked bodies (a moving base), which this class
+	leaves out, since RdemLeapfrogEnergy books ``kinetic`` paired (issue #25; they agree to round-off on a free grid,
+	tests/yade/test_energy_balance.py); this class stays as the independent Python check.) NewtonIntegrator's
+	own ``kinetic`` is ½mv² at the mid-step velocity v_{n-1/2}, while ``rdemElastic`` and ``gravWork`` (the potential
 	energy of gravity, the opposite of its work) belong to the positions x_n: their sum oscillates by O(F·vΔt) in every
 	contact. The kinetic energy ½(m v_{n-1/2}·v_{n+1/2} + ω_{n-1/2}·I ω_{n+1/2}) pairs with x_n: for a linear spring
 	under the leapfrog (v_{n+1/2} = v_{n-1/2} - (k/m)x_nΔt, x_{n+1} = x_n + v_{n+1/2}Δt), ½m v_{n-1/2}v_{n+1/2} + ½k x_n²

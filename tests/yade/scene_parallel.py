@@ -1,8 +1,8 @@
 """Helper of test_assembly.testSerialEqualsOpenMP: a small breaking compression run; prints final positions as JSON."""
 import json
 from yade import O
-import rdem
-from rdem.scenes import CompressionTest
+from yade import rdem
+from yade.rdem.scenes import CompressionTest
 
 CompressionTest(blocksPerEdge=4, tensileStrength=2e6, rate=0.5, dt=2e-6)
 rdem.run(60)

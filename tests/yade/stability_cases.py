@@ -13,7 +13,7 @@ import random
 import numpy as np
 from yade import O, Vector3, Quaternion
 from yade.wrapper import RdemMat
-import rdem
+from yade import rdem
 
 E = 30e9  # concrete, paper Table 1 [Pa]
 H = 0.01  # half-size of the 2 cm blocks of the paper's §5 [m]
@@ -167,7 +167,7 @@ def grid(nu=0.2, formulation='consistent', counts=(3, 3, 3), corotational=False,
 	O.reset()
 	mat = O.materials.append(RdemMat(young=E, poisson=nu, tensileStrength=tensileStrength, cohesion=cohesion))
 	breakable = tensileStrength < INF or cohesion < INF
-	O.engines = rdem.engines(poisson=formulation, corotational=corotational, recontact=breakable, dt=1e-9)
+	O.engines = rdem.engines(formulation=formulation, corotational=corotational, recontact=breakable, dt=1e-9)
 	ids = rdem.blockGrid(counts, (2 * H, ) * 3, mat)
 	rdem.bond(ids)
 	if formulation:
@@ -182,12 +182,13 @@ def brickMortar(contrast, nx=3, ny=2):
 	O.reset()
 	brick = O.materials.append(RdemMat(young=E, poisson=0.2, tensileStrength=INF, label='brick'))
 	mortar = O.materials.append(RdemMat(young=E / contrast, poisson=0.2, tensileStrength=INF, label='mortar'))
-	O.engines = rdem.engines(poisson='consistent', recontact=False, dt=1e-9)
+	O.engines = rdem.engines(formulation='consistent', recontact=False, dt=1e-9)
 	ids, z = [], 0.0
 	for mat, height in ((brick, 0.02), (mortar, 0.004), (brick, 0.02), (mortar, 0.004), (brick, 0.02)):
 		ids += rdem.blockGrid((nx, ny, 1), (0.04, 0.02, height), mat, origin=(0, 0, z))
 		z += height
 	rdem.bond(ids)
+	rdem.poissonEngine().elements = 'hex8'  # the elements across the layers are the case (elements='auto' would take cells)
 	rdem.poissonEngine().build(ids)
 	O.trackEnergy = True
 	return ids

@@ -8,8 +8,8 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, NewtonIntegrator
-import rdem
-import rdem.build
+from yade import rdem
+from yade import rdem
 
 E, NU, H = 30e9, 0.2, 0.01
 HERE = os.path.dirname(os.path.abspath(sys.argv[0]))  # YADE runs the test file as sys.argv[0]
@@ -20,7 +20,7 @@ class Assembly(unittest.TestCase):
 	def bar(self, n=6, nu=NU):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=E, poisson=nu, tensileStrength=float('inf')))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=False, damping=0.3)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=False, damping=0.3)
 		ids = rdem.blockGrid((n, 1, 1), (2 * H, ) * 3, material=mat)
 		rdem.bond(ids)
 		return ids
@@ -58,7 +58,7 @@ class Assembly(unittest.TestCase):
 		# all blocks sum to zero every step, and the spring energy is reported.
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=E, poisson=NU, tensileStrength=float('inf')))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson='paper', recontact=False, safety=0.5)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation='paper', recontact=False, safety=0.5)
 		ids = rdem.blockGrid((3, 3, 3), (2 * H, ) * 3, material=mat)
 		rdem.bond(ids)
 		rdem.poissonEngine().build(ids)
@@ -78,7 +78,7 @@ class Assembly(unittest.TestCase):
 
 	def testEnergyConservedWithoutDamping(self):
 		ids = self.bar(n=4)
-		next(e for e in O.engines if isinstance(e, NewtonIntegrator)).damping = 0
+		rdem.newtonIntegrator().damping = 0
 		# YADE's kinetic energy uses leapfrog half-step velocities while the spring energy is at full steps: their sum
 		# oscillates by O(omega dt) without drifting (measured 1.6 % at safety 0.1, 0.2 % at 0.02): small steps here.
 		rdem.timeStepper().safety = 0.02
@@ -118,7 +118,7 @@ class Assembly(unittest.TestCase):
 		# Software prefetch (Ig2_RdemBlock_RdemBlock_RdemGeom.prefetchDistance, doc/performance.md) is a hint to the
 		# processor: the same scene must give the same bits with it off, on, and reaching past the container's end. The
 		# run cracks, makes sampled contacts, and loses a block half-way (an erased body among the prefetched ones).
-		from rdem.scenes import CompressionTest
+		from yade.rdem.scenes import CompressionTest
 		runs = {}
 		for distance in (0, -1, 8, 100000):  # off, automatic (off in so small a scene), on, past the container's end
 			harness.freshScene()

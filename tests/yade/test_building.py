@@ -13,7 +13,7 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
+from yade import rdem
 
 Q, C, T = 0.065, 0.065, 0.01  # quarter module (l + t)/4, course h + t and joint of 250x120x55 mm bricks [m]
 
@@ -48,7 +48,7 @@ class Building(unittest.TestCase):
 
 	def setUp(self):
 		harness.freshScene()
-		O.engines = rdem.engines(poisson=None, recontact=True, contactSamples=1, gravity=(0, 0, -9.81))
+		O.engines = rdem.engines(formulation=None, recontact=True, contactSamples=1, gravity=(0, 0, -9.81))
 
 	def testBlocksAndBonds(self):
 		b = house()

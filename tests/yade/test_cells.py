@@ -19,7 +19,7 @@ import unittest
 import harness
 import wall_cases as wc
 from yade import O
-import rdem
+from yade import rdem
 
 NUS = (0.15, 0.3, 0.45)
 EPS = -1e-5  # uniaxial compression

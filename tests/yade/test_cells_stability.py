@@ -14,7 +14,7 @@ import unittest
 import harness
 import wall_cases as wc
 from yade import O, Vector3
-import rdem
+from yade import rdem
 
 
 class CellsAreStable(unittest.TestCase):
@@ -31,13 +31,19 @@ class CellsAreStable(unittest.TestCase):
 			b.state.vel = Vector3(rnd.uniform(-1, 1), rnd.uniform(-1, 1), rnd.uniform(-1, 1)) * 1e-3
 			b.state.angVel = Vector3(rnd.uniform(-1, 1), rnd.uniform(-1, 1), rnd.uniform(-1, 1)) * 1e-2
 		O.trackEnergy = True
-		totals = []
+		totals, shares = [], []
 		for _ in range(200):
 			for _ in range(100):
 				O.step()
 			totals.append(O.energy.total())
+			shares.append(abs(O.energy['rdemPoisson']) / O.energy['rdemElastic'])
 		self.assertGreater(rdem.poissonEngine().nCells, 0)
-		self.assertGreater(O.energy['rdemPoisson'] ** 2, 0)  # the cells store energy
+		# The cells' energy is their quadratic form 1/2 s e^T K e over the blocks (K = V(D - M I), RdemState.cellStiffness),
+		# to round-off; it is negative here (D - M I is indefinite and the random field mostly shears) and averages
+		# 17.6 % of the springs' energy in size (measured): the cells take part, 5 % is a floor well below that.
+		cells = sum(0.5 * b.state.cellScale * b.state.strain.dot(b.state.cellStiffness * b.state.strain) for b in O.bodies)
+		self.assertAlmostEqual(O.energy['rdemPoisson'] / cells, 1, delta=1e-9)
+		self.assertGreater(statistics.mean(shares), 0.05)
 		e0 = totals[0]
 		self.assertLess(max(abs(e / e0 - 1) for e in totals), 0.05)
 		first, second = statistics.mean(totals[:100]), statistics.mean(totals[100:])

@@ -13,9 +13,12 @@ at every 50th step (its paired kinetic energy needs Python at that step); contac
 * A dry-stacked wall (rdem.earthquake.DryWall, 0.5 × 0.22 m: 4 courses, 10 blocks, contacts E = 0.1 GPa) on a base
   that reaches 0.5 m beyond it, one-sine pulse 3 g t/H (its overturning threshold g t/H, Housner's g tan α of the whole
   wall), 0.5 s, towards −y first so that it falls towards +y onto the base: the courses topple, tumble and come to rest
-  on the base. Measured: rise 1.4e-11 J = 2.7e-13 of the 52.4 J input; after the pulse, E rises above an earlier
-  value by 4.4e-4 J at most (8.4e-6; the block: 7.4e-5); kinetic energy 1.2e-25 J at 1.5 s. On a base
-  that ended 5 cm beyond the wall the blocks fell off its edge and E rose by 1.2 J of 54 J (doc/earthquake.md).
+  on the base. Measured: rise 1.4e-11 J = 3.1e-13 of the 44.6 J input; after the pulse, E rises above an earlier
+  value by 1.4e-3 J at most (3.1e-5; the block: 7.4e-5); kinetic energy 6.9e-25 J at 2 s. The fall is chaotic: a
+  change in the last bits of the time step (RdemTimeStepper sums its stiffness in body-id order since issue #25, so that
+  a reloaded run continues bit for bit) gives another path, which came to rest after 1.5 s (0.006 J of kinetic energy
+  left then; 52.4 J of input and at rest at 1.5 s before), hence 2 s. On a base that ended 5 cm beyond the wall the
+  blocks fell off its edge and E rose by 1.2 J of 54 J (doc/earthquake.md).
 
 The 0.37 % rise of the block's landing once reported (doc/earthquake.md) was O.energy.total(), whose kinetic energy
 ½mv² at the mid-step velocity does not pair with the positions' energies; with the paired kinetic energy the landing
@@ -24,10 +27,10 @@ import math
 import unittest
 import harness
 from yade import O
-import rdem
-from rdem import ground_motion as gm
-from rdem.earthquake import DryWall
-from rdem.scenes import RockingBlock
+from yade import rdem
+from yade.rdem import ground_motion as gm
+from yade.rdem.earthquake import DryWall
+from yade.rdem.scenes import RockingBlock
 
 
 def runToRest(balance, pulseEnd, duration, every, chunk=2000):
@@ -83,7 +86,7 @@ class CollapseEnergy(unittest.TestCase):
 		O.step()
 		potential0 = O.energy['gravWork']
 		balance = harness.EnergyBalance()
-		after, kinetic = runToRest(balance, 0.55, 1.5, every=500, chunk=5000)
+		after, kinetic = runToRest(balance, 0.55, 2.0, every=500, chunk=5000)
 		top = max(O.bodies[i].state.pos[2] for i in wall.ids)
 		self.assertLess(top, 0.5 * H)  # no block is left standing on another's top: the wall lies on the base
 		self.assertGreater(min(O.bodies[i].state.pos[2] for i in wall.ids), 0)  # none fell off the base

@@ -6,7 +6,7 @@ import sys
 import unittest
 import harness
 from yade import O, Vector3
-from rdem.scenes import CompressionTest
+from yade.rdem.scenes import CompressionTest
 
 E = 30e9
 

@@ -9,7 +9,7 @@ import unittest
 import harness
 from yade import O, Vector3, Quaternion
 from yade.wrapper import RdemMat
-import rdem
+from yade import rdem
 
 H = 0.01  # half-size of the 2 cm cubes [m]
 RHO = 2300
@@ -20,7 +20,7 @@ class Contact(unittest.TestCase):
 	def scene(self, h=1.0, phi=math.atan(0.624), gravity=(0, 0, 0), dt=2e-8):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=30e9, poisson=0.2, density=RHO, frictionAngle=phi, dampingNormal=h, dampingShear=h))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=True, gravity=gravity, dt=dt)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=True, gravity=gravity, dt=dt)
 		base = O.bodies.append(rdem.block((0, 0, 0), (H, H, H), mat, fixed=True))
 		return mat, base
 
@@ -114,6 +114,32 @@ class Contact(unittest.TestCase):
 		# the kinetic energy of the rotation pairs ω_{n-1/2} and ω_{n+1/2} only approximately, and contact points come
 		# and go; the defect fixed here created 1e5 times the inflow in one step)
 		self.assertLess(balance.growth, 1e-3 * inflow)
+
+	def testCrossedBeamsRest(self):
+		# rdem.engines' default samples the vertices; a beam laid across another (no corner of either on the other) has
+		# no vertex inside and takes the face grid of segmentsPerEdge = 2 instead
+		# (Ig2_RdemBlock_RdemBlock_RdemGeom.contactSamplesPerEdge). Without that it would fall through. It must rest on
+		# its contact springs: k = k_n * A_s with k_n = M/(l_A + l_B), M = E/(1 - nu^2) (the paper's springs, eq. 11-12),
+		# l = H, and A_s the sampled area: the three grid points of each face inside the other block, trapezoid weights
+		# 1/2, 1, 1/2 of a segment of 20 H^2, halved (both blocks sampled), 20 H^2 in all (the crossing itself is 4 H^2: the
+		# grid is coarse, the contact stiffer than a flush face of that area).
+		mat, base = self.scene(h=1.0, gravity=(0, 0, -9.81), dt=None)
+		O.bodies.erase(base)
+		lower = O.bodies.append(rdem.block((0, 0, 0), (10 * H, H, H), mat, fixed=True))
+		upper = O.bodies.append(rdem.block((0, 0, 2 * H), (H, 10 * H, H), mat))
+		while O.time < 0.03:  # the contact's period is 1.5 ms, critically damped
+			rdem.run(1000)
+		s = O.bodies[upper].state
+		I = O.interactions[lower, upper]
+		self.assertEqual(I.geom.samplesPerEdge, 2)  # the face grid, not the vertices
+		self.assertEqual(len(I.phys.contactKey), 6)  # three points of each face
+		# The springs count from the depth at which the samples were first seen (doc/theory.md §4.1), reached in the
+		# first steps of the fall (1/2 g (n dt)^2, 1-3 % of the static overlap here): the overlap is that plus the static one.
+		offset = sum(I.phys.contactOffset) / len(I.phys.contactOffset)
+		overlap = 2 * H - (s.pos[2] - O.bodies[lower].state.pos[2])
+		static = s.mass * 9.81 / (30e9 / (1 - 0.2**2) / (2 * H) * 20 * H * H)
+		print('crossed beams: overlap %.4g m, static %.4g m, entry depth %.3g m, velocity %.3g m/s' % (overlap, static, offset, s.vel.norm()))
+		self.assertAlmostEqual((overlap - offset) / static, 1, delta=1e-3)  # at rest: the dashpots left nothing of the first swing
 
 
 if __name__ == '__main__':

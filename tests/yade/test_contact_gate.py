@@ -4,7 +4,7 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemContactGate, InsertionSortCollider
-import rdem
+from yade import rdem
 
 E, NU, H = 30e9, 0.2, 0.01
 
@@ -14,14 +14,14 @@ class ContactGate(unittest.TestCase):
 	def scene(self, ft=float('inf'), recontact=True):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=E, poisson=NU, tensileStrength=ft))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=recontact, dt=1e-8)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=recontact, dt=1e-8)
 		return mat
 
 	def gate(self):
 		return rdem.build.contactGate()
 
 	def collider(self):
-		return next(e for e in O.engines if isinstance(e, InsertionSortCollider))
+		return rdem.collider()
 
 	def testClosedForOneIntactAssembly(self):
 		mat = self.scene()

@@ -6,8 +6,8 @@ import unittest
 import harness
 from yade import O
 from yade.wrapper import RdemForceAssembler, ForceResetter, InsertionSortCollider, InteractionLoop, NewtonIntegrator
-import rdem
-from rdem.scenes import CompressionTest
+from yade import rdem
+from yade.rdem.scenes import CompressionTest
 
 # The 4x4x4 cube at 0.4 m/s, 0.2 us steps: the first springs break at step 2100-2200, 104 are broken by step 2600
 # (measured). Up to step 2750 both runs agree bit for bit (the contacts come in the same order in both sums); then

@@ -9,7 +9,7 @@ import unittest
 import harness
 from yade import O, Vector3, Quaternion
 from yade.wrapper import RdemMat
-import rdem
+from yade import rdem
 
 E, NU, A_HALF = 30e9, 0.2, 0.01  # concrete (paper Table 1), cubes of 2 cm
 AREA = (2 * A_HALF)**2
@@ -22,7 +22,7 @@ class TwoBlocks(unittest.TestCase):
 	def setUp(self):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=E, poisson=NU, density=2300, tensileStrength=float('inf')))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=False, dt=1e-9)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=False, dt=1e-9)
 		self.ids = rdem.blockGrid((2, 1, 1), (2 * A_HALF, ) * 3, material=mat)
 		self.assertEqual(rdem.bond(self.ids), 1)
 		for i in self.ids:

@@ -8,7 +8,7 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat
-import rdem
+from yade import rdem
 
 E, NU, H = 30e9, 0.2, 0.01
 AREA = (2 * H)**2
@@ -21,7 +21,7 @@ class Breakage(unittest.TestCase):
 	def build(self, ft=4.5e6, c=float('inf'), phi=0.5):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=E, poisson=NU, tensileStrength=ft, cohesion=c, frictionAngle=phi))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=False, dt=1e-9)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=False, dt=1e-9)
 		rdem.blockGrid((2, 1, 1), (2 * H, ) * 3, material=mat)
 		rdem.bond([0, 1])
 		for i in (0, 1):

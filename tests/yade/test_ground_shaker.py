@@ -12,14 +12,14 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemGroundShaker
-import rdem
-from rdem import ground_motion as gm
+from yade import rdem
+from yade.rdem import ground_motion as gm
 
 
 def scene():
 	harness.freshScene()
 	mat = O.materials.append(RdemMat(young=30e9, poisson=0.2, density=2500, tensileStrength=float('inf'), cohesion=float('inf')))
-	O.engines = rdem.engines(poisson=None, recontact=False, gravity=(0, 0, -9.81))
+	O.engines = rdem.engines(formulation=None, recontact=False, gravity=(0, 0, -9.81))
 	base = O.bodies.append(rdem.block((0, 0, -0.05), (0.3, 0.3, 0.05), mat))
 	top = O.bodies.append(rdem.block((0, 0, 0.1), (0.1, 0.1, 0.1), mat))
 	rdem.bond([base, top])

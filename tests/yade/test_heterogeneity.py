@@ -11,7 +11,7 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat
-import rdem
+from yade import rdem
 
 E, NU, FT, C = 30e9, 0.2, 3e6, 6e6
 KN = E / (1 - NU**2) / 0.02  # eqs. 11-12: two 2 cm blocks (ℓ = 1 cm each) [N/m3]
@@ -20,7 +20,7 @@ KN = E / (1 - NU**2) / 0.02  # eqs. 11-12: two 2 cm blocks (ℓ = 1 cm each) [N/
 def grid(counts, seed, strengthCoV=0.3, stiffnessCoV=0.2, softening=False, perSegment=False):
 	harness.freshScene()
 	mat = O.materials.append(RdemMat(young=E, poisson=NU, density=2300, tensileStrength=FT, cohesion=C))
-	O.engines = rdem.engines(poisson=None, recontact=False, softening=softening, strengthCoV=strengthCoV, strengthPerSegment=perSegment,
+	O.engines = rdem.engines(formulation=None, recontact=False, softening=softening, strengthCoV=strengthCoV, strengthPerSegment=perSegment,
 	                         stiffnessCoV=stiffnessCoV, seed=seed)
 	rdem.blockGrid(counts, (0.02, ) * 3, material=mat)
 

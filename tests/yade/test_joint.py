@@ -12,7 +12,7 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
+from yade import rdem
 
 L, W, H, T = 0.25, 0.12, 0.055, 0.01  # brick and joint [m]
 EB, NUB, EM, NUM = 16.7e9, 0.15, 2e9, 0.25  # brick and mortar [Pa], [-]
@@ -32,7 +32,7 @@ class Couplet(unittest.TestCase):
 	def build(self, formulation='paper'):
 		harness.freshScene()
 		brick = O.materials.append(RdemMat(young=EB, poisson=NUB, density=1800, tensileStrength=3e6, cohesion=6e6, frictionAngle=0.6, label='brick'))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None if formulation == 'paper' else 'consistent', recontact=False, dt=1e-9)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None if formulation == 'paper' else 'consistent', recontact=False, dt=1e-9)
 		if formulation == 'consistent':
 			O.engines = [e for e in O.engines if type(e).__name__ != 'RdemPoissonEngine']  # springs alone: no cells here
 		half = (L / 2, W / 2, (H + T) / 2)
@@ -70,7 +70,7 @@ class Couplet(unittest.TestCase):
 		self.build('paper')
 		harness.freshScene()
 		brick = O.materials.append(RdemMat(young=EB, poisson=NUB, density=1800))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=False, dt=1e-9)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=False, dt=1e-9)
 		ids = O.bodies.append([rdem.block((0, 0, z * (H + T)), (L / 2, W / 2, (H + T) / 2), brick) for z in (0, 1)])
 		rdem.bond(ids, joint=RdemJoint(thickness=T, young=EB, poisson=NUB))
 		self.assertAlmostEqual(O.interactions[0, 1].phys.kn * (H + T) * (1 - NUB**2) / EB, 1, delta=1e-14)
@@ -99,7 +99,7 @@ class Couplet(unittest.TestCase):
 	def testJointThickerThanTheBlocksIsRefused(self):
 		harness.freshScene()
 		brick = O.materials.append(RdemMat(young=EB, poisson=NUB, density=1800))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=False, dt=1e-9)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=False, dt=1e-9)
 		ids = O.bodies.append([rdem.block((0, 0, z * (H + T)), (L / 2, W / 2, (H + T) / 2), brick) for z in (0, 1)])
 		with self.assertRaisesRegex(ValueError, r'RdemJoint\.thickness = 0\.1.*less than twice the centroid-to-face distance'):
 			rdem.bond(ids, joint=RdemJoint(thickness=0.1))

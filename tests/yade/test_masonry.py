@@ -11,7 +11,7 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
+from yade import rdem
 
 BRICK, T = (0.25, 0.12, 0.055), 0.01
 L3 = 3 * 0.25 + 2 * T  # three stretchers [m]
@@ -28,7 +28,7 @@ class Masonry(unittest.TestCase):
 
 	def setUp(self):
 		harness.freshScene()
-		O.engines = rdem.engines(poisson='consistent', recontact=False, dt=1e-9)
+		O.engines = rdem.engines(formulation='consistent', recontact=False, dt=1e-9)
 
 	def build(self, **kw):
 		brick, joint = materials()
@@ -116,7 +116,7 @@ class Masonry(unittest.TestCase):
 			self.assertEqual(len(O.bodies), 0, name)  # nothing appended before the arguments are checked
 
 	def testPaperFormulationRefusesRunningBond(self):
-		O.engines = rdem.engines(poisson='paper', recontact=False, dt=1e-9)
+		O.engines = rdem.engines(formulation='paper', recontact=False, dt=1e-9)
 		w = self.build(length=L3, height=H4, thickness=0.25, bond='running')
 		with self.assertRaisesRegex(ValueError, r"two bonded neighbours on one side.*Poisson cells.*formulation = 'consistent'"):
 			rdem.poissonEngine().build(w.ids)

@@ -115,7 +115,7 @@ class PersistentContact(unittest.TestCase):
 	def scene(self, cfg, persistent, samples):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=YOUNG, poisson=0.2, density=2300, frictionAngle=0.5))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=True, dt=1e-7, contactSamples=samples)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=True, dt=1e-7, contactSamples=samples)
 		ig2 = rdem.geomFunctor()
 		ig2.persistentContacts = persistent
 		a = O.bodies.append(rdem.block(tuple(cfg.xA), tuple(cfg.hA), mat, orientation=cfg.qA, fixed=True))
@@ -191,7 +191,7 @@ class PersistentContact(unittest.TestCase):
 		harness.freshScene()
 		h = 0.01
 		mat = O.materials.append(RdemMat(young=YOUNG, poisson=0.2, density=2300, frictionAngle=0.5))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=True, dt=1e-7)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=True, dt=1e-7)
 		base = O.bodies.append(rdem.block((0, 0, 0), (h, h, h), mat, fixed=True))
 		b = O.bodies.append(rdem.block((0, 0, 2 * h - 1e-7), (h, h, h), mat, fixed=True))
 		O.step()
@@ -209,7 +209,7 @@ class PersistentContact(unittest.TestCase):
 
 	def testInvalidTolerances(self):
 		harness.freshScene()
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None)
 		ig2 = rdem.geomFunctor()
 		for name, bad in (('patchAngleTolerance', 0.0), ('patchAngleTolerance', 1.0), ('patchTravelTolerance', 0.0), ('patchTravelTolerance', 0.5)):
 			with self.assertRaises(ValueError, msg=name):

@@ -7,7 +7,7 @@ import numpy as np
 import harness
 from yade import O, Vector3, Quaternion
 from yade.wrapper import RdemMat
-import rdem
+from yade import rdem
 
 E, NU, H = 30e9, 0.2, 0.01
 LAM = E * NU / ((1 + NU) * (1 - 2 * NU))
@@ -41,7 +41,7 @@ class Poisson(unittest.TestCase):
 	def grid(self, counts, corotational=False):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=E, poisson=NU, tensileStrength=float('inf')))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson='paper', corotational=corotational, recontact=False, dt=1e-9)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation='paper', corotational=corotational, recontact=False, dt=1e-9)
 		ids = rdem.blockGrid(counts, (2 * H, ) * 3, material=mat)
 		rdem.bond(ids)
 		rdem.poissonEngine().build(ids)
@@ -146,7 +146,7 @@ class Poisson(unittest.TestCase):
 	def testRefusesRunningBond(self):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat())
-		O.engines = rdem.engines(poisson='paper', recontact=False, dt=1e-9)
+		O.engines = rdem.engines(formulation='paper', recontact=False, dt=1e-9)
 		lower = rdem.blockGrid((2, 2, 1), (2 * H, ) * 3, mat)
 		upper = rdem.blockGrid((2, 2, 1), (2 * H, ) * 3, mat, origin=(H, 0, 2 * H))  # shifted by half a block
 		rdem.bond(lower + upper)
@@ -156,7 +156,7 @@ class Poisson(unittest.TestCase):
 	def testRefusesNoGroup(self):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat())
-		O.engines = rdem.engines(poisson='paper', recontact=False, dt=1e-9)
+		O.engines = rdem.engines(formulation='paper', recontact=False, dt=1e-9)
 		ids = rdem.blockGrid((3, 3, 1), (2 * H, ) * 3, mat)  # one layer: no 2x2x2 group
 		rdem.bond(ids)
 		with self.assertRaisesRegex(ValueError, 'no 2x2x2 group'):

@@ -1,11 +1,12 @@
 """Housner's rocking block (Housner 1963; ../shared figures: b = 0.1 m, h = 0.5 m, α = 0.1974 rad, quarter cycle from
-α/2 0.3471 s, η = 0.9423) with sampled contacts at the vertices (contactSamples=1) and critical dashpots (h = 1):
+α/2 0.3471 s, η = 0.9423) with rdem.engines' default contacts (sampled at the vertices, contactSamples=1) and the paper's
+critical dashpots (h = 1):
 
 * free rocking from θ0 = α/2: the time to the first impact is within 3 % of the exact equation's (integrated here by
   Runge–Kutta, rdem.scenes.RockingBlock.quarterCycle; measured: 0.003 % off);
 * the energy kept through the first impact, from the amplitude θ1 of the next half cycle, within 5 % of Housner's
   r = η² for three slenderness ratios (h/b = 2.5, 5, 10; measured +3.4 %, +0.3 %, -0.03 %). With samples inside the
-  base face (contactSamples=2, the default for the paper's 2×2 springs) the block keeps 6 % more than η² at h/b = 5:
+  base face (contactSamples=2, the paper's 2×2 springs' grid) the block keeps 6 % more than η² at h/b = 5:
   the interior samples store impact energy and give it back as the block rolls onto the new corner (doc/theory.md §4.2);
 * uplift under a horizontal ground acceleration a (gravity tilted, the inertial load of a ground motion), ramped slowly
   and held, starts within 2 % of g tan α: at 0.98 g tan α the block stays down (its rotation is the contacts' elastic
@@ -15,8 +16,8 @@ import math
 import unittest
 import harness
 from yade import O, Vector3
-import rdem
-from rdem.scenes import RockingBlock
+from yade import rdem
+from yade.rdem.scenes import RockingBlock
 
 
 def advance(n):

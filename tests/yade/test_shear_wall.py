@@ -30,8 +30,8 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
-from rdem import walltest
+from yade import rdem
+from yade.rdem import walltest
 
 E, L, H, T = 3e9, 0.51, 1.03, 0.12  # [Pa], [m]
 
@@ -39,7 +39,7 @@ E, L, H, T = 3e9, 0.51, 1.03, 0.12  # [Pa], [m]
 def tinyWall(boundary, sigma0=0.0, beamBlocks=1, topBeam=0.1, gravity=0.0, shearSpan=None):
 	"""The wall of the module docstring in a fresh scene, with its ShearWallTest."""
 	harness.freshScene()
-	O.engines = rdem.engines(poisson='consistent', failureStress='total', damping=0.5, gravity=(0, 0, -gravity))
+	O.engines = rdem.engines(formulation='consistent', failureStress='total', damping=0.5, gravity=(0, 0, -gravity))
 	brick = O.materials.append(RdemMat(young=E, poisson=0.0, density=1800, tensileStrength=float('inf'), cohesion=float('inf'), label='brick'))
 	beam = O.materials.append(RdemMat(young=1e3 * E, poisson=0.0, density=2400, tensileStrength=float('inf'), cohesion=float('inf'), label='beam'))
 	joint = RdemJoint(young=E, poisson=0.0, tensileStrength=float('inf'), cohesion=float('inf'))
@@ -56,8 +56,10 @@ class ShearWall(unittest.TestCase):
 	def pushed(self, boundary, u=1e-5):
 		"""The tiny wall pushed to u [m] and held until at rest."""
 		w, test = tinyWall(boundary)
-		# YADE books Cundall's damping as |v_{n-1/2}|·|f|·damping·Δt (NewtonIntegrator.cpp), first order in ωΔt: at 0.8 of
-		# the tight (Lanczos) limit the booked energy is 1.13 of the work, at the Gershgorin step 1.024
+		# At 0.8 of the tight (Lanczos) limit the booked energy is 1.15 of the work, at the Gershgorin step 1.024 (measured
+		# with RdemLeapfrogEnergy's booking of the damping as done; 1.13 and 1.024 with NewtonIntegrator's first-order
+		# |v_{n-1/2}|·|f|·damping·Δt): the gap at the tight step is not the damping's booking; the actuator's work by the
+		# trapezoid rule over chunks of 100 steps is the suspect (not checked)
 		rdem.timeStepper().method = 'gershgorin'
 		O.dt = rdem.timeStepper().safety * rdem.timeStepper().estimate()
 		O.trackEnergy = True
@@ -188,7 +190,7 @@ class ShearWall(unittest.TestCase):
 		displaced by ``shift`` [m] from the built position with the left one fixed, one step, then slid up by ``slide`` [m]
 		over 2000 steps (contact springs are incremental) and held for one step: the force on the right brick [N]; with ``unbond`` the head joint is made by walltest.unbondJoints."""
 		harness.freshScene()
-		O.engines = rdem.engines(poisson=None, damping=0.0, gravity=(0, 0, 0))
+		O.engines = rdem.engines(formulation=None, damping=0.0, gravity=(0, 0, 0))
 		brick = O.materials.append(RdemMat(young=E, poisson=0.0, density=1800, tensileStrength=float('inf'), cohesion=float('inf'), label='brick'))
 		joint = RdemJoint(young=E, poisson=0.0, tensileStrength=1e5, cohesion=2e5, frictionAngle=math.atan(0.5))
 		w = rdem.masonry.wall(0.51, 0.055, 0.12, bond='running', brickMaterial=brick, jointMaterial=joint)

@@ -5,8 +5,8 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat
-import rdem
-import rdem.build
+from yade import rdem
+from yade import rdem
 
 E, NU, H = 30e9, 0.2, 0.01
 
@@ -17,7 +17,7 @@ class SkipApart(unittest.TestCase):
 		# The compression run of test_assembly.testPrefetchChangesNoResult (it cracks, makes sampled contacts, loses a
 		# block half-way: the travel record restarts), with a save and a load in the middle (certificates are not saved:
 		# every pair is tested again).
-		from rdem.scenes import CompressionTest
+		from yade.rdem.scenes import CompressionTest
 		harness.freshScene()
 		CompressionTest(blocksPerEdge=4, tensileStrength=2e6, rate=0.5, dt=2e-6)
 		rdem.build.geomFunctor().skipApart = skip
@@ -49,7 +49,7 @@ class SkipApart(unittest.TestCase):
 		# Two loose cubes of side 2H side by side along x, a gap apart [m], the second moving towards the first [m/s].
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=E, poisson=NU))
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, dt=1e-6, verletDist=0.1 * H)
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, dt=1e-6, verletDist=0.1 * H)
 		a = O.bodies.append(rdem.block((0, 0, 0), (H, H, H), mat))
 		b = O.bodies.append(rdem.block((2 * H + gap, 0, 0), (H, H, H), mat))
 		O.bodies[b].state.vel = Vector3(-speed, 0, 0)

@@ -20,7 +20,7 @@ import unittest
 import harness
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
+from yade import rdem
 
 FT, GF1, C, GF2, TAN0, TANR = 0.25e6, 18.0, 0.35e6, 125.0, 0.75, 0.6
 
@@ -70,7 +70,7 @@ class Softening(unittest.TestCase):
 		harness.freshScene()
 		h = 0.025
 		mat = O.materials.append(RdemMat(young=10e9, poisson=0.2, density=2000, tensileStrength=float('inf'), label='block'))
-		O.engines = rdem.engines(poisson=None, recontact=False, softening=True)
+		O.engines = rdem.engines(formulation=None, recontact=False, softening=True)
 		O.bodies.append([rdem.block((2 * h * i, 0, 0), (h, h, h), mat) for i in range(4)])
 		rdem.bond([0, 1])
 		rdem.bond([2, 3])
@@ -97,7 +97,7 @@ class Softening(unittest.TestCase):
 		harness.freshScene()
 		h, s0 = 0.05, -0.3e6
 		mat = O.materials.append(RdemMat(young=10e9, poisson=0.2, density=2000, tensileStrength=float('inf'), label='block'))
-		O.engines = rdem.engines(poisson=None, recontact=False, softening=True)
+		O.engines = rdem.engines(formulation=None, recontact=False, softening=True)
 		O.bodies.append([rdem.block((0, 0, 2 * h * i), (h, h, h), mat) for i in range(2)])
 		rdem.bond([0, 1], joint=joint())
 		area = (2 * h)**2
@@ -137,7 +137,7 @@ class Softening(unittest.TestCase):
 		# k_n > f_t²/(2G_f) = 1.1e11: the springs would snap back.
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=10e9, poisson=0.2, density=2000, label='block'))
-		O.engines = rdem.engines(poisson=None, recontact=False, softening=True)
+		O.engines = rdem.engines(formulation=None, recontact=False, softening=True)
 		O.bodies.append([rdem.block((1.0 * i, 0, 0), (0.5, 0.5, 0.5), mat) for i in range(2)])
 		with self.assertRaisesRegex(Exception, r"RdemJoint 'bed'\.fractureEnergy = 18: must be > tensileStrength\^2/\(2 k_n\)"):
 			rdem.bond([0, 1], joint=joint(tensileStrength=2e6, cohesion=4e6))

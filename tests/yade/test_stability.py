@@ -1,16 +1,16 @@
 """Issue #7: hard cases stay numerically stable. Every case asserts a finite state, a bounded shadow energy (no growth
-without external work; stability_cases.shadowEnergy), no block passing through another, and a bounded wall time.
-Figures of each case and the time-step sweep: doc/stability.md (scripts/stability_sweep.py)."""
+without external work; stability_cases.shadowEnergy) and no block passing through another. Figures of each case and
+the time-step sweep: doc/stability.md (scripts/stability_sweep.py); the wall time of each case:
+scripts/stability_timing.py (not asserted here: it depends on the machine and its load)."""
 import math
 import os
 import sys
-import time
 import unittest
 import harness
 from yade import O, Vector3, Quaternion
 from yade.wrapper import RdemMat, PyRunner
-import rdem
-from rdem.scenes import CompressionTest
+from yade import rdem
+from yade.rdem.scenes import CompressionTest
 import stability_cases as sc
 
 # Energy bound of the elastic cases. Measured worst |H - H0|/H0 over 20 000 steps: 2e-8 to 1.5e-6 (doc/stability.md),
@@ -32,15 +32,13 @@ def platenWork():
 
 class Stability(unittest.TestCase):
 
-	def assertStable(self, ids, steps, wallLimit, tol=ENERGY_TOL, label=''):
-		t0 = time.time()
+	def assertStable(self, ids, steps, tol=ENERGY_TOL, label=''):
 		H0, hist = sc.energyRun(steps)
 		err = sc.worstEnergyError(H0, hist)
 		self.assertTrue(sc.stateIsFinite(), label)
 		self.assertLess(err, tol, label)
 		self.assertLess(sc.deepestPenetration(ids), PENETRATION_TOL, label)
-		self.assertLess(time.time() - t0, wallLimit, label)  # a stable run of this size takes ~1 s
-		print('%s: worst energy error %.3g, deepest penetration %.3g, %.1f s' % (label, err, sc.deepestPenetration(ids), time.time() - t0))
+		print('%s: worst energy error %.3g, deepest penetration %.3g' % (label, err, sc.deepestPenetration(ids)))
 		return err
 
 	def testNearlyIncompressibleConsistent(self):
@@ -48,7 +46,7 @@ class Stability(unittest.TestCase):
 			ids = sc.grid(nu, 'consistent')
 			sc.perturb(ids, 0.01)
 			sc.setDtFraction(0.8)
-			self.assertStable(ids, 20000, 30, label='nu = %g' % nu)
+			self.assertStable(ids, 20000, label='nu = %g' % nu)
 
 	def testNearlyIncompressiblePaperRefused(self):
 		# doc/theory.md §5.3: springs E/(1-nu^2) plus D_p are indefinite above (3 - sqrt 5)/2 = 0.382
@@ -66,7 +64,7 @@ class Stability(unittest.TestCase):
 				sc.perturb(ids, 0.01)
 				rdem.timeStepper().method = 'gershgorin'
 				sc.setDtFraction(fraction, 'gershgorin')
-				self.assertStable(ids, 20000, 30, label='%s at %g' % (formulation, fraction))
+				self.assertStable(ids, 20000, label='%s at %g' % (formulation, fraction))
 				# below the estimate no warning; at 1.0 the stepper's in-run estimate (current normals) may differ
 				# from the set-up one by round-off and warn
 				if fraction < 1:
@@ -100,7 +98,7 @@ class Stability(unittest.TestCase):
 			ids = sc.brickMortar(contrast)
 			sc.perturb(ids, 0.01)
 			sc.setDtFraction(0.9, 'gershgorin')  # the step of doc/stability.md's figures (0.9 of Lanczos: 1.3e-5 at 1:100)
-			self.assertStable(ids, 20000, 30, label='contrast %d' % contrast)
+			self.assertStable(ids, 20000, label='contrast %d' % contrast)
 
 	def rigidMotion(self, corotational):
 		"""A bonded 3x3x3 concrete cube (finite strengths) translating at 100 m/s and spinning at 300 rad/s for 2 rad.
@@ -150,7 +148,6 @@ class Stability(unittest.TestCase):
 		ids = sc.grid(0.3, 'consistent', counts=(2, 2, 2))
 		sc.perturb(ids, 0.01)
 		sc.setDtFraction(0.8)
-		t0 = time.time()
 		H0, hist = sc.energyRun(10**6, samples=20)
 		self.assertEqual(len(hist), 20)
 		self.assertTrue(sc.stateIsFinite())
@@ -161,8 +158,7 @@ class Stability(unittest.TestCase):
 		self.assertLess(drift, 1e-6)
 		self.assertLess(sc.worstEnergyError(H0, hist), ENERGY_TOL)
 		self.assertLess(sc.deepestPenetration(ids), PENETRATION_TOL)
-		self.assertLess(time.time() - t0, 120)
-		print('long vibration: drift %.3g, worst %.3g, %.1f s' % (drift, sc.worstEnergyError(H0, hist), time.time() - t0))
+		print('long vibration: drift %.3g, worst %.3g' % (drift, sc.worstEnergyError(H0, hist)))
 
 	def testFastCompression(self):
 		# The paper's compression test on 4x4x4 blocks, loaded at 0.1 m/s (100 x the paper's 1 mm/s) to 0.3 mm, past
@@ -176,7 +172,6 @@ class Stability(unittest.TestCase):
 		self.assertFalse(O.dt > rdem.timeStepper().estimate())  # the paper's 2e-6 s is below the estimate
 		O.step()
 		kin0 = O.energy['kinetic']  # the moving platen's own, constant
-		t0 = time.time()
 		worst = 0
 		while test.displacement() < 0.3e-3:
 			rdem.run(100)
@@ -191,8 +186,7 @@ class Stability(unittest.TestCase):
 		# elements revived by re-contact 0.8 %: bound 0.5 %
 		self.assertLess(worst, 0.005)
 		self.assertLess(sc.deepestPenetration(test.ids), 0.01)  # cracks open, blocks do not pass through
-		self.assertLess(time.time() - t0, 60)
-		print('fast compression: energy balance worst %.3g, %d steps, %.1f s' % (worst, O.iter, time.time() - t0))
+		print('fast compression: energy balance worst %.3g, %d steps' % (worst, O.iter))
 
 
 if __name__ == '__main__':

@@ -11,7 +11,7 @@ import unittest
 import harness
 from yade import O, Vector3, Quaternion
 from yade.wrapper import RdemMat
-import rdem
+from yade import rdem
 
 H = 0.01  # half-size of the 2 cm cubes [m]
 G = 9.81
@@ -67,7 +67,7 @@ class StabilityContact(unittest.TestCase):
 		# tumble, hit the floor and each other and must come to rest.
 		harness.freshScene()
 		mat = material(tensileStrength=1e3, cohesion=1e3)
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=True, gravity=(0, 0, -G))
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=True, gravity=(0, 0, -G))
 		floor = O.bodies.append(rdem.block((0, 0, -H), (30 * H, 30 * H, H), mat, fixed=True))  # top at z = 0
 		column = rdem.blockGrid((1, 1, 6), (2 * H, ) * 3, mat, origin=(-H, -H, 0.01 * H))
 		bonds = rdem.bond(column)
@@ -117,7 +117,7 @@ class StabilityContact(unittest.TestCase):
 		# a fixed slab: the impact scatters the layer; nothing may pass through, blow up or create energy.
 		harness.freshScene()
 		mat = material()
-		O.engines = rdem.engines(segmentsPerEdge=2, poisson=None, recontact=True, gravity=(0, 0, -G))
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=True, gravity=(0, 0, -G))
 		floor = O.bodies.append(rdem.block((0, 0, -H), (30 * H, 30 * H, H), mat, fixed=True))
 		layer = rdem.blockGrid((3, 3, 1), (2 * H, ) * 3, mat, origin=(-3 * H, -3 * H, 1e-3 * H))
 		q = Quaternion(Vector3(1, 1, 0).normalized(), math.radians(30))

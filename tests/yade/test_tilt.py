@@ -13,7 +13,7 @@ import math
 import unittest
 import harness
 from yade import O
-from rdem.earthquake import DryWall
+from yade.rdem.earthquake import DryWall
 
 
 def hold(wall, theta, duration, ramp=0.0):

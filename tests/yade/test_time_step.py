@@ -7,8 +7,8 @@ import re
 import unittest
 import harness
 from yade import O
-import rdem
-from rdem.scenes import CompressionTest
+from yade import rdem
+from yade.rdem.scenes import CompressionTest
 import stability_cases as sc
 
 

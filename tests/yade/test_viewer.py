@@ -22,8 +22,8 @@ import yade
 import yade.config
 import yade.runtime
 from yade import O
-import rdem
-from rdem import gui
+from yade import rdem
+from yade.rdem import gui
 
 SKIP = 77  # CTest's SKIP_RETURN_CODE for this test
 # One broken 2x2 segment of the 4-block cube (5 cm blocks, 2.5 cm segments, quads at fill 0.9) covers about 15x15 pixels
@@ -51,7 +51,7 @@ class Viewer(unittest.TestCase):
 
 	def testCrackedCubeIsDrawn(self):
 		import numpy
-		from rdem.scenes import CompressionTest
+		from yade.rdem.scenes import CompressionTest
 		harness.freshScene()
 		CompressionTest(blocksPerEdge=4, formulation='consistent', rate=10e-3)  # dt 2e-6 s, 10 000 steps to 0.2 mm
 		view = gui.view()

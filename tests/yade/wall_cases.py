@@ -6,7 +6,7 @@ plate block per wall block, as the paper's 10×10 plates), their translation alo
 blocked: free to follow the lateral expansion, so the specimen is in uniaxial stress."""
 from yade import O, Vector3
 from yade.wrapper import RdemMat, RdemJoint
-import rdem
+from yade import rdem
 
 E = 16.7e9  # [Pa]
 BRICK, JOINT = (0.25, 0.12, 0.055), 0.01  # [m]
@@ -26,7 +26,7 @@ def homogeneousWall(bond, wythes, blocksPerBrick, nu, load, bricks=3, courses=4,
 	consistent formulation, Poisson engine built with ``elements``. Returns (wall, plates): plates = ([ids on the low side], [ids on the high side])."""
 	O.reset()
 	mat = O.materials.append(RdemMat(young=E, poisson=nu, density=1800, tensileStrength=float('inf'), cohesion=float('inf'), label='brick'))
-	O.engines = rdem.engines(poisson='consistent', recontact=False, dt=1e-9)
+	O.engines = rdem.engines(formulation='consistent', recontact=False, dt=1e-9)
 	same = RdemJoint(young=E, poisson=nu, tensileStrength=float('inf'), cohesion=float('inf'))
 	length, height, thickness = wallSize(bond, wythes, bricks, courses)
 	wall = rdem.masonry.wall(length, height, thickness, brick=BRICK, joint=JOINT, bond=bond, blocksPerBrick=blocksPerBrick, brickMaterial=mat,

@@ -5,7 +5,7 @@
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
 /* Poisson cells: the Poisson effect of the consistent formulation on any layout of face-bonded rectangular blocks
-   (running bond, English bond, bricks cut into blocks that do not line up, T-junctions, mixed sizes; doc/theory.md §5.4).
+   (running bond, English bond, bricks cut into blocks that do not line up, T-junctions, mixed sizes; doc/sphinx/rdemTheory.rst §5.4).
 
    Each block b is a cell. Its normal strain along its axis d is the divergence-theorem average over the cell of the
    normal displacement of its ±d faces, ε_d = (1/V) Σ_faces ±A n·u_f. On a bonded patch (one bond) the face value is
@@ -25,7 +25,7 @@
    its thickness), M_b the springs' modulus λ+2μ: the springs (diagonal) and the cells add up to D. The cell force
    on bond q is -∂W/∂u_n,q along its normal, at the face centre.
 
-   Exactness (doc/theory.md §5.4): for a uniform strain the flux of σ_p = (D - M I)ε cancels across every bonded
+   Exactness (doc/sphinx/rdemTheory.rst §5.4): for a uniform strain the flux of σ_p = (D - M I)ε cancels across every bonded
    face, and what is left on a free face is matched by the springs when the bond q of a block with free area on its
    ±d faces is weighted by w_n = 1 + ℓ_d A_free,d / (|s_q| A_bonded,d) (1.5 for a cube with one free face, as in
    §5.2). A block whose normal translation along d is prescribed (a platen) with bonds on one side only is a half
@@ -168,7 +168,7 @@ namespace rdem {
 	/// platen's half cell) plus each block's extraWeight. The shear weight w_s is that lateral fraction alone.
 	template <class S> S cellBondWeightNormal(S lateral1, S lateral2, S extra1, S extra2) { return (lateral1 < lateral2 ? lateral1 : lateral2) + extra1 + extra2; }
 
-	/* Offset correction of the shear springs (doc/theory.md §5.4). Two bonded blocks whose centroids are offset by δ
+	/* Offset correction of the shear springs (doc/sphinx/rdemTheory.rst §5.4). Two bonded blocks whose centroids are offset by δ
 	   along their face (running bond: half a brick) translate apart by εδ under a uniform strain ε, which their rigid
 	   shapes turn into a slip of the face that a continuum does not have. The intact shear springs therefore measure the
 	   slip from the blocks' mean cell strain, d_t - P_t(½(E₁ + E₂)δ), E_b = diag(ε_b) in block b's frame. Everything in

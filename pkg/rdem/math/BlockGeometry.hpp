@@ -249,7 +249,7 @@ namespace rdem {
 	/* Whether a rectangular face (centre c, unit in-plane axes t1, t2, half-sizes h1, h2 [m]) can have a point inside
 	   block Y in the sense of sampleDepth: false only if, along one of Y's axes k, the face's extent
 	   |t1_k| h1 + |t2_k| h2 around c lies entirely beyond Y's slab |q_k| ≤ h_k (1 + tol), with the margin 1e-9·h_k for
-	   round-off. A cheap cull before the (n+1)² sample points of the face are made and tested (doc/performance.md).
+	   round-off. A cheap cull before the (n+1)² sample points of the face are made and tested.
 	   faceMayEnterLocal takes the face in Y's frame, q_c = R_Yᵀ(c - x_Y), q_t1 = R_Yᵀt1, q_t2 = R_Yᵀt2 (see sampleDepth). */
 	template <class S>
 	bool faceMayEnterLocal(

@@ -4,7 +4,7 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
-/* Gershgorin terms of the critical time step (doc/theory.md §6) for one point spring, and their sum over a flush
+/* Gershgorin terms of the critical time step (doc/sphinx/rdemTheory.rst §6) for one point spring, and their sum over a flush
    contact covering a face, which bounds the contacts a block can still make there. Units: N/m³ (stiffness per area),
    m, m², kg, kg·m², 1/s². */
 #pragma once

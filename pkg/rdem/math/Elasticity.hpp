@@ -27,7 +27,7 @@ namespace rdem {
 	   Paper:      E/(1-ν²), the plane-stress modulus of eq. (8) used by eq. (11) [P].
 	   Consistent: λ+2μ = E(1-ν)/((1+ν)(1-2ν)), the diagonal of eq. (18), so that springs (diagonal)
 	               plus Poisson elements (off-diagonal, eq. 19) add up to the full isotropic tensor
-	               (derivation: doc/theory.md). */
+	               (derivation: doc/sphinx/rdemTheory.rst §5.2). */
 	enum class SpringModulus { Paper = 0, Consistent = 1 };
 
 	/// The formulation named "paper" or "consistent"; false if the name is neither.
@@ -81,7 +81,7 @@ namespace rdem {
 
 	/* Compliance per area of one block's side of a bond [m³/N]: from the block's centroid to the joint's mid-plane at
 	   distance ℓ, the block's material over ℓ - t/2 and the mortar over t/2 (eq. 12 [P] extended by the mortar term of a
-	   joint of thickness t; doc/theory.md §1.1). modulusBlock and modulusMortar are both normal (M) or both shear (G)
+	   joint of thickness t; doc/sphinx/rdemTheory.rst §1.1). modulusBlock and modulusMortar are both normal (M) or both shear (G)
 	   moduli [Pa]. t = 0: ℓ/M, the inverse of eq. (11). The bond's stiffness per area is 1/(C_A + C_B). */
 	template <class S> S bondSideCompliance(S modulusBlock, S ell, S modulusMortar, S thickness)
 	{

@@ -4,7 +4,7 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
-/* Face-to-face contact of two blocks as a patch of contact springs (doc/theory.md §4.3, doc/performance.md).
+/* Face-to-face contact of two blocks as a patch of contact springs (doc/sphinx/rdemTheory.rst §4.3).
 
    Two blocks whose faces meet face to face (outward normals antiparallel within a tolerance, a small gap or overlap
    between the face planes) touch over the intersection of the two faces: a convex polygon, found once by clipping B's

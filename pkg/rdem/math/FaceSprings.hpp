@@ -6,7 +6,7 @@
 *************************************************************************/
 /* The two spring laws of a point of a face, as Law2_RdemGeom_RdemPhys_FaceSprings runs them.
 
-   Reference [P]: the paper (shared/reference/paper-poisson-effect-refined-dem.txt), eqs. (13)-(17); doc/theory.md §1-3.
+   Reference [P]: the paper (shared/reference/paper-poisson-effect-refined-dem.txt), eqs. (13)-(17); doc/sphinx/rdemTheory.rst §1–3.
    Sign conventions: normal stress σ and opening u_n positive in TENSION/OPENING (eq. 14); an overlap δ = -u_n > 0.
    Vectors are global; n is the unit normal from body 1 to body 2; forces are those on body 2.
    Units: stiffness per area [N/m³] and stresses [Pa] for the restoring spring; stiffness [N/m], dashpot [N·s/m] and
@@ -34,7 +34,7 @@ namespace rdem {
 		S kn, ks, tensileStrength, cohesion, tanPhi;
 	};
 
-	/// k with its strengths f_t and c multiplied by the heterogeneity factor f > 0 (doc/theory.md §2.2); stiffnesses and
+	/// k with its strengths f_t and c multiplied by the heterogeneity factor f > 0 (doc/sphinx/rdemTheory.rst §2.2); stiffnesses and
 	/// friction unchanged.
 	template <class S> RestoringConstants<S> scaledStrengths(RestoringConstants<S> k, S f)
 	{
@@ -53,7 +53,7 @@ namespace rdem {
 
 	/* Eq. (14) [P]: the restoring spring's stresses for the opening u_n [m] and shear elongation u_s [m] of its segment,
 	   and eqs. (15)-(16): its state, judged on σ + σ_extra (σ_extra: the normal stress the Poisson cells add to the face,
-	   doc/theory.md §5.6; 0 for the paper's criterion). */
+	   doc/sphinx/rdemTheory.rst §5.6; 0 for the paper's criterion). */
 	template <class S> RestoringStress<S> restoringStress(const RestoringConstants<S>& k, S un, const Eigen::Matrix<S, 3, 1>& us, S sigmaExtra)
 	{
 		RestoringStress<S> r;

@@ -117,7 +117,7 @@ namespace rdem {
 		return K;
 	}
 
-	/* K over the element extended by a skin (consistent formulation, doc/theory.md §5.2): along each axis d the 1-D rule is
+	/* K over the element extended by a skin (consistent formulation, doc/sphinx/rdemTheory.rst §5.2): along each axis d the 1-D rule is
 	   the two Gauss points ±1/√3 (weight 1) plus the end point ξ_d = -1 with weight skinLo[d] and ξ_d = +1 with weight
 	   skinHi[d] (left out when 0). A weight t = ℓ/(half the element length along d) integrates the strain of the element's
 	   face over a slab of thickness ℓ beyond it: the strain of the skin is that of the nearest point of the element

@@ -10,7 +10,7 @@
    centre (the "representative point" of [P] Fig. 2a) with the segment area as weight. For contact between
    blocks that are not bonded, every face of a block is sampled on an (n+1)×(n+1) grid that includes edges and
    corners, with trapezoid-rule weights, so that a face, an edge or a corner that enters another block is
-   detected (see doc/theory.md, "Contact geometry"). Units: m, m². */
+   detected (doc/sphinx/rdemTheory.rst §4). Units: m, m². */
 #pragma once
 
 #include <Eigen/Core>

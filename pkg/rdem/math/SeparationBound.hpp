@@ -4,7 +4,7 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
-/* How long two blocks that are apart stay apart (doc/performance.md, "Contact phase").
+/* How long two blocks that are apart stay apart.
 
    After the first crack the collider hands the geometry functor every pair of blocks whose bounding boxes overlap: in
    a grid, the edge and corner neighbours of every block, about ten pairs per block, nearly all of them apart by a

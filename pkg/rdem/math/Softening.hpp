@@ -6,7 +6,7 @@
 *************************************************************************/
 /* Softening restoring springs: a traction-separation law per segment after the composite interface model of
    Lourenço & Rots (1997, J. Eng. Mech. 123(7):660-668, [LR]; doc/references.bib LourencoRots1997), derived in
-   doc/theory.md §2.1.
+   doc/sphinx/rdemTheory.rst §2.1.
 
    Three surfaces on the stresses of the segment's spring, each with its own plastic displacement:
    * tension cut-off       σ ≤ f_t(ξ) = f_t (1 - ξ),                       plastic crack opening w ≥ 0;
@@ -20,7 +20,7 @@
    checkSoftening). At ξ = 1 the spring is broken: the contact spring of the segment (eqs. 13, 17 of the paper) takes
    over, with the residual friction tanφ_r.
 
-   Simplifications against [LR], stated in doc/theory.md §2.1: linear instead of exponential softening (the same G_f,
+   Simplifications against [LR], stated in doc/sphinx/rdemTheory.rst §2.1: linear instead of exponential softening (the same G_f,
    a finite final opening, closed-form returns); the cap on σ alone (no τ term); the returns made one surface after the
    other (tension or cap, then shear with the updated σ and ξ) instead of [LR]'s corner return; an open crack closes
    without stress (σ = 0 for 0 ≤ u < w: crack faces apart) and carries compression once closed (u < 0).
@@ -50,7 +50,7 @@ namespace rdem {
 	};
 
 	/// k with its strengths f_t, c, f_c and fracture energies G_f^I, G_f^II, G_fc multiplied by the heterogeneity factor
-	/// f > 0 (doc/theory.md §2.2): the final openings 2G/f stay the material's; stiffnesses, friction and r unchanged.
+	/// f > 0 (doc/sphinx/rdemTheory.rst §2.2): the final openings 2G/f stay the material's; stiffnesses, friction and r unchanged.
 	template <class S> SofteningConstants<S> scaledStrengths(SofteningConstants<S> k, S f)
 	{
 		k.ft *= f;
@@ -190,7 +190,7 @@ namespace rdem {
 
 	/* One step of a softening spring: stresses for the segment's total opening u_n and shear displacement u_s [m]
 	   (eq. 14's measures; u_s in any fixed frame, the slip s is kept in the same), updating the history st and adding
-	   the step's dissipation to d. σ_extra: the normal stress the Poisson cells add to the face (doc/theory.md §5.6), in
+	   the step's dissipation to d. σ_extra: the normal stress the Poisson cells add to the face (doc/sphinx/rdemTheory.rst §5.6), in
 	   the criteria only. Normal: u = u_n + κ (the crushed length taken off); u ≥ w: spring k_n(u - w), tension cut-off;
 	   0 ≤ u < w: crack open, σ = 0; u < 0: crack closed, k_n u, compression cap. Then shear. */
 	template <class S>

@@ -4,7 +4,7 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
-/* The largest eigenvalue of the mass-normalised linear stiffness A = P S K S P of a block assembly (doc/theory.md §6),
+/* The largest eigenvalue of the mass-normalised linear stiffness A = P S K S P of a block assembly (doc/sphinx/rdemTheory.rst §6),
    for the critical time step 2/√λ_max of central differences (leapfrog). Plain arrays, Eigen only.
 
    Degrees of freedom: 6 per body, x = (u, θ) in global axes: translation u [m] and small rotation θ [rad] about the
@@ -16,7 +16,7 @@
    * a point spring of normal and shear stiffness k_n, k_s [N/m] between material points of two blocks (eq. 11-13 of the
      paper times the area): energy ½dᵀK_s d, K_s = k_n nnᵀ + k_s(I - nnᵀ), d = (u₂ + θ₂×r₂) - (u₁ + θ₁×r₁), r the arms;
    * a Poisson element (paper eq. 18-21): ½ s uᵀK_p u on the translations of its 8 nodes;
-   * a Poisson cell (doc/theory.md §5.4): ½ εᵀK_c ε, ε_d = Σ_q c_q u_n,q, u_n = n·(u₂ + θ₂×r₂ - u₁ - θ₁×r₁) the opening
+   * a Poisson cell (doc/sphinx/rdemTheory.rst §5.4): ½ εᵀK_c ε, ε_d = Σ_q c_q u_n,q, u_n = n·(u₂ + θ₂×r₂ - u₁ - θ₁×r₁) the opening
      of bond q at its face centre;
    * λ_max by the Lanczos method with full reorthogonalisation (Parlett 1998, ch. 13; Golub and Van Loan 2013, §10.1),
      reported as the largest Ritz value θ plus its residual norm β_k|s_k| (an eigenvalue lies within it of θ:

@@ -1,6 +1,6 @@
 # 2026 © yade-rdem authors
 # The refined DEM with the Poisson effect (springs between rigid blocks, virtual 8-node hexahedra on their centroids;
-# consistent formulation, yade-rdem doc/theory.md §5.2): a 4×4×4 cube of blocks compressed between platens that slide
+# consistent formulation, doc/sphinx/rdemTheory.rst §5.2): a 4×4×4 cube of blocks compressed between platens that slide
 # freely sideways shows the Poisson effect of its material, lateral strain = −ν × axial strain, which rigid blocks with
 # springs alone cannot show (their apparent ν is 0).
 
@@ -19,6 +19,6 @@ O.run(3000, True)  # settle at the reached shortening
 
 nuApparent = test.apparentPoisson()
 print('apparent Poisson ratio %.6f (material: %g)' % (nuApparent, nu))
-# Exact at equilibrium for a uniform field (doc/theory.md §5.2); 3000 damped steps leave it within 1e-4 of rest here.
+# Exact at equilibrium for a uniform field (doc/sphinx/rdemTheory.rst §5.2); 3000 damped steps leave it within 1e-4 of rest here.
 if abs(nuApparent - nu) > 1e-3:
 	raise YadeCheckError('apparent Poisson ratio %g of a 4x4x4 cube of nu = %g: differs by more than 1e-3' % (nuApparent, nu))
