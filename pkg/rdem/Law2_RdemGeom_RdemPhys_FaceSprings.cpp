@@ -28,10 +28,10 @@ CREATE_LOGGER(Law2_RdemGeom_RdemPhys_FaceSprings);
 /* How to read this file: Law2_RdemGeom_RdemPhys_FaceSprings::go (at the end) sends a bond to bondForces and a contact of
    blocks that are not bonded to sampledContactForces. A bond's segments run one of three laws each step: restoringSpring
    (an intact segment, eqs. 14-16), softeningSpring (an intact segment of a softening bond, doc/sphinx/rdemTheory.rst §2.1) or
-   brokenSegment (its contact spring, eqs. 13, 17). A face-to-face contact goes to patchContactForces. The physics of a point is in pkg/rdem/math/FaceSprings.hpp
-   (rdem::restoringStress, rdem::contactSpringForce) and pkg/rdem/math/Softening.hpp (rdem::softeningStep), unit-tested
-   there; this file turns
-   the blocks' motion into their arguments and their results into forces, moments, counters and energies. */
+   brokenSegment (its contact spring, eqs. 13, 17). A face-to-face contact goes to patchContactForces. The physics of
+   a point is in pkg/rdem/math/FaceSprings.hpp (rdem::restoringStress, rdem::contactSpringForce) and
+   pkg/rdem/math/Softening.hpp (rdem::softeningStep), unit-tested there; this file turns the blocks' motion into their
+   arguments and their results into forces, moments, counters and energies. */
 namespace {
 	using Energies = rdem::SpringEnergies<Real>;
 
