@@ -29,6 +29,9 @@ Cases
                 same grids as the reference; with the memory per body (peak resident set after building, over the
                 body count), the exponent of the wall time per step against the body count between neighbouring
                 sizes, and a plot (figures/<name>.png beside --out, e.g. doc/figures/scaling.png);
+    heavy       the paper's cube loaded at 20 mm/s to three times its first-break displacement (saved once per build, see
+                heavyCrackedState), timed after loading, 1 and 2 threads;
+    heavy-instructions  the same state's instructions per block-step under callgrind (120 minus 20 steps after loading);
     instructions  the paper scene's instructions per block-step under valgrind's callgrind: the one figure that does
                 not move with the machine's load (needs valgrind); intact (200 steps from the start) and cracked (the
                 state 5000 steps after the first broken spring, saved by a native run first, then 100 steps counted as
@@ -334,8 +337,54 @@ def countInstructions(steps=200, blocks=10, cacheSim=False, load=None):
 	return out
 
 
+def runHeavySave(spec):
+	"""The paper's cube loaded at spec['rate'] (default 20 mm/s) to spec['factor'] (default 3) times the platen
+	displacement of its first broken spring, saved to spec['save']: the heavily cracked state (what a collapse looks like)."""
+	from yade import O
+	import rdem.build
+	from rdem.scenes import CompressionTest
+	test = CompressionTest(rate=spec.get('rate', 0.02))
+	law = rdem.build.law()
+	while law.tensionBreaks + law.shearBreaks == 0 and O.iter < 400000:
+		O.run(100, True)
+	first = test.displacement()
+	while test.displacement() < spec.get('factor', 3) * first and O.iter < 400000:
+		O.run(100, True)
+	O.save(spec['save'])
+	return dict(bodies=len(O.bodies), steps=O.iter, firstBreak=first, displacement=test.displacement(), interactions=len(O.interactions.all()),
+	            real=sum(1 for I in O.interactions if I.isReal), breaks=int(law.tensionBreaks + law.shearBreaks), stepsPerSecond=0, usPerBodyStep=0)
+
+
+def runLoaded(spec):
+	"""A saved state (spec['load']) timed as the steady-state cases."""
+	from yade import O
+	O.load(spec['load'])
+	n = len(O.bodies)
+	out = dict(bodies=n)
+	out.update(timed(n, spec['steps'], spec['warmup']))
+	out.update(interactions=len(O.interactions.all()), real=sum(1 for I in O.interactions if I.isReal))
+	return out
+
+
+def heavyCrackedState():
+	"""Path of the paper's cube at 20 mm/s to three times its first-break displacement (runHeavySave), saved by a native
+	run of this build into the system's temporary folder; made if missing (a few minutes)."""
+	import hashlib
+	import tempfile
+	with open(pluginLibrary(), 'rb') as f:
+		build = hashlib.sha1(f.read()).hexdigest()[:12]
+	path = os.path.join(tempfile.gettempdir(), 'rdem-paper-heavy-%s.yade.gz' % build)
+	if not os.path.exists(path):
+		print('benchmark: saving the heavily cracked cube to %s (a few minutes) ...' % path, flush=True)
+		res = rdem.batch.runChild(dict(kind='heavysave', save=path), 1)
+		print('    first break at %.3g mm, saved at %.3g mm after %d steps: %d interactions, %d real, %d broken springs' %
+		      (res['firstBreak'] * 1e3, res['displacement'] * 1e3, res['steps'], res['interactions'], res['real'], res['breaks']), flush=True)
+	return path
+
+
 def child(spec):
-	res = dict(cpm=runCpm, crack=runCrack, count=runCount, phases=runPhases, collapse=runCollapse).get(spec['kind'], runRdem)(spec)
+	res = dict(cpm=runCpm, crack=runCrack, count=runCount, phases=runPhases, collapse=runCollapse, heavysave=runHeavySave,
+	           loaded=runLoaded).get(spec['kind'], runRdem)(spec)
 	res['threads'] = int(os.environ.get('OMP_NUM_THREADS', '1'))
 	rdem.batch.reportChild(res)
 
@@ -362,6 +411,10 @@ if 'collapse' in cli.cases:
 	for th in (1, 2):
 		plan.append(('collapse', 'collapsing cube, %d³ blocks' % nc,
 		             dict(kind='collapse', blocks=nc, steps=max(50, int(steps * 1200 / nc**3)), warmup=min(warmup, max(50, int(steps * 1200 / nc**3)))), th))
+if 'heavy' in cli.cases:
+	heavyState = heavyCrackedState()
+	for th in (1, 2):
+		plan.append(('paper', 'paper cube heavily cracked (20 mm/s, 3× first break)', dict(kind='loaded', load=heavyState, steps=steps // 3, warmup=warmup), th))
 if 'cpm' in cli.cases:
 	for th in (1, 2):
 		plan.append(('paper', 'YADE CpmMat spheres, same grid', dict(kind='cpm', steps=steps, warmup=warmup), th))
@@ -413,6 +466,14 @@ if 'instructions' in cli.cases:
 	cracked = dict(long_, steps=100, instructions=long_['instructions'] - short['instructions'])
 	cracked['perBlockStep'] = cracked['instructions'] / 100 / cracked['bodies']
 	print('    %.0f instructions per block-step (%.2f x intact)' % (cracked['perBlockStep'], cracked['perBlockStep'] / count['perBlockStep']), flush=True)
+heavy = None
+if 'heavy-instructions' in cli.cases:
+	state = heavyCrackedState()
+	print('benchmark: instructions per block-step of the heavily cracked cube under callgrind (a few minutes) ...', flush=True)
+	short, long_ = countInstructions(steps=20, load=state), countInstructions(steps=120, load=state)
+	heavy = dict(long_, steps=100, instructions=long_['instructions'] - short['instructions'])
+	heavy['perBlockStep'] = heavy['instructions'] / 100 / heavy['bodies']
+	print('    %.0f instructions per block-step' % heavy['perBlockStep'], flush=True)
 misses = None
 if 'misses' in cli.cases:
 	print('benchmark: last-level cache misses per block-step of the 22³ cube under callgrind (about 5 minutes) ...', flush=True)
@@ -453,6 +514,12 @@ if cracked:
 	    'Cracked: the paper scene 5000 steps after its first broken spring (%d interactions, %d of them real), 100 steps (the difference of 120 '
 	    'and 20 steps after loading the saved state): **%.0f instructions per block-step**, %.2f× intact.' %
 	    (cracked['interactions'], cracked['real'], cracked['perBlockStep'], cracked['perBlockStep'] / count['perBlockStep']), ''
+	]
+if heavy:
+	lines += [
+	    'Heavily cracked: the paper\'s cube loaded at 20 mm/s to three times its first-break displacement (%d interactions, %d of them real), '
+	    '100 steps (the difference of 120 and 20 steps after loading the saved state): **%.0f instructions per block-step**%s.' %
+	    (heavy['interactions'], heavy['real'], heavy['perBlockStep'], ', %.2f× intact' % (heavy['perBlockStep'] / count['perBlockStep']) if count else ''), ''
 	]
 phases = [r for r in results if r['section'] == 'phases']
 if phases:

@@ -8,6 +8,7 @@
 #include <pkg/rdem/NumberText.hpp>
 #include <pkg/rdem/RdemPrefetch.hpp>
 #include <pkg/rdem/math/BlockGeometry.hpp>
+#include <pkg/rdem/math/FacePatch.hpp>
 #include <pkg/rdem/math/SegmentGrid.hpp>
 #include <pkg/rdem/math/SeparationBound.hpp>
 #include <limits>
@@ -123,10 +124,93 @@ namespace {
 		sampleInside(B, s2, A, s1, 1, n, normal, g);
 		edgeInside(pair, s1, s2, tol, n, g);
 	}
+
+	/* The contact points of the last step whose history (RdemPhys::contactShear, contactDashpot, contactOffset, in the
+	   same order) passes to the points of a new patch or to samples: where they are now (global) [m] and how far each
+	   spring is compressed, depth - offset (-1: not in contact) [m]. What passes is the compression, not the offset: a
+	   point taking over at another depth starts with the force per area of the point it replaces, so that re-deriving
+	   a patch, or going between patch and samples, neither makes nor loses elastic energy beyond the change of the
+	   tributary areas. */
+	struct ContactHistory {
+		vector<Vector3r> pos;
+		vector<Real>     compression;
+	};
+
+	/// The history of g's patch for blocks A and B (normal n of this step).
+	ContactHistory patchHistory(const RdemGeom& g, const RdemPhys& p, const Block& A, const Block& B, const Vector3r& n)
+	{
+		const auto     springs = g.patchSprings();
+		ContactHistory h;
+		for (size_t i = 0; i < springs.size; ++i) {
+			const Vector3r P1 = A.pos + A.rot * springs.point1(i), P2 = B.pos + B.rot * springs.point2(i);
+			h.pos.push_back((P1 + P2) / 2);
+			const Real depth = -(P2 - P1).dot(n);
+			h.compression.push_back(i < p.contactOffset.size() && p.contactOffset[i] >= 0 ? math::max(depth - p.contactOffset[i], Real(0)) : Real(-1));
+		}
+		return h;
+	}
+
+	/// The history of the last step's samples of g, if the law left it in p (its keys are g's sample keys).
+	ContactHistory sampleHistory(const RdemGeom& g, const RdemPhys& p)
+	{
+		ContactHistory h;
+		if (g.sampleKey.empty() || g.sampleKey != p.contactKey) return h;
+		h.pos = g.samplePoint;
+		for (size_t k = 0; k < g.sampleKey.size(); ++k)
+			h.compression.push_back(math::max(g.sampleDepth[k] - p.contactOffset[k], Real(0)));
+		return h;
+	}
+
+	/* The history `from` (with its arrays still in p) passed to new contact points at `pos` with depths `depth` [m]:
+	   each point in contact takes the shear elongation and dashpot force of the nearest old point that was in contact,
+	   and its compression, at most its own depth (ContactHistory). Returns the new points' offsets (-1: no history; the
+	   law starts the point at its depth) and replaces p's shear and dashpot arrays by the new points'. */
+	vector<Real> handOver(const ContactHistory& from, const vector<Vector3r>& pos, const vector<Real>& depth, RdemPhys& p)
+	{
+		const vector<int> near = rdem::nearestPoints<Real>(from.pos, pos);
+		vector<Vector3r>  shear(pos.size(), Vector3r::Zero()), dashpot(pos.size(), Vector3r::Zero());
+		vector<Real>      offset(pos.size(), Real(-1));
+		for (size_t i = 0; i < pos.size(); ++i) {
+			const int j = near[i];
+			if (j < 0 || !(depth[i] > 0) || !(from.compression[size_t(j)] >= 0)) continue;
+			shear[i]   = p.contactShear[size_t(j)];
+			dashpot[i] = p.contactDashpot[size_t(j)];
+			offset[i]  = depth[i] - math::min(from.compression[size_t(j)], depth[i]);
+		}
+		p.contactShear.swap(shear);
+		p.contactDashpot.swap(dashpot);
+		return offset;
+	}
+
+	/// The history of a patch passed to this step's samples of g (handOver), as the law's sample history in p.
+	void handOverToSamples(const ContactHistory& from, const RdemGeom& g, RdemPhys& p)
+	{
+		vector<Real> offset = handOver(from, g.samplePoint, g.sampleDepth, p);
+		vector<int>      key;
+		vector<Vector3r> shear, dashpot;
+		vector<Real>     kept;
+		for (size_t k = 0; k < offset.size(); ++k) {
+			if (offset[k] < 0) continue;
+			key.push_back(g.sampleKey[k]); // ascending, as sampleKey
+			shear.push_back(p.contactShear[k]);
+			dashpot.push_back(p.contactDashpot[k]);
+			kept.push_back(offset[k]);
+		}
+		p.contactKey.swap(key);
+		p.contactShear.swap(shear);
+		p.contactDashpot.swap(dashpot);
+		p.contactOffset.swap(kept);
+	}
 }
 
 void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom&)
 {
+	if (!(patchAngleTolerance > 0 && patchAngleTolerance < 1))
+		throw std::invalid_argument(
+		        "Ig2_RdemBlock_RdemBlock_RdemGeom.patchAngleTolerance = " + rdem::numberText(patchAngleTolerance) + ": must be > 0 and < 1");
+	if (!(patchTravelTolerance > 0 && patchTravelTolerance <= 0.1))
+		throw std::invalid_argument(
+		        "Ig2_RdemBlock_RdemBlock_RdemGeom.patchTravelTolerance = " + rdem::numberText(patchTravelTolerance) + ": must be > 0 and <= 0.1");
 	if (segmentsPerEdge < 1)
 		throw std::invalid_argument(
 		        "Ig2_RdemBlock_RdemBlock_RdemGeom.segmentsPerEdge = " + std::to_string(segmentsPerEdge) + ": must be an integer >= 1");
@@ -190,6 +274,16 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 		}
 		return false;
 	}
+	if (persistentContacts) {
+		auto g            = shared_ptr<RdemGeom>(new RdemGeom);
+		g->samplesPerEdge = contactSamples();
+		if (derivePatch(A, B, s1.ori, s2.ori, *g, nullptr)) {
+			g->ell1 = faceDistance(A, g->normal);
+			g->ell2 = faceDistance(B, g->normal);
+			I->geom = g;
+			return true;
+		}
+	}
 	RdemGeom probe;
 	probe.samplesPerEdge = contactSamples();
 	sampleContacts(pair, s1, s2, tol, contactSamples(), probe);
@@ -207,6 +301,54 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 	g->ell2 = faceDistance(B, probe.sampleNormal[0]);
 	I->geom = g; // replaces a certificate that no longer holds
 	return true; // samples of this step are already in place
+}
+
+bool Ig2_RdemBlock_RdemBlock_RdemGeom::patchHolds(RdemGeom& g, const State& s1, const State& s2, const Vector3r& shift2) const
+{
+	const Quaternionr q1c = s1.ori.conjugate();
+	const Vector3r    rel = q1c * (s2.pos + shift2 - s1.pos);
+	if (!(rdem::rigidTravel<Real>(g.patchRelPos, g.patchRelOri, rel, q1c * s2.ori, g.patchRadius) <= g.patchTravel)) return false;
+	g.normal = (s1.ori * g.segNormal1 - s2.ori * g.segNormal2).normalized();
+	return true;
+}
+
+bool Ig2_RdemBlock_RdemBlock_RdemGeom::derivePatch(const Block& A, const Block& B, const Quaternionr& q1, const Quaternionr& q2, RdemGeom& g, RdemPhys* p) const
+{
+	const Real hMin = math::min(A.half.minCoeff(), B.half.minCoeff());
+	// Gap tolerance: a tenth of the smaller half-extent, to tell the faces that meet from the others (two faces of a
+	// block are 2h apart); the pair overlaps already (blocksOverlap).
+	const auto fp = rdem::facePatch<Real>(A, B, contactSamples(), patchAngleTolerance, hMin / 10);
+	if (!fp.found) return false;
+	const Vector3r   nA = fp.faceA.normal(A), nB = fp.faceB.normal(B), n = (nA - nB).normalized();
+	vector<Vector3r> mid(fp.point1.size());
+	for (size_t i = 0; i < mid.size(); ++i)
+		mid[i] = (fp.point1[i] + fp.point2[i]) / 2;
+	if (p) {
+		// The history of the old patch, or of the last step's samples, passed to the new springs (handOver).
+		const ContactHistory from = g.nPatch() > 0 && p->contactKey.empty() && p->contactOffset.size() == g.nPatch()
+		        ? patchHistory(g, *p, A, B, (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized())
+		        : sampleHistory(g, *p);
+		vector<Real> depth(mid.size());
+		for (size_t i = 0; i < mid.size(); ++i)
+			depth[i] = -(fp.point2[i] - fp.point1[i]).dot(n);
+		vector<Real> offset = handOver(from, mid, depth, *p);
+		p->contactKey.clear();
+		p->contactOffset.swap(offset);
+	}
+	g.patch.clear();
+	for (size_t i = 0; i < mid.size(); ++i)
+		rdem::PatchSprings<Real>::append(
+		        g.patch, A.rot.transpose() * (fp.point1[i] - A.pos), B.rot.transpose() * (fp.point2[i] - B.pos), fp.pointArea[i]);
+	g.patchArea   = fp.area;
+	g.segNormal1  = A.rot.transpose() * nA;
+	g.segNormal2  = B.rot.transpose() * nB;
+	g.normal      = n;
+	g.patchRelPos = A.rot.transpose() * (B.pos - A.pos);
+	g.patchRelOri = q1.conjugate() * q2;
+	g.patchRadius = B.half.norm();
+	g.patchTravel = patchTravelTolerance * hMin;
+	g.clearSamples();
+	return true;
 }
 
 bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
@@ -232,15 +374,27 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 		skippedTests += 1;
 		return false;
 	}
+	// A face-to-face contact whose blocks have not moved enough to change its patch: its springs are in place.
+	if (I->phys && static_cast<RdemGeom*>(I->geom.get())->nPatch() > 0 && patchHolds(*static_cast<RdemGeom*>(I->geom.get()), state1, state2, shift2))
+		return true;
 	const Block A { state1.pos, state1.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape1.get())->extents };
 	const Block B { state2.pos + shift2, state2.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape2.get())->extents };
 	if (!I->phys) return force ? bond(A, B, I) : findContact(A, B, state1, state2, I);
 
 	const rdem::BlockPair<Real> pair(A, B);
-	const Real                  tol = touchTolerance(A, B);
-	RdemGeom&                   g   = *static_cast<RdemGeom*>(I->geom.get());
+	const Real                  tol     = touchTolerance(A, B);
+	RdemGeom&                   g       = *static_cast<RdemGeom*>(I->geom.get());
+	RdemPhys&                   p       = *static_cast<RdemPhys*>(I->phys.get());
+	const bool                  overlap = rdem::blocksOverlap<Real>(pair, tol);
+	if (overlap && persistentContacts && derivePatch(A, B, state1.ori, state2.ori, g, &p)) return true;
+	// Sampled: a patch whose faces no longer meet hands its history to the samples.
+	const ContactHistory from = g.nPatch() > 0 && p.contactKey.empty() && p.contactOffset.size() == g.nPatch()
+	        ? patchHistory(g, p, A, B, (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized())
+	        : ContactHistory();
+	g.clearPatch();
 	g.clearSamples();
-	if (rdem::blocksOverlap<Real>(pair, tol)) sampleContacts(pair, state1, state2, tol, g.samplesPerEdge, g);
+	if (overlap) sampleContacts(pair, state1, state2, tol, g.samplesPerEdge, g);
+	if (!from.pos.empty()) handOverToSamples(from, g, p);
 	return true; // a real interaction stays; the law erases it when no sample is in contact
 }
 

@@ -10,6 +10,7 @@
 #include <core/Dispatching.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
+#include <pkg/rdem/RdemPhys.hpp>
 #include <pkg/rdem/RdemSharedState.hpp>
 #include <pkg/rdem/math/BlockGeometry.hpp>
 
@@ -43,7 +44,8 @@ public:
 	        const Vector3r&                shift2,
 	        const bool&                    force,
 	        const shared_ptr<Interaction>& I) override;
-	/// Throws std::invalid_argument (Python: ValueError) for segmentsPerEdge < 1, contactSamplesPerEdge < 0, a negative bondGapTolerance or prefetchDistance < -1.
+	/// Throws std::invalid_argument (Python: ValueError) for segmentsPerEdge < 1, contactSamplesPerEdge < 0, a negative
+	/// bondGapTolerance, prefetchDistance < -1, or a patch tolerance outside its range.
 	void postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom&);
 	/* Separating-axis tests saved so far by RdemGap certificates, summed over threads. Not an attribute: YADE's
 	   attribute macros instantiate boost::python::extract<OpenMPAccumulator<…>>, which gcc 12 flags with
@@ -57,7 +59,9 @@ public:
 
 *Bonding.* Called through ``utils.createInteraction`` (``force=True``) on two blocks whose faces are parallel, aligned and within ``bondGapTolerance``, it cuts the shared rectangle into ``segmentsPerEdge``² segments and fixes their centres as material points of both blocks (paper §3.1, Fig. 2a): the face is stored in both body frames (:yref:`RdemGeom`). Blocks that share no face make ``createInteraction`` fail. Afterwards, every step, it computes the bond's current face normal and the relative displacements of the segments' material points from the blocks' states (:yref:`RdemGeom.normal`; paper eq. 14), which :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` turns into forces.
 
-*Contact.* For pairs found by the collider (not bonded), a separating-axis test first discards blocks that are apart or only touch; otherwise the pair's normal is the face axis of least overlap (blended within 1 %), and the trapezoid sample grid of each block's faces that face the other is tested against it (depth: distance to travel along the normal to leave the other block; :ref:`theory §4 <rdem-theory-4>`). Bonded pairs are never sampled: their broken segments are the paper's contact springs. A bond whose segments are all broken and whose blocks have slid apart is turned into a sampled contact by :yref:`Law2_RdemGeom_RdemPhys_FaceSprings`.
+*Face-to-face contact.* For pairs found by the collider (not bonded) that overlap with two faces meeting face to face (outward normals antiparallel within ``patchAngleTolerance``), with :yref:`persistentContacts<Ig2_RdemBlock_RdemBlock_RdemGeom::persistentContacts>` on (the default), the two faces are clipped against each other once (``rdem::facePatch``: Sutherland-Hodgman clipping [SutherlandHodgman1974]_ in body 1's face plane; :ref:`theory §4.3 <rdem-theory-4-3>`) and the patch gets $(m+1)\times(m+1)$ contact springs at fixed material points of both blocks (trapezoid nodes; the vertices of cells the patch's edge cuts; tributary areas and their first moments exact), stored in :yref:`RdemGeom.patch` and updated every step as a bond's segments, with their history (shear elongation) by spring. The patch is derived again only when the blocks have moved relative to each other, at any of their points, by more than ``patchTravelTolerance`` times the smaller half-extent (``rdem::rigidTravel`` in body 1's frame), the springs' history (their compression, shear elongation and dashpot force) passing to the nearest new springs; when the faces no longer meet, the contact is sampled. Each step of a persistent contact costs a relative-travel bound and its springs, instead of the separating-axis test and the sample grids.
+
+*Sampled contact.* For other pairs found by the collider (not bonded), a separating-axis test first discards blocks that are apart or only touch; otherwise the pair's normal is the face axis of least overlap (blended within 1 %), and the trapezoid sample grid of each block's faces that face the other is tested against it (depth: distance to travel along the normal to leave the other block; :ref:`theory §4 <rdem-theory-4>`). Bonded pairs are never sampled: their broken segments are the paper's contact springs. A bond whose segments are all broken and whose blocks have slid apart is turned into a sampled contact by :yref:`Law2_RdemGeom_RdemPhys_FaceSprings`.
 
 Not for periodic cells with shear (``shift2`` of the cell is honoured, the cell's shear is not).)""",
 		((int,segmentsPerEdge,2,Attr::triggerPostLoad,"$n$: each bonded face is cut into $n\\times n$ segments (paper: 4 springs per face, $n=2$); also the density of the contact sample grid. $n\\ge 1$."))
@@ -66,6 +70,9 @@ Not for periodic cells with shear (``shift2`` of the cell is honoured, the cell'
 		((shared_ptr<RdemJoint>,joint,,,"The :yref:`RdemJoint` given to the bonds made from now on (by ``utils.createInteraction``), or None (default): blocks bonded directly. ``rdem.bond(..., joint=...)`` sets it for its bonds and resets it."))
 		((bool,skipApart,true,,"Test a pair of blocks found apart again only once they may have moved enough to touch (:yref:`RdemGap`, with the travel recorded by :yref:`RdemContactGate`): after the first crack, the collider's pairs of grid neighbours that are apart by a strain-sized gap cost a few loads per step instead of a separating-axis test. Exact: the pairs skipped are those the test would find apart, so results do not depend on it."))
 		((shared_ptr<RdemSharedState>,shared,,,"What the plugin's engines share (:yref:`RdemSharedState`): the blocks' travel, recorded by :yref:`RdemContactGate` (handed by ``rdem.engines()``; None: the law's, taken at the first step; pairs are not skipped without it)."))
+		((bool,persistentContacts,true,,"Blocks whose faces meet face to face get a persistent patch of contact springs (``rdem::facePatch``, above) instead of sample points tested every step; False: every contact is sampled (the reference the patch is tested against, tests/yade/test_persistent_contact.py)."))
+		((Real,patchAngleTolerance,5e-5,Attr::triggerPostLoad,"Two faces meet face to face when their outward normals satisfy $\\mathbf{n}_1\\cdot\\mathbf{n}_2\\le-(1-\\epsilon_\\theta)$: the default $5\\times10^{-5}$ is an angle of 0.01 rad, across which the depth of a face of size $L$ varies by $0.01L$, far beyond an elastic contact's overlap: a tilted block touches by an edge, which the patch's springs on the edge also carry, and the force direction differs from the sampled contact's by at most half that angle. $0<\\epsilon_\\theta<1$."))
+		((Real,patchTravelTolerance,1e-3,Attr::triggerPostLoad,"A patch holds while no point of body 2 has moved relative to body 1 by more than this times the smaller half-extent of the two blocks; beyond, it is derived again. The patch's boundary is then off by at most that distance, and its area by at most the perimeter times it: $4\\epsilon_T h_{max}/h_{min}$ relative for cubes, 0.4 % at the default $10^{-3}$, while a block sliding at 1 m/s at a step of $10^{-6}$ s keeps its patch for ten steps of a 2 cm block. $0<\\epsilon_T\\le0.1$."))
 		((int,prefetchDistance,-1,Attr::triggerPostLoad,"How many interactions ahead of the one being processed this functor asks the processor to fetch the data of (interaction, geometry, physics, bodies and their states, in stages; ``pkg/rdem/RdemPrefetch.hpp``), to hide the memory latency of scenes larger than the cache. $-1$ (default): automatic, 8 once the interactions' data exceed the last-level cache, else off; 0: off; $>0$: always, at this distance. A hint only: results do not depend on it. $\\ge -1$."))
 		,
 		/* ctor */
@@ -86,6 +93,14 @@ private:
 	/// false, with a new certificate (RdemGap) if the blocks are apart and skipApart is on.
 	bool
 	findContact(const rdem::OrientedBlock<Real>& A, const rdem::OrientedBlock<Real>& B, const State& s1, const State& s2, const shared_ptr<Interaction>& I);
+	/// Whether g's patch still holds for the blocks' states (relative travel within g.patchTravel); if so, sets g.normal.
+	bool patchHolds(RdemGeom& g, const State& s1, const State& s2, const Vector3r& shift2) const;
+	/// (Re)derives g's face-to-face patch (rdem::facePatch) for the blocks A, B with orientations q1, q2; false, with g
+	/// unchanged, if their faces do not meet. With p, the history of the old patch or of the last step's samples passes to
+	/// the new springs (nearest point).
+	bool derivePatch(
+	        const rdem::OrientedBlock<Real>& A, const rdem::OrientedBlock<Real>& B, const Quaternionr& q1, const Quaternionr& q2, RdemGeom& g, RdemPhys* p)
+	        const;
 };
 REGISTER_SERIALIZABLE(Ig2_RdemBlock_RdemBlock_RdemGeom);
 

@@ -28,10 +28,10 @@ CREATE_LOGGER(Law2_RdemGeom_RdemPhys_FaceSprings);
 /* How to read this file: Law2_RdemGeom_RdemPhys_FaceSprings::go (at the end) sends a bond to bondForces and a contact of
    blocks that are not bonded to sampledContactForces. A bond's segments run one of three laws each step: restoringSpring
    (an intact segment, eqs. 14-16), softeningSpring (an intact segment of a softening bond, doc/sphinx/rdemTheory.rst §2.1) or
-   brokenSegment (its contact spring, eqs. 13, 17). The physics of a point is in pkg/rdem/math/FaceSprings.hpp
-   (rdem::restoringStress, rdem::contactSpringForce) and pkg/rdem/math/Softening.hpp (rdem::softeningStep), unit-tested
-   there; this file turns
-   the blocks' motion into their arguments and their results into forces, moments, counters and energies. */
+   brokenSegment (its contact spring, eqs. 13, 17). A face-to-face contact goes to patchContactForces. The physics of
+   a point is in pkg/rdem/math/FaceSprings.hpp (rdem::restoringStress, rdem::contactSpringForce) and
+   pkg/rdem/math/Softening.hpp (rdem::softeningStep), unit-tested there; this file turns the blocks' motion into their
+   arguments and their results into forces, moments, counters and energies. */
 namespace {
 	using Energies = rdem::SpringEnergies<Real>;
 
@@ -408,6 +408,71 @@ namespace {
 		return true;
 	}
 
+	/// The springs of a face-to-face patch in one step: arm of each spring's contact point from x₂ [m] and its depth [m].
+	struct PatchStep {
+		std::vector<Vector3r> arm2;
+		std::vector<Real>     depth;
+	};
+
+	/* Blocks that are not bonded, face to face: the contact springs of their patch (RdemGeom::patch, made by
+	   Ig2_RdemBlock_RdemBlock_RdemGeom from rdem::facePatch), fixed material points P₁ of body 1 and P₂ of body 2 as the
+	   segments of a bond: depth δ = -(P₂ - P₁)·n (n from body 1 to body 2, RdemGeom::normal of this step), contact
+	   point at the mid-point, the contact spring of rdem::contactSpringForce (eqs. 13, 17) as for a sampled point, its
+	   history by spring (RdemPhys::contactShear …; contactOffset < 0: out of contact in the last step). As a sampled
+	   point, a spring that starts its contact δ₀ deep counts from δ₀, lowered whenever the depth is. The dashpot caps
+	   share the area of the springs in contact, as for sampled points. Returns false when no spring is in contact. */
+	bool patchContactForces(const RdemGeom& g, RdemPhys& p, const Pair& pair, Energies& e, ForceOnBody2& out)
+	{
+		const auto   springs = g.patchSprings();
+		const size_t n       = springs.size;
+		if (!p.contactKey.empty() || p.contactOffset.size() != n) { // a new patch without history (a sampled contact's was handed over)
+			p.contactKey.clear();
+			p.contactShear.assign(n, Vector3r::Zero());
+			p.contactDashpot.assign(n, Vector3r::Zero());
+			p.contactOffset.assign(n, Real(-1));
+		}
+		static thread_local PatchStep step;
+		step.arm2.resize(n);
+		step.depth.resize(n);
+		const Matrix3r  R1 = pair.s1.ori.toRotationMatrix(), R2 = pair.s2.ori.toRotationMatrix();
+		const Vector3r& nrm         = g.normal;
+		const Vector3r  dx          = pair.x2 - pair.x1;
+		Real            contactArea = 0;
+		for (size_t i = 0; i < n; ++i) {
+			const Vector3r a1 = R1 * springs.point1(i), a2 = R2 * springs.point2(i);
+			const Vector3r d = dx + a2 - a1; // P₂ - P₁
+			step.depth[i]    = -d.dot(nrm);
+			step.arm2[i]     = a2 - d / 2; // the mid-point, from x₂
+			if (step.depth[i] > 0) contactArea += springs.area(i);
+		}
+		bool touching = false;
+		for (size_t i = 0; i < n; ++i) {
+			const Real delta = step.depth[i];
+			if (!(delta > 0)) {
+				p.contactShear[i] = p.contactDashpot[i] = Vector3r::Zero();
+				p.contactOffset[i]                      = -1;
+				continue;
+			}
+			touching           = true;
+			p.contactOffset[i] = p.contactOffset[i] >= 0 ? math::min(p.contactOffset[i], delta) : delta;
+			const Real     a   = springs.area(i);
+			const Vector3r C   = pair.x2 + step.arm2[i];
+			const auto     c   = pair.contactConstants(p, a, C, nrm, a / contactArea, p.tanFriction);
+			const Vector3r F   = rdem::contactSpringForce<Real>(
+                                c,
+                                delta - p.contactOffset[i],
+                                nrm,
+                                pair.relativeVelocity(step.arm2[i]),
+                                pair.dt,
+                                p.contactShear[i],
+                                p.contactDashpot[i],
+                                pair.trackEnergy,
+                                e);
+			out.add(F, step.arm2[i]);
+		}
+		return touching;
+	}
+
 	/// Calls f(law) for every Law2_RdemGeom_RdemPhys_FaceSprings in the InteractionLoops of the scene.
 	template <class F> void forEachLaw(const Scene* scene, F f) { rdem::forEachLoopFunctor<Law2_RdemGeom_RdemPhys_FaceSprings>(scene, f); }
 } // namespace
@@ -451,7 +516,9 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	Energies     e;
 	Breaks       breaks;
 	ForceOnBody2 on2;
-	const bool   keep = g.nSegments() > 0 ? bondForces(g, p, pair, totalStress, e, breaks, on2) : sampledContactForces(g, p, pair, e, on2);
+	const bool   keep = g.nSegments() > 0 ? bondForces(g, p, pair, totalStress, e, breaks, on2)
+	          : g.nPatch() > 0            ? patchContactForces(g, p, pair, e, on2)
+	                                      : sampledContactForces(g, p, pair, e, on2);
 	if (breaks.tension) shared->tensionBreaks += breaks.tension;
 	if (breaks.shear) shared->shearBreaks += breaks.shear;
 	if (!keep) {
@@ -517,7 +584,8 @@ namespace {
 	   each bond segment at its material point of body 1 (paper eq. 14: the restoring spring, or the contact spring of a
 	   broken segment, of the same k̄A), with the dashpot of a broken segment that touched in the last step (it left a
 	   stress; one that touches again before the next update is covered by the time step's safety factor, as contacts
-	   that start); each contact sample with its dashpot (eq. 13). Dashpots are capped as contactConstants caps them,
+	   that start); each contact sample with its dashpot (eq. 13); each spring of a face-to-face patch at its material point
+	   of body 1, along the pair's normal, with its dashpot (eq. 13, its share of the patch area). Dashpots are capped as contactConstants caps them,
 	   for the step capDt (no cap for capDt = 0); a broken segment's share of the contact area is bounded by 1. */
 	template <class F> void forPointSprings(Scene* sc, const Interaction& I, Real capDt, F f)
 	{
@@ -558,6 +626,13 @@ namespace {
 			  c[0],
 			  c[1]);
 		}
+		const auto springs = g.patchSprings(); // a face-to-face contact's springs, at body 1's material points
+		for (size_t k = 0; k < springs.size; ++k) {
+			const Vector3r arm1 = s1.ori * Vector3r(springs.point1(k)), point = s1.pos + arm1;
+			const Real     a = springs.area(k);
+			const Vector2r c = dashpots(point, normal, a, a / g.patchArea);
+			f(b1, b2, point, arm1, Vector3r(point - s2.pos), normal, p.weightNormal * p.kn * a, p.weightShear * p.ks * a, c[0], c[1]);
+		}
 	}
 } // namespace
 
@@ -565,7 +640,7 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::addStiffness(Scene* sc, rdem::BlockStif
 {
 	for (const Interaction* I : rdem::interactionsInIdOrder(sc)) {
 		const auto& g = *static_cast<const RdemGeom*>(I->geom.get());
-		if (g.nSegments() == 0 && g.sampleKey.empty()) continue;
+		if (g.nSegments() == 0 && g.sampleKey.empty() && g.nPatch() == 0) continue;
 		K.beginPair(I->getId1(), I->getId2());
 		C.beginPair(I->getId1(), I->getId2());
 		forPointSprings(

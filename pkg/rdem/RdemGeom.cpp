@@ -40,6 +40,33 @@ vector<Vector3r> RdemGeom::segDispPy(const shared_ptr<State>& s1, const shared_p
 	return out;
 }
 
+vector<Vector3r> RdemGeom::patchPoints1() const
+{
+	vector<Vector3r> out;
+	const auto       springs = patchSprings();
+	for (size_t i = 0; i < springs.size; ++i)
+		out.push_back(springs.point1(i));
+	return out;
+}
+
+vector<Vector3r> RdemGeom::patchPoints2() const
+{
+	vector<Vector3r> out;
+	const auto       springs = patchSprings();
+	for (size_t i = 0; i < springs.size; ++i)
+		out.push_back(springs.point2(i));
+	return out;
+}
+
+vector<Real> RdemGeom::patchAreas() const
+{
+	vector<Real> out;
+	const auto   springs = patchSprings();
+	for (size_t i = 0; i < springs.size; ++i)
+		out.push_back(springs.area(i));
+	return out;
+}
+
 void RdemGeom::clearSamples()
 {
 	sampleKey.clear();

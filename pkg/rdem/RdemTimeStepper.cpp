@@ -180,7 +180,7 @@ vector<Real> RdemTimeStepper::springSignature(Scene* sc)
 		const auto* p = static_cast<const RdemPhys*>(I->phys.get());
 		nReal += 1;
 		nSegments += Real(g->nSegments());
-		nSamples += Real(g->sampleKey.size());
+		nSamples += Real(g->sampleKey.size() + g->nPatch());
 		stiffness += p->weightNormal * p->kn + p->weightShear * p->ks;
 	}
 	for (const auto& b : *sc->bodies)
@@ -199,7 +199,7 @@ bool RdemTimeStepper::contactsPossible(Scene* sc)
 		if (!I->isReal()) continue;
 		const auto* g = dynamic_cast<RdemGeom*>(I->geom.get());
 		if (!g) continue;
-		if (!g->sampleKey.empty()) return true;
+		if (!g->sampleKey.empty() || g->nPatch() > 0) return true;
 		if (g->nSegments() > 0) bonded[size_t(I->getId1())] = bonded[size_t(I->getId2())] = 1;
 	}
 	if (!contactBound) return false;

@@ -115,15 +115,10 @@ class Contact(unittest.TestCase):
 		# and go; the defect fixed here created 1e5 times the inflow in one step)
 		self.assertLess(balance.growth, 1e-3 * inflow)
 
-	def testCrossedBeamsRest(self):
-		# rdem.engines' default samples the vertices; a beam laid across another (no corner of either on the other) has
-		# no vertex inside and takes the face grid of segmentsPerEdge = 2 instead
-		# (Ig2_RdemBlock_RdemBlock_RdemGeom.contactSamplesPerEdge). Without that it would fall through. It must rest on
-		# its contact springs: k = k_n * A_s with k_n = M/(l_A + l_B), M = E/(1 - nu^2) (the paper's springs, eq. 11-12),
-		# l = H, and A_s the sampled area: the three grid points of each face inside the other block, trapezoid weights
-		# 1/2, 1, 1/2 of a segment of 20 H^2, halved (both blocks sampled), 20 H^2 in all (the crossing itself is 4 H^2: the
-		# grid is coarse, the contact stiffer than a flush face of that area).
+	def crossedBeams(self, persistent):
+		"A beam (H x 10H x H, free) laid across another (10H x H x H, fixed) under gravity, to rest: (interaction, state)."
 		mat, base = self.scene(h=1.0, gravity=(0, 0, -9.81), dt=None)
+		rdem.geomFunctor().persistentContacts = persistent
 		O.bodies.erase(base)
 		lower = O.bodies.append(rdem.block((0, 0, 0), (10 * H, H, H), mat, fixed=True))
 		upper = O.bodies.append(rdem.block((0, 0, 2 * H), (H, 10 * H, H), mat))
@@ -131,16 +126,38 @@ class Contact(unittest.TestCase):
 			rdem.run(1000)
 		s = O.bodies[upper].state
 		I = O.interactions[lower, upper]
+		return I, s, 2 * H - (s.pos[2] - O.bodies[lower].state.pos[2])
+
+	def testCrossedBeamsRest(self):
+		# Sampled contact (persistentContacts=False): rdem.engines' default samples the vertices; a beam laid across
+		# another (no corner of either on the other) has no vertex inside and takes the face grid of segmentsPerEdge = 2
+		# instead (Ig2_RdemBlock_RdemBlock_RdemGeom.contactSamplesPerEdge). Without that it would fall through. It must
+		# rest on its contact springs: k = k_n * A_s with k_n = M/(l_A + l_B), M = E/(1 - nu^2) (the paper's springs,
+		# eq. 11-12), l = H, and A_s the sampled area: the three grid points of each face inside the other block,
+		# trapezoid weights 1/2, 1, 1/2 of a segment of 20 H^2, halved (both blocks sampled), 20 H^2 in all (the crossing
+		# itself is 4 H^2: the grid is coarse, the contact stiffer than a flush face of that area).
+		I, s, overlap = self.crossedBeams(persistent=False)
 		self.assertEqual(I.geom.samplesPerEdge, 2)  # the face grid, not the vertices
 		self.assertEqual(len(I.phys.contactKey), 6)  # three points of each face
 		# The springs count from the depth at which the samples were first seen (doc/theory.md §4.1), reached in the
 		# first steps of the fall (1/2 g (n dt)^2, 1-3 % of the static overlap here): the overlap is that plus the static one.
 		offset = sum(I.phys.contactOffset) / len(I.phys.contactOffset)
-		overlap = 2 * H - (s.pos[2] - O.bodies[lower].state.pos[2])
 		static = s.mass * 9.81 / (30e9 / (1 - 0.2**2) / (2 * H) * 20 * H * H)
-		print('crossed beams: overlap %.4g m, static %.4g m, entry depth %.3g m, velocity %.3g m/s' % (overlap, static, offset, s.vel.norm()))
+		print('crossed beams, sampled: overlap %.4g m, static %.4g m, entry depth %.3g m, velocity %.3g m/s' % (overlap, static, offset, s.vel.norm()))
 		self.assertAlmostEqual((overlap - offset) / static, 1, delta=1e-3)  # at rest: the dashpots left nothing of the first swing
 
+	def testCrossedBeamsRestOnPatch(self):
+		# The default (persistentContacts): the two faces meet face to face, so the contact is their intersection, the
+		# H x H crossing (doc/theory.md §4.3), with a spring at each of its 4 corners (contactSamplesPerEdge = 1), area
+		# 4 H^2 exactly: the static overlap is m g / (k_n 4 H^2), five times the sampled contact's.
+		I, s, overlap = self.crossedBeams(persistent=True)
+		self.assertEqual(len(I.geom.patchAreas), 4)
+		self.assertAlmostEqual(I.geom.patchArea / (4 * H * H), 1, delta=1e-12)
+		offset = sum(I.phys.contactOffset) / len(I.phys.contactOffset)
+		self.assertGreaterEqual(min(I.phys.contactOffset), 0)  # all four in contact
+		static = s.mass * 9.81 / (30e9 / (1 - 0.2**2) / (2 * H) * 4 * H * H)
+		print('crossed beams, patch: overlap %.4g m, static %.4g m, entry depth %.3g m, velocity %.3g m/s' % (overlap, static, offset, s.vel.norm()))
+		self.assertAlmostEqual((overlap - offset) / static, 1, delta=1e-3)
 
 if __name__ == '__main__':
 	harness.run(Contact)

@@ -66,6 +66,9 @@ class Rocking(unittest.TestCase):
 	def testInteriorSamplesKeepTooMuch(self):
 		O.reset()
 		rock = RockingBlock(b=0.1, h=0.5, theta0=0.0987, contactSamples=2)
+		# the sampled contact (a persistent face-to-face patch with the same 3x3 points keeps 1.03 eta^2: its points are
+		# material points of both blocks, not samples of each block's own face tested against the other's volume)
+		rdem.geomFunctor().persistentContacts = False
 		tq, theta1 = firstImpactAndNextAmplitude(rock, 0.0987)
 		self.assertGreater(rock.energyRatio(0.0987, theta1) / rock.eta()**2, 1.05)
 

@@ -70,8 +70,8 @@ class SaveLoad(unittest.TestCase):
 		return sum(1 for I in O.interactions if isinstance(I.phys, RdemPhys) and 0 < I.phys.nIntact() < len(I.phys.segState))
 
 	def sampledContacts(self):
-		"""Contacts of blocks that are not bonded, with contact points this step."""
-		return sum(1 for I in O.interactions if isinstance(I.geom, RdemGeom) and not I.geom.segArea and I.geom.sampleKey)
+		"""Contacts of blocks that are not bonded, with contact points this step (sampled, or a face-to-face patch)."""
+		return sum(1 for I in O.interactions if isinstance(I.geom, RdemGeom) and not I.geom.segArea and (I.geom.sampleKey or I.geom.patchAreas))
 
 	def roundTrip(self, formulation, ext, dt=2e-6):
 		self.scene(formulation, dt)
