@@ -145,7 +145,8 @@ namespace {
 			const Vector3r P1 = A.pos + A.rot * springs.point1(i), P2 = B.pos + B.rot * springs.point2(i);
 			h.pos.push_back((P1 + P2) / 2);
 			const Real depth = -(P2 - P1).dot(n);
-			h.compression.push_back(i < p.contactOffset.size() && p.contactOffset[i] >= 0 ? math::max(depth - p.contactOffset[i], Real(0)) : Real(-1));
+			h.compression.push_back(
+			        i < p.contactOffset.size() && p.contactOffset[i] >= 0 ? math::max(depth - p.contactOffset[i], Real(0)) : Real(-1));
 		}
 		return h;
 	}
@@ -185,7 +186,7 @@ namespace {
 	/// The history of a patch passed to this step's samples of g (handOver), as the law's sample history in p.
 	void handOverToSamples(const ContactHistory& from, const RdemGeom& g, RdemPhys& p)
 	{
-		vector<Real> offset = handOver(from, g.samplePoint, g.sampleDepth, p);
+		vector<Real>     offset = handOver(from, g.samplePoint, g.sampleDepth, p);
 		vector<int>      key;
 		vector<Vector3r> shear, dashpot;
 		vector<Real>     kept;
@@ -318,7 +319,11 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::derivePatch(const Block& A, const Block& 
 	// Gap tolerance: a tenth of the smaller half-extent, to tell the faces that meet from the others (two faces of a
 	// block are 2h apart); the pair overlaps already (blocksOverlap).
 	const auto fp = rdem::facePatch<Real>(A, B, contactSamples(), patchAngleTolerance, hMin / 10);
-	if (!fp.found) return false;
+	// A sliver (two grid neighbours that share an edge, strained into each other) is an edge contact: sampled, with
+	// its edge-to-edge test. A patch is a face-to-face contact from a hundredth of the smaller face on.
+	const int  kA = fp.faceA.k, kB = fp.faceB.k;
+	const Real faceA = A.half[(kA + 1) % 3] * A.half[(kA + 2) % 3], faceB = B.half[(kB + 1) % 3] * B.half[(kB + 2) % 3];
+	if (!fp.found || fp.area < Real(0.04) * math::min(faceA, faceB)) return false;
 	const Vector3r   nA = fp.faceA.normal(A), nB = fp.faceB.normal(B), n = (nA - nB).normalized();
 	vector<Vector3r> mid(fp.point1.size());
 	for (size_t i = 0; i < mid.size(); ++i)
@@ -328,7 +333,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::derivePatch(const Block& A, const Block& 
 		const ContactHistory from = g.nPatch() > 0 && p->contactKey.empty() && p->contactOffset.size() == g.nPatch()
 		        ? patchHistory(g, *p, A, B, (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized())
 		        : sampleHistory(g, *p);
-		vector<Real> depth(mid.size());
+		vector<Real>         depth(mid.size());
 		for (size_t i = 0; i < mid.size(); ++i)
 			depth[i] = -(fp.point2[i] - fp.point1[i]).dot(n);
 		vector<Real> offset = handOver(from, mid, depth, *p);

@@ -408,10 +408,31 @@ namespace {
 		return true;
 	}
 
-	/// The springs of a face-to-face patch in one step: arm of each spring's contact point from x₂ [m] and its depth [m].
-	struct PatchStep {
-		std::vector<Vector3r> arm2;
-		std::vector<Real>     depth;
+	/* The terms of Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap that do not depend on the point, for the many points of
+	   one interaction: 1/m and 1/I_min of each free block (zero for a fixed one). caps() gives the same caps. */
+	struct DashpotCaps {
+		Real     invMass1, invInertia1, invMass2, invInertia2;
+		Vector3r x1, x2;
+		Real     dt;
+		DashpotCaps(const State& s1, const Vector3r& c1, const State& s2, const Vector3r& c2, Real step)
+		        : invMass1(s1.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / s1.mass)
+		        , invInertia1(s1.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / s1.inertia.minCoeff())
+		        , invMass2(s2.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / s2.mass)
+		        , invInertia2(s2.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / s2.inertia.minCoeff())
+		        , x1(c1)
+		        , x2(c2)
+		        , dt(step)
+		{
+		}
+		/// (c_n, c_s) caps at point C with normal n for the share of the contact area [N·s/m] (dashpotCap).
+		Vector2r caps(const Vector3r& C, const Vector3r& n, Real share) const
+		{
+			const Vector3r r1 = C - x1, r2 = C - x2;
+			const Real     invN = invMass1 + invMass2 + r1.cross(n).squaredNorm() * invInertia1 + r2.cross(n).squaredNorm() * invInertia2;
+			const Real     invS = invMass1 + invMass2 + r1.squaredNorm() * invInertia1 + r2.squaredNorm() * invInertia2;
+			const Real     inf  = std::numeric_limits<Real>::infinity();
+			return Vector2r(invN > 0 ? share / (invN * dt) : inf, invS > 0 ? share / (invS * dt) : inf);
+		}
 	};
 
 	/* Blocks that are not bonded, face to face: the contact springs of their patch (RdemGeom::patch, made by
@@ -431,46 +452,50 @@ namespace {
 			p.contactDashpot.assign(n, Vector3r::Zero());
 			p.contactOffset.assign(n, Real(-1));
 		}
-		static thread_local PatchStep step;
-		step.arm2.resize(n);
-		step.depth.resize(n);
 		const Matrix3r  R1 = pair.s1.ori.toRotationMatrix(), R2 = pair.s2.ori.toRotationMatrix();
-		const Vector3r& nrm         = g.normal;
-		const Vector3r  dx          = pair.x2 - pair.x1;
-		Real            contactArea = 0;
-		for (size_t i = 0; i < n; ++i) {
-			const Vector3r a1 = R1 * springs.point1(i), a2 = R2 * springs.point2(i);
-			const Vector3r d = dx + a2 - a1; // P₂ - P₁
-			step.depth[i]    = -d.dot(nrm);
-			step.arm2[i]     = a2 - d / 2; // the mid-point, from x₂
-			if (step.depth[i] > 0) contactArea += springs.area(i);
+		const Vector3r& nrm = g.normal;
+		const Vector3r  dx  = pair.x2 - pair.x1;
+		// Two passes over the springs, both from the stored points (no buffer): the area in contact, for the dashpot caps'
+		// shares, then the forces.
+		Real contactArea = 0;
+		for (size_t i = 0; i < n; ++i)
+			if ((dx + R2 * springs.point2(i) - R1 * springs.point1(i)).dot(nrm) < 0) contactArea += springs.area(i);
+		if (!(contactArea > 0)) {
+			std::fill(p.contactOffset.begin(), p.contactOffset.end(), Real(-1));
+			return false;
 		}
-		bool touching = false;
+		const DashpotCaps caps(pair.s1, pair.x1, pair.s2, pair.x2, pair.dt);
+		const Real        wn = p.weightNormal, ws = p.weightShear;
 		for (size_t i = 0; i < n; ++i) {
-			const Real delta = step.depth[i];
+			const Vector3r a2    = R2 * springs.point2(i);
+			const Vector3r d     = dx + a2 - R1 * springs.point1(i); // P₂ - P₁
+			const Real     delta = -d.dot(nrm);
 			if (!(delta > 0)) {
 				p.contactShear[i] = p.contactDashpot[i] = Vector3r::Zero();
 				p.contactOffset[i]                      = -1;
 				continue;
 			}
-			touching           = true;
-			p.contactOffset[i] = p.contactOffset[i] >= 0 ? math::min(p.contactOffset[i], delta) : delta;
-			const Real     a   = springs.area(i);
-			const Vector3r C   = pair.x2 + step.arm2[i];
-			const auto     c   = pair.contactConstants(p, a, C, nrm, a / contactArea, p.tanFriction);
-			const Vector3r F   = rdem::contactSpringForce<Real>(
-                                c,
-                                delta - p.contactOffset[i],
-                                nrm,
-                                pair.relativeVelocity(step.arm2[i]),
-                                pair.dt,
-                                p.contactShear[i],
-                                p.contactDashpot[i],
-                                pair.trackEnergy,
-                                e);
-			out.add(F, step.arm2[i]);
+			p.contactOffset[i]                      = p.contactOffset[i] >= 0 ? math::min(p.contactOffset[i], delta) : delta;
+			const Vector3r                     arm2 = a2 - d / 2; // the mid-point, from x₂
+			const Real                         a    = springs.area(i);
+			const Real                         an = wn * a, as = ws * a;
+			const Vector2r                     cMax = caps.caps(pair.x2 + arm2, nrm, a / contactArea);
+			const rdem::ContactConstants<Real> c {
+				p.kn * an, p.ks * as, math::min(p.cn * an, cMax[0]), math::min(p.cs * as, cMax[1]), p.tanFriction
+			};
+			const Vector3r F = rdem::contactSpringForce<Real>(
+			        c,
+			        delta - p.contactOffset[i],
+			        nrm,
+			        pair.relativeVelocity(arm2),
+			        pair.dt,
+			        p.contactShear[i],
+			        p.contactDashpot[i],
+			        pair.trackEnergy,
+			        e);
+			out.add(F, arm2);
 		}
-		return touching;
+		return true;
 	}
 
 	/// Calls f(law) for every Law2_RdemGeom_RdemPhys_FaceSprings in the InteractionLoops of the scene.
