@@ -1,6 +1,6 @@
 """Persistent face-to-face contacts against sampled ones and against closed forms.
 
-Two blocks meet face to face: with Ig2_RdemBlock_RdemBlock_RdemGeom.persistentContacts (the default) their contact is a
+Two blocks meet face to face: with Ig2_RdemBlock_RdemBlock_RdemGeom.persistentContacts (opt-in) their contact is a
 patch, the two faces clipped against each other once (rdem::facePatch), carrying contact springs at fixed material points;
 without it, sample points of both faces are tested at every step (the reference). Both blocks are held (blockedDOFs), so
 that the forces come from the configuration alone: a first step at an overlap eps starts every contact point (a point
@@ -192,6 +192,7 @@ class PersistentContact(unittest.TestCase):
 		h = 0.01
 		mat = O.materials.append(RdemMat(young=YOUNG, poisson=0.2, density=2300, frictionAngle=0.5))
 		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=True, dt=1e-7)
+		rdem.geomFunctor().persistentContacts = True  # opt-in (off by default)
 		base = O.bodies.append(rdem.block((0, 0, 0), (h, h, h), mat, fixed=True))
 		b = O.bodies.append(rdem.block((0, 0, 2 * h - 1e-7), (h, h, h), mat, fixed=True))
 		O.step()
