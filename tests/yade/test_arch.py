@@ -41,13 +41,13 @@ def arch(factor, young=1e9):
 	return a, t
 
 
-def load(a, until=2.0, ramp=0.2, stopDrop=0.1 * R, watchDrop=0.02 * R):
-	"""Ramp gravity up over ``ramp`` s, then hold it, up to ``until`` s or a crown drop of ``stopDrop``. Returns (largest crown
-	drop, hinges when the drop first passed ``watchDrop`` or None)."""
+def run(a, gravity, until, stopDrop, watchDrop):
+	"""Step with ``gravity(t)`` [m/s2] up to ``until`` s or a crown drop of ``stopDrop``. Returns (largest crown drop, hinges
+	when the drop first passed ``watchDrop`` or None)."""
 	newton = rdem.newtonIntegrator()
 	largest, hinges = 0.0, None
 	while O.time < until:
-		newton.gravity = Vector3(0, 0, -G * min(1.0, O.time / ramp))
+		newton.gravity = gravity(O.time)
 		rdem.run(50)
 		drop = a.crownDrop()
 		largest = max(largest, drop)
@@ -56,24 +56,22 @@ def load(a, until=2.0, ramp=0.2, stopDrop=0.1 * R, watchDrop=0.02 * R):
 		if drop > stopDrop:
 			break
 	return largest, hinges
+
+
+def load(a, until=2.0, ramp=0.2, stopDrop=0.1 * R, watchDrop=0.02 * R):
+	"""Ramp gravity up over ``ramp`` s, then hold it (run)."""
+	return run(a, lambda t: Vector3(0, 0, -G * min(1.0, t / ramp)), until, stopDrop, watchDrop)
 
 
 def tilt(a, multiplier, ramp=1.0, until=3.0, stopDrop=0.1 * R, watchDrop=0.02 * R):
 	"""Gravity turned so that the horizontal load (towards -x) is ``multiplier`` times the vertical, ramped over ``ramp`` s
-	and held to ``until`` s. Returns (largest crown drop, hinges when it first passed ``watchDrop`` or None)."""
-	newton = rdem.newtonIntegrator()
-	largest, hinges = 0.0, None
-	while O.time < until:
-		th = math.atan(multiplier * min(1.0, O.time / ramp))
-		newton.gravity = Vector3(-G * math.sin(th), 0, -G * math.cos(th))
-		rdem.run(50)
-		drop = a.crownDrop()
-		largest = max(largest, drop)
-		if hinges is None and drop > watchDrop:
-			hinges = a.hinges(opening=0.005 * a.layout.params['thickness'])
-		if drop > stopDrop:
-			break
-	return largest, hinges
+	and held (run)."""
+
+	def gravity(t):
+		th = math.atan(multiplier * min(1.0, t / ramp))
+		return Vector3(-G * math.sin(th), 0, -G * math.cos(th))
+
+	return run(a, gravity, until, stopDrop, watchDrop)
 
 
 class ArchUnderItsWeight(unittest.TestCase):
