@@ -6,24 +6,28 @@
 # package ships no headers, so we build YADE ourselves once and cache it, keyed by version and
 # options. A fresh clone on the same machine finds the cache and builds only the plugin.
 #
-# Usage: tools/build-yade.sh [--gui|--no-gui]   prints the cached prefix (building it first if needed)
+# Usage: tools/build-yade.sh [--gui|--no-gui] [--mpi]   prints the cached prefix (building it first if needed)
 #        --gui      also YADE's Qt viewer (feature GUI: yade.qt, the controller, OpenGL renderers)
 #        --no-gui   headless YADE (the default)
+#        --mpi      also YADE's MPI (ENABLE_MPI: yade.mpy; adds -DYADE_MPI, which changes Body and Scene, so it is a
+#                   YADE of its own, cached beside the others; needs libopenmpi-dev and python3-mpi4py)
 # Environment: YADE_RDEM_CACHE          cache root (default ${XDG_CACHE_HOME:-~/.cache}/yade-rdem)
 #              YADE_RDEM_JOBS           parallel compile jobs (default: nproc)
 set -euo pipefail
 
 gui=OFF
+mpi=OFF
 for arg in "$@"; do
 	case $arg in
 	--gui) gui=ON ;;
 	--no-gui) gui=OFF ;;
+	--mpi) mpi=ON ;;
 	-h | --help)
 		sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'
 		exit 0
 		;;
 	*)
-		echo "build-yade: error: unknown argument '$arg' (allowed: --gui, --no-gui)" >&2
+		echo "build-yade: error: unknown argument '$arg' (allowed: --gui, --no-gui, --mpi)" >&2
 		exit 2
 		;;
 	esac
@@ -44,6 +48,9 @@ YADE_OPTIONS=(
 	-DENABLE_MULTI_REAL_HP=OFF -DENABLE_USEFUL_ERRORS=OFF -DDISABLE_SAVE_TEMPS=ON -DPYTHON_VERSION=3.11
 	-DPYTHON_EXECUTABLE=/usr/bin/python3)
 [[ $gui == ON ]] && YADE_OPTIONS+=(-DENABLE_GUI=ON -DUSE_QT5=ON -DCMAKE_UNITY_BUILD=ON)
+# MPI: the unity build too (unless the GUI already asked for it).
+[[ $mpi == ON ]] && YADE_OPTIONS+=(-DENABLE_MPI=ON)
+[[ $mpi == ON && $gui == OFF ]] && YADE_OPTIONS+=(-DCMAKE_UNITY_BUILD=ON)
 readonly YADE_OPTIONS
 
 # Debian's python3 must win over pyenv or other interpreters on PATH (YADE's CMake loops over
@@ -76,6 +83,10 @@ for mod in numpy IPython matplotlib pygraphviz Xlib sphinx tkinter mpmath; do
 		die "Debian python3 lacks module '$mod'; run tools/install-deps.sh first"
 done
 [[ -f /usr/include/eigen3/Eigen/Core ]] || die "Eigen headers missing; run tools/install-deps.sh first"
+if [[ $mpi == ON ]]; then
+	command -v mpicxx >/dev/null || die "'mpicxx' (libopenmpi-dev) not found; run tools/install-deps.sh first"
+	/usr/bin/python3 -c "import mpi4py" 2>/dev/null || die "Debian python3 lacks mpi4py (python3-mpi4py); run tools/install-deps.sh first"
+fi
 [[ -d /usr/include/vtk-9.1 ]] || die "VTK 9.1 headers missing (libvtk9-dev); run tools/install-deps.sh first"
 if [[ $gui == ON ]]; then
 	# YADE's CMake finds these itself, but a missing one only turns the GUI silently off (or fails late).
