@@ -304,7 +304,8 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 		return;
 	}
 	if (active) {
-		contactDt = method == "lanczos" && contactLimit && contactsPossible(sc) ? gershgorin(sc) : std::numeric_limits<Real>::infinity();
+		contactDt = method == "lanczos" && contactLimit && contactsPossible(sc) ? rdem::criticallyDampedStep(springCriticalDt)
+		                                                                        : std::numeric_limits<Real>::infinity();
 		sc->dt    = safety * math::min(criticalDt, contactDt);
 	} else
 		checkFixedDt(sc);

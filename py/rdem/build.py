@@ -275,7 +275,8 @@ def engines(segmentsPerEdge=2,
 	    ``'always'``: the collider runs from the first step; ``False``: no new contact is ever made.
 	:param damping: Cundall's non-viscous damping of :yref:`NewtonIntegrator` (0 = none, as in the paper).
 	:param dt: ``None``: :yref:`RdemTimeStepper` sets ``O.dt = safety·Δt_crit`` with its Lanczos estimate of Δt_crit (the tight
-	    limit, dashpots included), kept below the Gershgorin bound while contacts act or can form (``contactLimit``); a number:
+	    limit, dashpots included), kept below the limit of a critically damped stiffest mode, (√2 − 1)·2/ω_max, while contacts act
+	    or can form (``contactLimit``); a number:
 	    fixed ``O.dt`` [s], checked against the stepper's Lanczos estimate (with the contact dashpots): refused above it
 	    (doc/stability.md).
 	:param verletDist: collider sweep distance [m] (default: none, the collider runs every step; set it to about 5 % of the
@@ -346,7 +347,7 @@ def engines(segmentsPerEdge=2,
 	eng += [loop, RdemForceAssembler(shared=shared, label=L['forces'])]  # forces summed per body in a fixed order: O.load continues bit for bit
 	if withPoisson:
 		eng.append(RdemPoissonEngine(corotational=corotational, shared=shared, label=L['poisson']))
-	# The automatic step is 0.8 of the tight (Lanczos) limit, also below the Gershgorin bound while contacts act or can form
+	# The automatic step is 0.8 of the tight (Lanczos) limit, also below the critically damped limit while contacts act or can form
 	# (RdemTimeStepper.contactLimit); a fixed step is checked against the Lanczos estimate, refused above it
 	stepper = RdemTimeStepper(safety=safety, timeStepUpdateInterval=100, active=dt is None, contactBound=bool(recontact),
 	                          method='lanczos', shared=shared, label=L['stepper'])

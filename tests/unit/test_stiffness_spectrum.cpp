@@ -280,6 +280,21 @@ TEST(StiffnessSpectrum, DampedStepOfOneOscillatorIsBelytschkos)
 	EXPECT_DOUBLE_EQ(rdem::dampedCriticalStep(0.0, 4.0), 0.5); // dashpots alone: Δt ≤ 2/λ_C
 }
 
+TEST(StiffnessSpectrum, CriticallyDampedStepIsSqrtTwoMinusOneOfTheUndamped)
+{
+	// a critical dashpot (ζ = 1) on the mode of the undamped limit 2/ω: (√2 - 1)·2/ω, and the one-oscillator leapfrog
+	// with that dashpot is stable just below it and unstable just above
+	for (double undamped : { 1e-7, 3.2e-6, 0.5 }) {
+		const double dt = rdem::criticallyDampedStep(undamped);
+		EXPECT_NEAR(dt / undamped, std::sqrt(2.0) - 1, 1e-14) << undamped;
+		const double omega = 2 / undamped;
+		const MX     K = MX::Constant(1, 1, omega * omega), C = MX::Constant(1, 1, 2 * omega);
+		EXPECT_LE(amplificationRadius(K * undamped * undamped, C * undamped, 0.999 * dt / undamped), 1 + 1e-12) << undamped;
+		EXPECT_GT(amplificationRadius(K * undamped * undamped, C * undamped, 1.001 * dt / undamped), 1 + 1e-6) << undamped;
+	}
+	EXPECT_EQ(rdem::criticallyDampedStep(std::numeric_limits<double>::infinity()), std::numeric_limits<double>::infinity());
+}
+
 TEST(StiffnessSpectrum, DampedStepIsALowerBoundOfTheLimitOfCoupledSystems)
 {
 	// random positive semi-definite K and C (C of rank 2: dashpots at a few points): stable at the bound, and the

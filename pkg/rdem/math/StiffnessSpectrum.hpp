@@ -337,5 +337,17 @@ namespace rdem {
 		return d > 0 ? 4 / d : std::numeric_limits<S>::infinity();
 	}
 
+	/* Critical time step [s] once a critically damped dashpot (ζ = 1: eq. 13 with h = 1) acts on the stiffest mode, from
+	   that mode's undamped limit 2/ω_max [s]: dampedCriticalStep(ω², 2ω) = (√2 − 1)·2/ω [Belytschko2000]_ §6.3, 0.414 of
+	   it. The step that a contact forming before the next estimate allows (RdemTimeStepper.contactLimit). Infinite for an
+	   infinite undamped limit (nothing elastic). */
+	template <class S> S criticallyDampedStep(S undampedDt)
+	{
+		using std::isfinite;
+		if (!isfinite(undampedDt)) return std::numeric_limits<S>::infinity();
+		const S omega = 2 / undampedDt;
+		return dampedCriticalStep(omega * omega, 2 * omega);
+	}
+
 } // namespace rdem
 } // namespace yade
