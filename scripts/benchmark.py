@@ -37,6 +37,10 @@ Cases
                 state 5000 steps after the first broken spring, saved by a native run first, then 100 steps counted as
                 the difference of 120 and 20 steps after loading, so that the first steps after loading, which test
                 every pair again, are not counted).
+    wall        the validated Magenes & Calvi MI1 test (scripts/shear_wall.py with its defaults: 1180 blocks, softening,
+                cells, the quasi-static scheme) saved once per build at 0.02 % drift (intact, just after the push
+                starts) and at 0.30 % drift (the peak, joints cracked), timed after loading, 1 and 2 threads;
+    wall-instructions  the same two states' instructions per block-step under callgrind (120 minus 20 steps after loading);
     misses      memory traffic of the 22³ cube (11 616 blocks, beyond this machine's 32 MB L3 cache): last-level data
                 cache misses per block-step under callgrind's cache simulation with a 32 MB, 16-way last level, over 11
                 steps (needs valgrind; about 5 minutes; not in the default plan).
@@ -366,6 +370,30 @@ def runLoaded(spec):
 	return out
 
 
+def wallState(drift):
+	"""Path of the validated MI1 run (scripts/shear_wall.py with its defaults, one thread) saved when the push reaches
+	``drift`` [%], by a native run of this build into the system's temporary folder; made if missing (0.3 %: several
+	minutes)."""
+	import hashlib
+	import subprocess
+	import tempfile
+	with open(pluginLibrary(), 'rb') as f:
+		build = hashlib.sha1(f.read()).hexdigest()[:12]
+	path = os.path.join(tempfile.gettempdir(), 'rdem-mi1-%.2f-%s.yade.gz' % (drift, build))
+	if not os.path.exists(path):
+		print('benchmark: saving MI1 at %.2f %% drift to %s ...' % (drift, path), flush=True)
+		script = os.path.join(os.path.dirname(os.path.abspath(sys.argv[0])), 'shear_wall.py')
+		out = os.path.join(tempfile.gettempdir(), 'rdem-mi1-%.2f-%s' % (drift, build))
+		cmd = rdem.batch.yadeCommand() + ['-j1', '-n', '-x', script, '--max-drift', str(drift), '--save', path, '--vtk-every', '0', '--out', out]
+		proc = subprocess.run(cmd, env=dict(os.environ, OMP_NUM_THREADS='1'), stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+		if proc.returncode != 0 or not os.path.exists(path):
+			raise RuntimeError('scripts/shear_wall.py failed:\n%s' % proc.stdout[-3000:])
+	return path
+
+
+WALL_STATES = ((0.02, 'MI1 intact (0.02 % drift)'), (0.30, 'MI1 at its peak (0.30 % drift)'))
+
+
 def heavyCrackedState():
 	"""Path of the paper's cube at 20 mm/s to three times its first-break displacement (runHeavySave), saved by a native
 	run of this build into the system's temporary folder; made if missing (a few minutes)."""
@@ -415,6 +443,11 @@ if 'heavy' in cli.cases:
 	heavyState = heavyCrackedState()
 	for th in (1, 2):
 		plan.append(('paper', 'paper cube heavily cracked (20 mm/s, 3× first break)', dict(kind='loaded', load=heavyState, steps=steps // 3, warmup=warmup), th))
+if 'wall' in cli.cases:
+	for drift, label in WALL_STATES:
+		state = wallState(drift)
+		for th in (1, 2):
+			plan.append(('wall', label, dict(kind='loaded', load=state, steps=steps // 3, warmup=warmup), th))
 if 'cpm' in cli.cases:
 	for th in (1, 2):
 		plan.append(('paper', 'YADE CpmMat spheres, same grid', dict(kind='cpm', steps=steps, warmup=warmup), th))
@@ -474,6 +507,16 @@ if 'heavy-instructions' in cli.cases:
 	heavy = dict(long_, steps=100, instructions=long_['instructions'] - short['instructions'])
 	heavy['perBlockStep'] = heavy['instructions'] / 100 / heavy['bodies']
 	print('    %.0f instructions per block-step' % heavy['perBlockStep'], flush=True)
+wallCounts = []
+if 'wall-instructions' in cli.cases:
+	for drift, label in WALL_STATES:
+		state = wallState(drift)
+		print('benchmark: instructions per block-step of %s under callgrind (a few minutes) ...' % label, flush=True)
+		short, long_ = countInstructions(steps=20, load=state), countInstructions(steps=120, load=state)
+		c = dict(long_, steps=100, instructions=long_['instructions'] - short['instructions'], label=label)
+		c['perBlockStep'] = c['instructions'] / 100 / c['bodies']
+		wallCounts.append(c)
+		print('    %.0f instructions per block-step' % c['perBlockStep'], flush=True)
 misses = None
 if 'misses' in cli.cases:
 	print('benchmark: last-level cache misses per block-step of the 22³ cube under callgrind (about 5 minutes) ...', flush=True)
@@ -520,6 +563,25 @@ if heavy:
 	    'Heavily cracked: the paper\'s cube loaded at 20 mm/s to three times its first-break displacement (%d interactions, %d of them real), '
 	    '100 steps (the difference of 120 and 20 steps after loading the saved state): **%.0f instructions per block-step**%s.' %
 	    (heavy['interactions'], heavy['real'], heavy['perBlockStep'], ', %.2f× intact' % (heavy['perBlockStep'] / count['perBlockStep']) if count else ''), ''
+	]
+wall = [r for r in results if r['section'] == 'wall']
+if wall or wallCounts:
+	lines += [
+	    '## A wall test: MI1 (Magenes & Calvi), the validated configuration', '',
+	    '`scripts/shear_wall.py` with its defaults saved at two points of its push and timed after loading (20 windows of `O.step()`); '
+	    'instructions under callgrind as the difference of 120 and 20 steps after loading (one thread).', ''
+	]
+if wall:
+	lines += ['| state | blocks | threads | interactions (real) | steps/s | µs per block-step | median window | rounds | speed-up |', '|---|---|---|---|---|---|---|---|---|']
+	for r in wall:
+		one = next(x for x in wall if x['label'] == r['label'] and x['threads'] == 1)
+		lines.append('| %s | %d | %d | %d (%d) | %.0f | %.3f | %.3f | %s | %.2f |' % (r['label'], r['bodies'], r['threads'], r['interactions'], r['real'], r['stepsPerSecond'],
+		                                                                           r['usPerBodyStep'], r['usPerBodyStepMedian'], rounds(r), r['stepsPerSecond'] / one['stepsPerSecond']))
+	lines.append('')
+for c in wallCounts:
+	lines += [
+	    '%s: %d interactions, %d of them real: **%.0f instructions per block-step**%s.' %
+	    (c['label'], c['interactions'], c['real'], c['perBlockStep'], ', %.2f× the intact paper cube' % (c['perBlockStep'] / count['perBlockStep']) if count else ''), ''
 	]
 phases = [r for r in results if r['section'] == 'phases']
 if phases:
