@@ -79,6 +79,12 @@ class DocPointers(unittest.TestCase):
 		                 'guide (:ref:`theory §N.M <rdem-theory-N-M>`, :ref:`wall layouts <rdem-wall-layout>`), in comments '
 		                 'doc/sphinx/rdemTheory.rst §N.M or state the fact: ' + '; '.join(found))
 
+	def test_no_markdown_page_of_doc_in_theory(self):
+		"The theory page is carried into YADE's doc/sphinx too: it names the guide's other pages by label, not by path."
+		with open(THEORY, encoding='utf-8') as fh:
+			found = mdPaths(fh.read())
+		self.assertEqual(found, [], 'doc/sphinx/rdemTheory.rst points at doc/*.md; use :ref:`… <rdem-name>`: ' + ', '.join(found))
+
 	def test_exceptions_still_needed(self):
 		texts = dict(sources(PY))
 		for f in NOT_YET:
@@ -92,7 +98,7 @@ class DocPointers(unittest.TestCase):
 		self.assertIn('rdem-validation', labels)
 		self.assertIn('rdem-theory-5-4', labels)
 		bad, used = [], 0
-		for f, text in sources() + sources(PY):
+		for f, text in sources() + sources(PY) + sources(os.path.join('doc', 'sphinx', 'rdemTheory.rst')):
 			for label in re.findall(r':ref:`[^`<]*<(rdem-[\w-]+)>`', text):
 				used += 1
 				if label not in labels:
