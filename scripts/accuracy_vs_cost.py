@@ -60,7 +60,7 @@ def runPoint(point):
 		return bool(crack) or d > MAX_DISP
 
 	# Stepped with O.step() and timed with perf_counter: O.run() + O.wait() returns only at the next 40 ms poll of
-	# Omega's wait loop, up to 8 % of a short point (doc/performance.md, "How to read timings").
+	# Omega's wait loop, up to 8 % of a short point (doc/changelog.md, 2026-11-22, "How to read timings on this machine").
 	t0 = time.perf_counter()
 	while True:
 		for i in range(5):

@@ -5,7 +5,7 @@ Problem
     A state saved by scripts/shear_wall.py (``--save FILE``: the wall, its bonds and cracks, the engines, the top beam
     moving at the loading rate) is loaded and run for ``--steps`` steps, ``--rounds`` times, each round from the saved
     state again (the same work every round), timed with time.perf_counter around O.step() (doc/performance.md, "How to
-    read timings on this machine"). The threads are YADE's (``yade -jN``). Under callgrind the instruction count per
+    read these figures"). The threads are YADE's (``yade -jN``). Under callgrind the instruction count per
     block-step is the figure that does not move with the machine's load (doc/performance.md): run with ``--rounds 1``
     and two step counts, and take the difference (the first step after loading tests every pair again).
 

@@ -1,5 +1,5 @@
 /* Memory bandwidth and latency of this machine, one thread: what a pass over a scene larger than the cache can expect
-   (doc/performance.md, fifth round).
+   (doc/changelog.md, 2026-11-22, fifth round).
 
    For a buffer of MB mebibytes: the read bandwidth of a sequential sum, the read+write bandwidth of a scaled copy
    (fastest of 5 passes each), and the latency of a chain of dependent loads through the buffer's 64-byte lines in

@@ -43,7 +43,9 @@ YADE_WRAPPER = 'https://yade-dem.org/doc/yade.wrapper.html#yade.wrapper.'
 
 # Every Markdown page of doc/ is a topic of the guide: topics/<name>.md (generated here, not in git) includes it, so a
 # page added to doc/ appears without touching the guide. theory.md (a pointer to rdemTheory.rst), validation.md and
-# changelog.md have their own places.
+# changelog.md have their own places. Each page gets the label rdem-<name> (doc/wall-layout.md: rdem-wall-layout;
+# validation.md and changelog.md: rdem-validation, rdem-changelog), by which the docstrings of py/rdem refer to it
+# (``:ref:`wall layouts <rdem-wall-layout>```), since YADE's tree has no doc/*.md (tests/python/test_doc_pointers.py).
 TOPICS = os.path.join(here, 'topics')
 os.makedirs(TOPICS, exist_ok=True)
 for _f in os.listdir(TOPICS):
@@ -52,7 +54,7 @@ for _f in os.listdir(TOPICS):
 for _f in sorted(os.listdir(os.path.join(root, 'doc'))):
 	if _f.endswith('.md') and _f not in ('theory.md', 'validation.md', 'changelog.md'):
 		with open(os.path.join(TOPICS, _f), 'w', encoding='utf-8') as _out:
-			_out.write('```{include} ../../%s\n:relative-images:\n```\n' % _f)
+			_out.write('(rdem-%s)=\n```{include} ../../%s\n:relative-images:\n```\n' % (_f[:-3], _f))
 OURS = set(rdem_classes.classNames(root))
 
 

@@ -1,5 +1,5 @@
 """Arches and barrel vaults as refined-DEM scenes (``rdem.masonry.arch``): :func:`arch` lays one out
-(:func:`rdem.arch_layout.archLayout`, doc/arches.md), appends its blocks to ``O.bodies``, clumps each voussoir's three
+(:func:`rdem.arch_layout.archLayout`, :ref:`arches <rdem-arches>`), appends its blocks to ``O.bodies``, clumps each voussoir's three
 boxes into one rigid body with the wedge's mass, centroid and in-plane rotational inertia, fixes the abutments or
 foundations, and bonds the joints if they are mortared. :class:`Arch` measures what an engineer looks at: the drop of
 the crown, and the opening of every joint on its intrados and extrados side (where hinges form).
@@ -142,7 +142,7 @@ def arch(span,
          origin=(0, 0, 0)):
 	"""Build an arch or barrel vault into the current scene. The first sixteen arguments are :func:`rdem.arch_layout.archLayout`'s
 	(lengths in m); ``O.engines`` must come from :func:`rdem.engines` first (for dry joints: ``recontact='always'`` and
-	``contactSamples=1``, so that hinges form on the joints' edges as in the distinct element codes, doc/theory.md §4.2).
+	``contactSamples=1``, so that hinges form on the joints' edges as in the distinct element codes, :ref:`theory §4.2 <rdem-theory-4-2>`).
 
 	:param joints: ``'dry'`` (voussoirs touch only through contacts) or ``'mortar'`` (every joint of a ring, the springings
 	    and the pier courses bonded with ``jointMaterial``; rings of a vault stay dry).

@@ -475,7 +475,7 @@ def _addSupports(lay, line, supports, ringDepth, nRings, zs, t, args):
 				M = ((inner[0] + outer[0]) / 2, (inner[1] + outer[1]) / 2)
 				# as long as the joint is wide, and wider than the joint by half of it on either side: the voussoir's
 				# vertices sample the abutment's face inside it, not on its edges (a vertex on an edge is lost to contact
-				# as soon as the voussoir turns outwards: doc/arches.md §1)
+				# as soon as the voussoir turns outwards: the arches page of the user guide, §1)
 				Lx = w
 				half = (Lx / 2, hy, w)
 				vol = 8 * half[0] * half[1] * half[2]

@@ -20,7 +20,7 @@ def block(center, halfExtents, material, orientation=Quaternion.Identity, fixed=
 
 	Mass $8\\rho abc$ and principal inertia $m(b^2+c^2)/3$, ... for half-extents $(a, b, c)$ [m]. :yref:`Body::aspherical` is set
 	unless the block is a cube: a cube's inertia is isotropic, Euler's equations then have no gyroscopic term, and
-	NewtonIntegrator's spherical update is exact for it and cheaper than the aspherical one (doc/performance.md)."""
+	NewtonIntegrator's spherical update is exact for it and cheaper than the aspherical one."""
 	a, b, c = (float(h) for h in halfExtents)
 	if min(a, b, c) <= 0:
 		raise ValueError('halfExtents = %s: every half-extent must be > 0 [m]' % (tuple(halfExtents), ))
@@ -268,7 +268,7 @@ def engines(segmentsPerEdge=2,
 	:param segmentsPerEdge: $n$, each bonded face carries $n\\times n$ springs (paper: 2).
 	:param formulation: ``'paper'`` (springs $E/(1-\\nu^2)$ + $D_p$ elements on $2\\times2\\times2$ grids, as published), ``'consistent'``
 	    (springs $\\lambda+2\\mu$ + $D_p$ elements on grids, Poisson cells on any other layout: the full isotropic tensor, see
-	    doc/theory.md §5.2, §5.4) or ``None`` (refined DEM without the Poisson effect, springs as in the paper).
+	    :ref:`theory §5.2 <rdem-theory-5-2>`, :ref:`§5.4 <rdem-theory-5-4>`) or ``None`` (refined DEM without the Poisson effect, springs as in the paper).
 	:param corotational: remove rigid rotations of the Poisson elements (needed for large rotations).
 	:param recontact: ``True``: the collider, so that separated blocks can touch again anywhere, switched on by
 	    :yref:`RdemContactGate` only once contacts can occur (the first broken spring, a free block, a second assembly);
@@ -278,24 +278,24 @@ def engines(segmentsPerEdge=2,
 	    limit, dashpots included), kept below the limit of a critically damped stiffest mode, (√2 − 1)·2/ω_max, while contacts act
 	    or can form (``contactLimit``); a number:
 	    fixed ``O.dt`` [s], checked against the stepper's Lanczos estimate (with the contact dashpots): refused above it
-	    (doc/stability.md).
+	    (:ref:`stability <rdem-stability>`).
 	:param verletDist: collider sweep distance [m] (default: none, the collider runs every step; set it to about 5 % of the
 	    block size for speed).
 	:param contactSamples: $m$, sample grid of the contacts of blocks that are not bonded, $(m+1)^2$ points per face
 	    (:yref:`Ig2_RdemBlock_RdemBlock_RdemGeom.contactSamplesPerEdge`). 1 (default): the vertices, as UDEC and 3DEC, which
-	    makes rocking impacts dissipate what Housner's theory says (doc/theory.md §4.2), with the face grid of
+	    makes rocking impacts dissipate what Housner's theory says (:ref:`theory §4.2 <rdem-theory-4-2>`), with the face grid of
 	    ``segmentsPerEdge`` for the contacts of faces that cross (no vertex of either block inside the other); $m > 1$: a
 	    face grid (inner samples store impact energy and give it back: +6 to +8 % energy kept at a rocking impact);
 	    ``None``: ``segmentsPerEdge``.
 	:param failureStress: ``'spring'`` (default, the paper's): restoring springs break on their own stresses (eqs. 15-16);
 	    ``'total'``: on the total normal stress of the face, springs plus Poisson cells
-	    (:yref:`Law2_RdemGeom_RdemPhys_FaceSprings.totalStress`, doc/theory.md §5.6; needs ``formulation='consistent'`` and
+	    (:yref:`Law2_RdemGeom_RdemPhys_FaceSprings.totalStress`, :ref:`theory §5.6 <rdem-theory-5-6>`; needs ``formulation='consistent'`` and
 	    cells, which ``rdem.poissonEngine().build`` then chooses).
 	:param poisson: not a parameter (it was the formulation's name, which ``poisson``, Poisson's ratio everywhere else,
 	    made a surprise): refused with a TypeError naming ``formulation``.
 	:param softening: ``False`` (default): the paper's brittle springs; ``True``: softening springs (tension, cohesion and
 	    a compression cap that soften with the fracture energies of the :yref:`RdemJoint` or :yref:`RdemMat`, the energy per
-	    unit crack area independent of the block size: :yref:`Ip2_RdemMat_RdemMat_RdemPhys.softening`, doc/theory.md §2.1).
+	    unit crack area independent of the block size: :yref:`Ip2_RdemMat_RdemMat_RdemPhys.softening`, :ref:`theory §2.1 <rdem-theory-2-1>`).
 	:param strengthCoV: coefficient of variation of the bonds' strengths (one lognormal factor of mean 1 per bond,
 	    :yref:`Ip2_RdemMat_RdemMat_RdemPhys.strengthCoV`); 0: uniform.
 	:param strengthPerSegment: with ``strengthCoV``: one factor per segment (spring) instead of per bond

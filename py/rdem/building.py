@@ -12,7 +12,7 @@ Typical use (after ``O.engines = rdem.engines(formulation='consistent', contactS
     b.fixBase(); rdem.poissonEngine().build(b.bonded())
     rdem.earthquake.shaker(motion, ids=b.base)
 
-Joints (doc/building.md): bed, head and collar joints, the corners and T-junctions included, are interface joints of
+Joints (:ref:`buildings <rdem-building>`): bed, head and collar joints, the corners and T-junctions included, are interface joints of
 the mortar (thickness $t$, :yref:`RdemJoint`); the base beam, lintels and slab pieces are bonded to the masonry by
 interfaces without thickness with the mortar's strengths; the blocks of a brick, and the slab pieces among themselves,
 are bonded directly; joists rest on their seats by contact and friction, or are tied (bonded with ``tieJoint``).

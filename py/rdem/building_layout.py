@@ -17,7 +17,8 @@ Typical use::
                          openings=[('front', 0, 1.035, 0.0, 0.78, 0.965)], floors='slab')
     lay.blocks, lay.pairs, lay.unitsOf(kind='lintel'), lay.blocksOf(wall='front', storey=0)
 
-See doc/building.md for the bond at corners, the floors and how joints are classified.
+See :ref:`buildings <rdem-building>` in the user guide for the bond at corners, the floors and how joints are
+classified.
 """
 import math
 import numbers
@@ -657,7 +658,7 @@ def buildingLayout(plan,
                    roofLoad=0.0,
                    baseHeight=0.2):
 	"""The geometry of a masonry building as axis-aligned boxes and the pairs that touch face to face (lengths in m,
-	masses in kg). See doc/building.md.
+	masses in kg). See :ref:`buildings <rdem-building>`.
 
 	:param plan: ``(length, width)``: a rectangle of that outer size (walls ``front``, ``right``, ``back``, ``left`` of
 	    :func:`rectangle`), or a list of wall axes, each ``dict(start=(x, y), end=(x, y), thickness=..., bond=...,

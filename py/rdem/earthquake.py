@@ -1,5 +1,5 @@
 """Earthquakes: a ground motion (:mod:`rdem.ground_motion`: records read from PEER ``.AT2`` or two-column files, synthetic
-pulses) applied to a scene by :yref:`RdemGroundShaker` (doc/earthquake.md).
+pulses) applied to a scene by :yref:`RdemGroundShaker` (:ref:`earthquakes <rdem-earthquake>`).
 
 Typical use::
 

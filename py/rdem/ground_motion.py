@@ -20,7 +20,7 @@ second order in $\\Delta t$ (the error at a fixed time is bounded by $t\\,\\Delt
 $f$). The velocity is exact for the piecewise-linear acceleration that :meth:`Record.at` interpolates; the
 displacement differs from that acceleration's exact double integral by $\\Delta t^2 (a(t) - a(0))/12$.
 
-See doc/ground-motion.md for the formats, the baseline correction and the synthetic pulses.
+See :ref:`ground motion <rdem-ground-motion>` in the user guide for the formats, the baseline correction and the synthetic pulses.
 """
 import math
 import numbers

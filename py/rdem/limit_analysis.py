@@ -163,7 +163,7 @@ def archMinimumThickness(voussoirs, tolerance=1e-10):
 
 	As $N\\to\\infty$, $t_{min}/R \\to 0.1075$ with the rupture joints at 54.5° from the crown (Milankovitch 1907; the
 	continuous arch); Heyman 1982's simplified calculation gives 0.106. For finite $N$ the value depends on how close a
-	joint comes to 54.5° (doc/arches.md §1). Units: lengths over $R$; angles in rad.
+	joint comes to 54.5° (:ref:`arches <rdem-arches>`, §1). Units: lengths over $R$; angles in rad.
 
 	:param voussoirs: $N \\ge 2$.
 	:param tolerance: on $t/R$.

@@ -8,7 +8,7 @@ Typical use (after ``O.engines = rdem.engines(formulation='consistent')``)::
     w = rdem.masonry.wall(1.51, 0.975, 0.12, bond='running', brickMaterial=brick, jointMaterial=mortar, topBeam=0.1, baseBeam=0.1)
     rdem.poissonEngine().build(w.ids)
 
-Joints (:ref:`theory §1.1 <rdem-theory-1-1>`, doc/wall-layout.md): with ``mortar='interface'`` every brick reaches the mid-planes of its joints
+Joints (:ref:`theory §1.1 <rdem-theory-1-1>`, :ref:`wall layouts <rdem-wall-layout>`): with ``mortar='interface'`` every brick reaches the mid-planes of its joints
 and each bed, head and collar bond puts brick, mortar and brick in series (:yref:`RdemJoint` of thickness $t$); with
 ``mortar='layer'`` the mortar is made of blocks of its own (so that its Poisson expansion acts on the bricks) and the
 brick–mortar bonds are interfaces of zero thickness with the joint's strengths. Blocks of one brick are bonded directly

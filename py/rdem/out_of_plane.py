@@ -1,4 +1,4 @@
-"""Out-of-plane scenes of unreinforced masonry (issue 26; doc/out-of-plane.md): a wall spanning one way between its base and a
+"""Out-of-plane scenes of unreinforced masonry (:ref:`out-of-plane mechanisms <rdem-out-of-plane>`): a wall spanning one way between its base and a
 top support pushed out of its plane quasi-statically (:class:`OneWayWallPush`), and a free-standing parapet on a roof
 shaken by a ground pulse (:class:`Parapet`). Each is checked against rigid-block theory
 (:class:`rdem.limit_analysis.OneWayWall`, :class:`rdem.rocking.RockingBlockEquation`) in tests/yade/test_out_of_plane.py
@@ -117,7 +117,7 @@ class OneWayWallPush:
 class Parapet:
 	"""Housner's block as a parapet: a free-standing wall $2b$ thick and $2h$ tall standing dry on a roof slab (a fixed block
 	that moves with the roof's motion, ``mode='prescribed'``), contacts at the vertices (``contactSamples=1``: impacts
-	follow Housner's, doc/theory.md §4.2) with critical dashpots and friction ``friction`` (high: it rocks, it does not
+	follow Housner's, :ref:`theory §4.2 <rdem-theory-4-2>`) with critical dashpots and friction ``friction`` (high: it rocks, it does not
 	slide). :meth:`shake` plays a one-sine pulse; :attr:`equation` is the rigid block's exact equation of motion.
 
 	In this class's frame the parapet's thickness is along $x$, the direction of the pulse, and its length along $y$; it

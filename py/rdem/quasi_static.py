@@ -1,4 +1,4 @@
-"""Quasi-static loading in fewer steps: the math of the scheme of doc/validation.md ("Quasi-static loading in fewer
+"""Quasi-static loading in fewer steps: the math of the scheme of the :ref:`validation <rdem-validation>` ("Quasi-static loading in fewer
 steps"), pure Python (standard library only), tested in tests/python/test_quasi_static.py; rdem.walltest applies it.
 
 A quasi-static test run as explicit dynamics costs (travel / rate) / Δt steps. Two levers keep the answer static:
@@ -16,7 +16,7 @@ A quasi-static test run as explicit dynamics costs (travel / rate) / Δt steps. 
   three rotational terms). Scaling each block's moments of inertia by :func:`rotationalInertiaScale` makes the
   rotational terms of its row no larger than the translational ones, without touching its mass: the weight, the
   applied loads and every static state are unchanged; only the rotations respond more slowly. Whether that moves the
-  result is measured (doc/validation.md), as for the rate.
+  result is measured (:ref:`validation <rdem-validation>`), as for the rate.
 """
 import math
 

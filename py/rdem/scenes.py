@@ -83,7 +83,7 @@ class CompressionTest:
 		# Contacts of blocks that are not bonded on the face grid of the springs, unless told: the paper's fixed 2 µs step
 		# was validated with it. With rdem.engines' vertex samples the corners of diagonal neighbours that touch after
 		# the first crack are four times stiffer, the critical step falls to 1.89 µs, and at 2 µs the cube blows apart
-		# (doc/defaults.md); with dt=None the time stepper follows them.
+		# (the user guide's defaults page, "Where the face grid stays"); with dt=None the time stepper follows them.
 		O.engines = build.engines(segmentsPerEdge=segmentsPerEdge,
 		                          contactSamples=contactSamples if contactSamples is not None else segmentsPerEdge,
 		                          formulation=formulation,

@@ -17,7 +17,8 @@ Typical use::
     for i, j, kind, area in lay.pairs: ...            # one bond per touching pair, by kind (bed, head, ...)
     print(lay.sketch())                               # the front face, one character per (l + t)/8
 
-See doc/wall-layout.md for the patterns, the two mortar models and how joints are classified.
+See :ref:`wall layouts <rdem-wall-layout>` in the user guide for the patterns, the two mortar models and how joints are
+classified.
 """
 import bisect
 import math
@@ -712,7 +713,7 @@ def wallLayout(length,
 	    bats at their ends), ``'english'`` (stretcher and header courses alternate; queen closers next to the end headers
 	    give a quarter-brick lap) or ``'flemish'`` (headers and stretchers alternate in each course, headers centred on
 	    the stretchers below; queen closers or three-quarter bats at the ends). Both wall ends are flush. See
-	    doc/wall-layout.md for sketches.
+	    :ref:`wall layouts <rdem-wall-layout>` for sketches.
 	:param blocksPerBrick: $(a, b, c)$ blocks along a brick's own length, width and height (a header's length runs
 	    along $y$); bats and closers get $\\max(1, \\mathrm{round}(a \\times$ their length $/ l))$ along their length, and
 	    likewise for the width and height. Blocks are cut at equal fractions of the brick's nominal box.

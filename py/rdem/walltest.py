@@ -28,12 +28,12 @@ actuators held that ratio). The base beam is fixed.
 Quasi-static loading: the top beam's velocity rises from 0 to ``rate`` along a half cosine over ``ramp`` seconds at the
 start and at every reversal, and Cundall's non-viscous damping of :yref:`NewtonIntegrator` (``rdem.engines(damping=...)``)
 takes out the vibrations; it acts on unbalanced forces only, so it does not change a static state. Whether a run is slow
-enough is checked by running it again at half the rate (scripts/shear_wall.py ``--rate``; doc/validation.md).
+enough is checked by running it again at half the rate (scripts/shear_wall.py ``--rate``; :ref:`validation <rdem-validation>`).
 """
 import math
 from yade import O, Vector3, Quaternion
 from yade.wrapper import ForceEngine, TorqueEngine, NewtonIntegrator
-from . import build, quasi_static  # relative: the package is also yade.rdem (doc/upstream.md)
+from . import build, quasi_static  # relative: the package is also yade.rdem (merged into YADE's tree)
 
 BOUNDARIES = ('fixed', 'cantilever')
 #: The top beam's blocked degrees of freedom per boundary condition (z is free: the vertical load acts along it).
@@ -264,7 +264,7 @@ class ShearWallTest:
 
 def scaleRotationalInertia(ids):
 	"""Multiply the principal moments of inertia of the blocks ``ids`` by :func:`rdem.quasi_static.rotationalInertiaScale`
-	of their half-extents (the rotational inertia scaling of the quasi-static scheme, doc/validation.md); their masses,
+	of their half-extents (the rotational inertia scaling of the quasi-static scheme, :ref:`validation <rdem-validation>`); their masses,
 	and so their weights and every static state, stay as they are. Call it before the time step is set (RdemTimeStepper
 	reads the inertias). Returns the largest factor applied."""
 	largest = 1.0
