@@ -66,6 +66,7 @@ class Assembly(unittest.TestCase):
 		random.seed(3)
 		for i in ids:
 			O.bodies[i].state.vel = Vector3(*(random.uniform(-0.01, 0.01) for _ in range(3)))
+		kinetic0 = sum(0.5 * O.bodies[i].state.mass * O.bodies[i].state.vel.squaredNorm() for i in ids)
 		O.trackEnergy = True
 		O.step()
 		for k in range(200):
@@ -73,8 +74,12 @@ class Assembly(unittest.TestCase):
 			F = sum((O.forces.f(i) for i in ids), Vector3.Zero)
 			scale = max(O.forces.f(i).norm() for i in ids)
 			self.assertLess(F.norm(), 1e-10 * scale)  # action = reaction, round-off of 27 sums
-		self.assertIn('rdemElastic', O.energy.keys())
-		self.assertGreater(O.energy['rdemElastic'], 0)
+		# the springs and elements hold a real share of the energy, and it balances: no external force, no damping, so
+		# the total (paired kinetic + springs + elements, RdemLeapfrogEnergy) is the initial kinetic energy. The blocks
+		# rotate freely, which YADE's aspherical integrator does not pair exactly (test_energy_balance: 1.9e-6 over 2000
+		# steps; measured here 1.0e-7 over 200): 1e-5, far below the energy of the elements or of a missed term
+		self.assertGreater(O.energy['rdemElastic'], 0.05 * kinetic0)
+		self.assertAlmostEqual(O.energy.total() / kinetic0, 1, delta=1e-5)
 
 	def testEnergyConservedWithoutDamping(self):
 		ids = self.bar(n=4)
