@@ -40,6 +40,10 @@ Cases
     wall        the validated Magenes & Calvi MI1 test (scripts/shear_wall.py with its defaults: 1180 blocks, softening,
                 cells, the quasi-static scheme) saved once per build at 0.02 % drift (intact, just after the push
                 starts) and at 0.30 % drift (the peak, joints cracked), timed after loading, 1 and 2 threads;
+    bigwall     a running-bond brick wall of about --wall-blocks blocks (default 1e5: 200 bricks × 250 courses, two
+                blocks per brick, 250 × 120 × 55 mm bricks, 10 mm joints; MI1's materials; cells, softening,
+                total-stress failure, the automatic step) on a fixed base beam under gravity, intact, 1 and 2 threads;
+                with its set-up time and memory per block;
     wall-instructions  the same two states' instructions per block-step under callgrind (120 minus 20 steps after loading);
     misses      memory traffic of the 22³ cube (11 616 blocks, beyond this machine's 32 MB L3 cache): last-level data
                 cache misses per block-step under callgrind's cache simulation with a 32 MB, 16-way last level, over 11
@@ -71,6 +75,7 @@ parser.add_argument('--sizes', type=int, nargs='+', default=None, help='blocks p
 parser.add_argument('--repeat', type=int, default=2, help='run the whole plan this many times, round robin, and keep each case\'s fastest round (default 2)')
 parser.add_argument('--out', default='doc/benchmark.md', help='markdown table to write (default doc/benchmark.md)')
 parser.add_argument('--collapse-blocks', type=int, default=22, help='blocks per edge of the collapsing cube (default 22)')
+parser.add_argument('--wall-blocks', type=float, default=1e5, help='blocks of the bigwall case, about (default 1e5)')
 parser.add_argument('--child', default=None, help=argparse.SUPPRESS)  # internal: run one case in this process
 cli = parser.parse_args(sys.argv[1:])
 
@@ -359,6 +364,39 @@ def runHeavySave(spec):
 	            real=sum(1 for I in O.interactions if I.isReal), breaks=int(law.tensionBreaks + law.shearBreaks), stepsPerSecond=0, usPerBodyStep=0)
 
 
+def runBigWall(spec):
+	"""A running-bond wall of about spec['blocks'] blocks (two per brick, courses : bricks per course = 5 : 4) with MI1's
+	materials (the rule set's values), Poisson cells, softening and total-stress failure, on a fixed base beam under
+	gravity; timed as the steady-state cases. Nothing breaks under its own weight: the intact phase of a wall."""
+	from yade import O
+	from yade import rdem
+	from yade.wrapper import RdemJoint
+	O.reset()
+	t0 = time.time()
+	bricks = spec['blocks'] / 2
+	perCourse = max(2, int(round(math.sqrt(bricks * 4 / 5))))
+	courses = max(2, int(round(bricks / perCourse)))
+	# MI1's values by the rule set (rdem.wall_database.materials; head joints bonded here): E 2.991 GPa, nu 0.25, 1800 kg/m3
+	brick = O.materials.append(
+	        RdemMat(young=2.991e9, poisson=0.25, density=1800, tensileStrength=1.2818e6, cohesion=1.7945e6, frictionAngle=math.atan(0.81), fractureEnergy=80,
+	                shearFractureEnergy=800, compressiveStrength=19.72e6, compressiveFractureEnergy=5000))
+	joint = RdemJoint(young=2.991e9, poisson=0.25, tensileStrength=0.15e6, cohesion=0.21e6, frictionAngle=math.atan(0.81), fractureEnergy=18,
+	                  shearFractureEnergy=125, compressiveStrength=7.92e6, compressiveFractureEnergy=5000)
+	O.engines = rdem.engines(segmentsPerEdge=2, contactSamples=2, formulation='consistent', failureStress='total', softening=True, gravity=(0, 0, -9.81),
+	                         damping=0.2, verletDist=0.003)  # Cundall's 0.2 as the validated quasi-static scheme
+	w = rdem.masonry.wall(perCourse * 0.26 - 0.01, courses * 0.065 - 0.01, 0.12, blocksPerBrick=(2, 1, 1), baseBeam=0.1, brickMaterial=brick, jointMaterial=joint)
+	rdem.poissonEngine().elements = 'cells'
+	rdem.poissonEngine().build(w.ids)
+	for i in w.beams['base']:
+		O.bodies[i].state.blockedDOFs = 'xyzXYZ'
+	O.dt = -1
+	n = len(O.bodies)
+	out = dict(bodies=n, setupSeconds=time.time() - t0, memoryKBPerBody=peakMemoryMB() * 1024 / n)
+	out.update(timed(n, spec['steps'], spec['warmup']))
+	out.update(dt=O.dt, interactions=len(O.interactions.all()), real=sum(1 for I in O.interactions if I.isReal), breaks=sum(rdem.breakCounts()))
+	return out
+
+
 def runLoaded(spec):
 	"""A saved state (spec['load']) timed as the steady-state cases."""
 	from yade import O
@@ -412,7 +450,7 @@ def heavyCrackedState():
 
 def child(spec):
 	res = dict(cpm=runCpm, crack=runCrack, count=runCount, phases=runPhases, collapse=runCollapse, heavysave=runHeavySave,
-	           loaded=runLoaded).get(spec['kind'], runRdem)(spec)
+	           loaded=runLoaded, bigwall=runBigWall).get(spec['kind'], runRdem)(spec)
 	res['threads'] = int(os.environ.get('OMP_NUM_THREADS', '1'))
 	rdem.batch.reportChild(res)
 
@@ -448,6 +486,13 @@ if 'wall' in cli.cases:
 		state = wallState(drift)
 		for th in (1, 2):
 			plan.append(('wall', label, dict(kind='loaded', load=state, steps=steps // 3, warmup=warmup), th))
+if 'bigwall' in cli.cases:
+	if not cli.wall_blocks >= 100:
+		sys.exit('--wall-blocks %g: must be >= 100' % cli.wall_blocks)
+	for th in (1, 2):
+		nb = cli.wall_blocks
+		plan.append(('bigwall', 'running-bond wall, about %.0f blocks' % nb,
+		             dict(kind='bigwall', blocks=nb, steps=max(20, int(steps * 1200 / nb)), warmup=min(warmup, max(20, int(steps * 1200 / nb)))), th))
 if 'cpm' in cli.cases:
 	for th in (1, 2):
 		plan.append(('paper', 'YADE CpmMat spheres, same grid', dict(kind='cpm', steps=steps, warmup=warmup), th))
@@ -564,6 +609,19 @@ if heavy:
 	    '100 steps (the difference of 120 and 20 steps after loading the saved state): **%.0f instructions per block-step**%s.' %
 	    (heavy['interactions'], heavy['real'], heavy['perBlockStep'], ', %.2f× intact' % (heavy['perBlockStep'] / count['perBlockStep']) if count else ''), ''
 	]
+bigwall = [r for r in results if r['section'] == 'bigwall']
+if bigwall:
+	lines += [
+	    '## A large wall, intact', '', 'See the header of scripts/benchmark.py (case bigwall); 20 windows of %d steps after the warm-up.' % bigwall[0]['steps'], '',
+	    '| blocks | threads | set-up [s] | memory [kB per block] | Δt [s] | interactions (real) | steps/s | µs per block-step | median window | rounds | speed-up | breaks |',
+	    '|---|---|---|---|---|---|---|---|---|---|---|---|'
+	]
+	for r in bigwall:
+		one = next(x for x in bigwall if x['threads'] == 1)
+		lines.append('| %d | %d | %.0f | %.1f | %.3g | %d (%d) | %.1f | %.3f | %.3f | %s | %.2f | %d |' %
+		             (r['bodies'], r['threads'], r['setupSeconds'], r['memoryKBPerBody'], r['dt'], r['interactions'], r['real'], r['stepsPerSecond'], r['usPerBodyStep'],
+		              r['usPerBodyStepMedian'], rounds(r), r['stepsPerSecond'] / one['stepsPerSecond'], r['breaks']))
+	lines.append('')
 wall = [r for r in results if r['section'] == 'wall']
 if wall or wallCounts:
 	lines += [
