@@ -187,7 +187,12 @@ for md, js, png in targets:
 	for p in (md, js, png):
 		os.makedirs(os.path.dirname(p), exist_ok=True)
 	with open(md, 'w') as f:
-		f.write(text + '\n')
+		f.write('# In-plane shear walls: model against measured peaks\n\nWritten by `build/bin/yade -n scripts/wall_database.py --replot --doc` from the runs of '
+		        '`build/bin/yade -n scripts/wall_database.py` (each wall by scripts/shear_wall.py with its defaults: the rule set of '
+		        'doc/validation.md, "Fifteen walls"). Model: the smoothed peak of a monotonic push; measured: the mean of the + and − peaks '
+		        'of the cyclic test. Failure modes: S shear, F flexure, H hybrid (the database\'s H-FS, H-FG), the model\'s by '
+		        '`rdem.wall_database.failureClass`.\n\n')
+		f.write(text + '\n\n![model against measured peaks and drifts](%s)\n' % os.path.relpath(png, os.path.dirname(md)))
 	with open(js, 'w') as f:
 		json.dump(dict(summary=summary, walls=out, rules={k: dict(value=v[0], source=v[1]) for k, v in wall_database.RULES.items()}), f, indent=1)
 	fig.savefig(png, dpi=110)
