@@ -28,13 +28,15 @@ How to run
     build/bin/yade -n scripts/shear_wall.py --wall PUP3 --out output/shear_wall_PUP3
     build/bin/yade -n scripts/shear_wall.py --shear-span 1 --sigma0 0.5 --cycles 0.05,0.1,0.2
     build/bin/yade -n scripts/wall_database.py                     every wall of the table, one after the other
+    build/bin/yade -n scripts/shear_wall.py --wall PUP1 --setup-only   build the scene only (every bond made and checked)
     build/bin/yade -n scripts/shear_wall.py --help                 every option
 
 Outputs (in --out, default output/shear_wall): results.json (inputs and the rule set's sources, peak load and drift,
 initial stiffness, first crack, cracks by joint/brick and mode, failure mode, energy balance, cost), history.txt
 (yade.plot's saveDataTxt), load_drift.png (load against drift with the measured peaks, energy, broken springs),
 cracks.png (the front of the wall with every broken spring, coloured by mode, at the peak and at the end), ParaView
-files in vtk/ (blocks.*.vtu from YADE's VTKRecorder, cracks.pvd).
+files in vtk/ (blocks.*.vtu from YADE's VTKRecorder, cracks.pvd); with --setup-only only setup.json (blocks, bonds, the bonds
+whose strengths the crack band lowered).
 """
 import argparse
 import json
