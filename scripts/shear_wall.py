@@ -28,13 +28,15 @@ How to run
     build/bin/yade -n scripts/shear_wall.py --wall PUP3 --out output/shear_wall_PUP3
     build/bin/yade -n scripts/shear_wall.py --shear-span 1 --sigma0 0.5 --cycles 0.05,0.1,0.2
     build/bin/yade -n scripts/wall_database.py                     every wall of the table, one after the other
+    build/bin/yade -n scripts/shear_wall.py --wall PUP1 --setup-only   build the scene only (every bond made and checked)
     build/bin/yade -n scripts/shear_wall.py --help                 every option
 
 Outputs (in --out, default output/shear_wall): results.json (inputs and the rule set's sources, peak load and drift,
 initial stiffness, first crack, cracks by joint/brick and mode, failure mode, energy balance, cost), history.txt
 (yade.plot's saveDataTxt), load_drift.png (load against drift with the measured peaks, energy, broken springs),
 cracks.png (the front of the wall with every broken spring, coloured by mode, at the peak and at the end), ParaView
-files in vtk/ (blocks.*.vtu from YADE's VTKRecorder, cracks.pvd).
+files in vtk/ (blocks.*.vtu from YADE's VTKRecorder, cracks.pvd); with --setup-only only setup.json (blocks, bonds, the bonds
+whose strengths the crack band lowered).
 """
 import argparse
 import json
@@ -117,6 +119,8 @@ k.add_argument('--failure-stress', choices=['total', 'spring'], default='total',
 k.add_argument('--springs', type=int, default=2, help='springs per face edge (default 2)')
 k.add_argument('--contact-samples', type=int, default=None, help="contact sample grid per face edge (default: --springs, the grid the walls of doc/validation.md were run with; 1: the vertices, rdem.engines' default)")
 k.add_argument('--softening', choices=['off', 'on'], default='on', help='softening law of the springs (default on; off: brittle, the paper)')
+k.add_argument('--crack-band', choices=['off', 'on'], default='on' if wall_database.rule('crackBand') else 'off',
+               help="with softening: springs that would snap back get Bazant & Oh's lowered strength instead of an error (default %(default)s, the rule set's)")
 k.add_argument('--head-joints', choices=['unbonded', 'bonded'], default=jnt['headJoints'],
                help='head joints without bond (compression and friction only, MannMuller1982) or bonded like the bed joints (default %(default)s, the rule set)')
 k.add_argument('--verlet', type=float, default=0.003, help='sweep distance of the collider [m] once contacts can occur (default 0.003; 0: the collider runs every step)')
@@ -125,6 +129,7 @@ o = parser.add_argument_group('output')
 o.add_argument('--smooth', type=float, default=scheme['smoothDrift'] * 100,
                help='width of the centred moving average of the load for the smoothed peak and the stop criterion [%% drift] (default %(default)g)')
 o.add_argument('--out', default='output/shear_wall', help='output folder (default output/shear_wall)')
+o.add_argument('--setup-only', action='store_true', help='build the scene (every bond made and checked), write setup.json and stop (default: run the test)')
 o.add_argument('--save', default='', help='save the scene at the end of the run to this file (O.save; e.g. for scripts/shear_wall_cost.py; default none)')
 o.add_argument('--vtk-every', type=float, default=0.05, help='ParaView output every this drift [%%] (default 0.05; 0 = none)')
 cli = parser.parse_args(sys.argv[1:])
@@ -140,7 +145,7 @@ try:
 	amplitudes = rdem.masonry.numbers(cli.cycles) if cli.cycles else []
 except argparse.ArgumentTypeError as e:
 	sys.exit('--cycles: %s' % e)
-validated = all(getattr(cli, a.dest) == a.default for a in parser._actions if a.dest not in ('help', 'out', 'save', 'vtk_every', 'max_wall', 'wall', 'table'))
+validated = all(getattr(cli, a.dest) == a.default for a in parser._actions if a.dest not in ('help', 'out', 'save', 'setup_only', 'vtk_every', 'max_wall', 'wall', 'table'))
 
 import matplotlib
 matplotlib.use('Agg')
@@ -178,7 +183,8 @@ try:
 	                         safety=cli.safety,
 	                         verletDist=cli.verlet,
 	                         failureStress='total' if total else 'spring',
-	                         softening=cli.softening == 'on')  # before the wall: a bond's law is fixed when it is made
+	                         softening=cli.softening == 'on',
+	                         crackBand=cli.crack_band == 'on')  # before the wall: a bond's law is fixed when it is made
 	w = rdem.masonry.wall(cli.length, cli.height, cli.thickness, brick=cli.brick, joint=cli.joint, bond=cli.bond, blocksPerBrick=cli.blocks,
 	                      mortar=cli.mortar, openings=cli.openings, baseBeam=cli.beam, topBeam=cli.beam, beamBlocks=1, brickMaterial=brick,
 	                      jointMaterial=joint, beamMaterial=beam)
@@ -198,6 +204,32 @@ span = sum(abs(b - a) for a, b in zip([0.0] + targets[:-1], targets))
 print('shear_wall: %s; sigma0 %.3g MPa (N = %.1f kN), %s; rotational inertia x %.3g at most; time step %.3g s, about %d steps of loading; set-up %.1f s' %
       (w, sigma0 * 1e-6, test.axialForce * 1e-3, 'H0/H = %g' % cli.shear_span, inertiaFactor, O.dt, span / (cli.rate * 1e-3) / O.dt, time.time() - setup0),
       flush=True)
+
+def crackBandBonds():
+	"""The bonds whose strengths the crack-band rule lowered (--crack-band): f_t, c or the cap f_c equal to none of the
+	values of the wall's materials and joint, with the lowest f_t and f_c of such bonds [MPa]."""
+	given = dict(ft=(cli.brick_ft * 1e6, cli.bond_ft * 1e6), c=(cli.brick_c * 1e6, cli.bond_c * 1e6), fc=(cap(cli.brick_fc), cap(cli.bond_fc)))
+	low = lambda v, name: math.isfinite(v) and not any(abs(v - g) <= 1e-9 * g for g in given[name])
+	n, ft, fc = 0, float('inf'), float('inf')
+	for I in O.interactions:
+		p = I.phys
+		if I.isReal and getattr(p, 'softening', False):
+			lowered = [low(p.tensileStrength, 'ft'), low(p.cohesion, 'c'), low(p.compressiveStrength, 'fc')]
+			if any(lowered):
+				n += 1
+				ft = min(ft, p.tensileStrength) if lowered[0] else ft
+				fc = min(fc, p.compressiveStrength) if lowered[2] else fc
+	return dict(bonds=n, lowestTensileStrengthMPa=ft * 1e-6 if math.isfinite(ft) else None, lowestCapMPa=fc * 1e-6 if math.isfinite(fc) else None)
+
+
+crackBand = crackBandBonds()
+print('shear_wall: crack band (%s): %d bonds with lowered strengths%s' %
+      (cli.crack_band, crackBand['bonds'], ', lowest f_t %s MPa, f_c %s MPa' % (crackBand['lowestTensileStrengthMPa'], crackBand['lowestCapMPa']) if crackBand['bonds'] else ''),
+      flush=True)
+if cli.setup_only:
+	with open(os.path.join(cli.out, 'setup.json'), 'w') as f:
+		json.dump(dict(wall=cli.wall, blocks=len(w.ids), bonds=w.nBonds, interactions=sum(1 for I in O.interactions if I.isReal), crackBand=crackBand), f, indent=1)
+	sys.exit(0)
 
 # 3. Recording -------------------------------------------------------------------------------------------------------
 ENERGIES = ('rdemElastic', 'rdemPoisson', 'rdemBondBreak', 'rdemDashpot', 'rdemFriction', 'rdemPoissonRelease', 'rdemFractureTension', 'rdemFractureShear',
@@ -284,6 +316,7 @@ print('shear_wall: sigma0 applied in %.3f s (%d steps, %.1f s); settlement %.3f 
 # cracks counted from here (none expected under sigma0 alone), the head joints that start without bond left out
 cracks.snapshot = [row for row in rdem.bondSnapshot() if (min(row[0], row[1]), max(row[0], row[1])) not in unbonded]
 state['breaks0'] = sum(rdem.breakCounts())
+
 onStep(test)
 t1 = time.time()
 pushSteps = test.push(targets, cli.rate * 1e-3, ramp, record=onStep, stop=stop)
@@ -323,7 +356,7 @@ comparison = dict(measuredPeakKN=[v * 1e-3 for v in measured['peak']], measuredM
                   smoothedDriftPercent=abs(smoothed['driftPercent']), measuredFailure=measured['failure'], failure=failure)
 results = dict(input=vars(cli), validated=validated, wall=cli.wall, model=spec, sigma0=sigma0, shearSpan=cli.shear_span, axialForce=test.axialForce, blocks=len(w.ids),
                bonds=w.nBonds, bricks=len(w.bricks), courses=len(w.courses), joints={k: len(v) for k, v in w.joints.items()},
-               cells=rdem.poissonEngine().nCells if cli.formulation != 'off' else 0, timeStep=O.dt, rules={k: v[1] for k, v in wall_database.RULES.items()},
+               cells=rdem.poissonEngine().nCells if cli.formulation != 'off' else 0, crackBand=crackBand, timeStep=O.dt, rules={k: v[1] for k, v in wall_database.RULES.items()},
                peak=peak, smoothedPeak=smoothed, firstCrack=first, initialStiffnessKNPerMm=stiffness * 1e-6,
                timoshenkoStiffnessKNPerMm=closedForm * 1e-6 if closedForm else None, cracksAtPeak=peakCount, cracksAtEnd=crackCount, failure=failure,
                brokenSprings=dict(tension=h['tension'][-1] - h['tension'][0], shear=h['shearBreaks'][-1] - h['shearBreaks'][0]),

@@ -106,20 +106,21 @@ for name in names:
 	             measuredMeanKN=cmp['measuredMeanKN'], measuredPeakKN=cmp['measuredPeakKN'], modelPeakKN=cmp['smoothedPeakKN'], error=cmp['smoothedPeakError'],
 	             modelDriftPercent=cmp['smoothedDriftPercent'], measuredDriftPercent=cmp['measuredDriftPercent'], modelFailure=fail['modelClass'],
 	             measuredFailure=fail['measured'], failureRight=fail['modelClass'] == fail['measuredClass'], staticsRatio=spec['statics']['ratio'],
-	             blocks=r['blocks'], steps=c['compressSteps'] + c['pushSteps'], seconds=c['compressSeconds'] + c['pushSeconds'], validated=r['validated'],
+	             blocks=r['blocks'], crackBandBonds=r.get('crackBand', {}).get('bonds'), steps=c['compressSteps'] + c['pushSteps'], seconds=c['compressSeconds'] + c['pushSeconds'], validated=r['validated'],
 	             endDriftPercent=abs(r['history']['drift'][-1]) * 100))
 errors = [abs(x['error']) for x in out]
 summary = dict(walls=len(out), within15=sum(e <= 0.15 for e in errors), medianAbsError=statistics.median(errors) if errors else None,
                failureRight=sum(x['failureRight'] for x in out), allValidated=all(x['validated'] for x in out))
 lines = [
         '| wall | unit | σ0 [MPa] | H0/H | measured mean (+ / −) [kN] | model [kN] | error | drift at peak, model / measured (+ / −) [%] '
-        '| failure mode, model / database | statics ratio | blocks | steps | wall-clock [s] |', '|---|---|---|---|---|---|---|---|---|---|---|---|---|'
+        '| failure mode, model / database | statics ratio | blocks | bonds lowered by the crack band | steps | wall-clock [s] |', '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|'
 ]
 for x in out:
-	lines.append('| %s | %s | %.2f | %.2f | %.1f (%.1f / %.1f) | %.1f | %+.1f %% | %.3f / %.3f / %.3f | %s / %s %s | %.2f | %d | %d | %.0f |' %
+	lines.append('| %s | %s | %.2f | %.2f | %.1f (%.1f / %.1f) | %.1f | %+.1f %% | %.3f / %.3f / %.3f | %s / %s %s | %.2f | %d | %s | %d | %.0f |' %
 	             (x['wall'], x['unit'], x['sigma0MPa'], x['shearSpan'], x['measuredMeanKN'], x['measuredPeakKN'][0], x['measuredPeakKN'][1], x['modelPeakKN'],
 	              100 * x['error'], x['modelDriftPercent'], x['measuredDriftPercent'][0], x['measuredDriftPercent'][1], x['modelFailure'], x['measuredFailure'],
-	              'ok' if x['failureRight'] else '**no**', x['staticsRatio'], x['blocks'], x['steps'], x['seconds']))
+	              'ok' if x['failureRight'] else '**no**', x['staticsRatio'], x['blocks'], '-' if x['crackBandBonds'] is None else x['crackBandBonds'], x['steps'],
+	              x['seconds']))
 if out:
 	lines += [
 	        '', 'Walls within 15 %%: %d of %d; median absolute error %.1f %%; failure mode right: %d of %d%s.' %
@@ -186,7 +187,12 @@ for md, js, png in targets:
 	for p in (md, js, png):
 		os.makedirs(os.path.dirname(p), exist_ok=True)
 	with open(md, 'w') as f:
-		f.write(text + '\n')
+		f.write('# In-plane shear walls: model against measured peaks\n\nWritten by `build/bin/yade -n scripts/wall_database.py --replot --doc` from the runs of '
+		        '`build/bin/yade -n scripts/wall_database.py` (each wall by scripts/shear_wall.py with its defaults: the rule set of '
+		        'doc/validation.md, "Fifteen walls"). Model: the smoothed peak of a monotonic push; measured: the mean of the + and − peaks '
+		        'of the cyclic test. Failure modes: S shear, F flexure, H hybrid (the database\'s H-FS, H-FG), the model\'s by '
+		        '`rdem.wall_database.failureClass`.\n\n')
+		f.write(text + '\n\n![model against measured peaks and drifts](%s)\n' % os.path.relpath(png, os.path.dirname(md)))
 	with open(js, 'w') as f:
 		json.dump(dict(summary=summary, walls=out, rules={k: dict(value=v[0], source=v[1]) for k, v in wall_database.RULES.items()}), f, indent=1)
 	fig.savefig(png, dpi=110)

@@ -10,6 +10,7 @@
 #include <pkg/rdem/NumberText.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemJoint.hpp>
+#include <pkg/rdem/math/CrackBand.hpp>
 #include <pkg/rdem/math/Failure.hpp>
 #include <pkg/rdem/math/Heterogeneity.hpp>
 #include <algorithm>
@@ -111,6 +112,16 @@ void Ip2_RdemMat_RdemMat_RdemPhys::checkSoftening(const RdemPhys& p, const RdemM
 	if (!err.empty()) throw std::invalid_argument(err);
 }
 
+void Ip2_RdemMat_RdemMat_RdemPhys::lowerToCrackBand(RdemPhys& p)
+{
+	// The strongest segment is the one checkSoftening checks (f_t²/(2G_f) grows with the factor).
+	const Real f          = p.segStrengthFactor.empty() ? Real(1) : *std::max_element(p.segStrengthFactor.begin(), p.segStrengthFactor.end());
+	const auto k          = rdem::crackBandStrengths(softeningConstants(p), f);
+	p.tensileStrength     = k.ft;
+	p.cohesion            = k.c;
+	p.compressiveStrength = k.fc;
+}
+
 void Ip2_RdemMat_RdemMat_RdemPhys::go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I)
 {
 	if (I->phys) return; // constants are fixed when the interaction is made
@@ -161,6 +172,7 @@ void Ip2_RdemMat_RdemMat_RdemPhys::go(const shared_ptr<Material>& m1, const shar
 		} else
 			scaleStrengths(*p, bondFactor(*I, strengthCoV, 0));
 	}
+	if (p->softening && crackBand) lowerToCrackBand(*p);
 	if (p->softening) checkSoftening(*p, a, b, joint);
 	I->phys = p;
 }

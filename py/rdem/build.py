@@ -257,6 +257,7 @@ def engines(segmentsPerEdge=2,
             failureStress='spring',
             contactSamples=1,
             softening=False,
+            crackBand=False,
             strengthCoV=0.0,
             strengthPerSegment=False,
             stiffnessCoV=0.0,
@@ -296,6 +297,9 @@ def engines(segmentsPerEdge=2,
 	:param softening: ``False`` (default): the paper's brittle springs; ``True``: softening springs (tension, cohesion and
 	    a compression cap that soften with the fracture energies of the :yref:`RdemJoint` or :yref:`RdemMat`, the energy per
 	    unit crack area independent of the block size: :yref:`Ip2_RdemMat_RdemMat_RdemPhys.softening`, :ref:`theory §2.1 <rdem-theory-2-1>`).
+	:param crackBand: with ``softening``: a bond whose springs would snap back (blocks too large for the fracture energy) gets
+	    the lowered strengths of Bažant & Oh's crack-band remedy instead of an error
+	    (:yref:`Ip2_RdemMat_RdemMat_RdemPhys.crackBand`); ``False`` (default): refused.
 	:param strengthCoV: coefficient of variation of the bonds' strengths (one lognormal factor of mean 1 per bond,
 	    :yref:`Ip2_RdemMat_RdemMat_RdemPhys.strengthCoV`); 0: uniform.
 	:param strengthPerSegment: with ``strengthCoV``: one factor per segment (spring) instead of per bond
@@ -333,7 +337,7 @@ def engines(segmentsPerEdge=2,
 	L = LABELS
 	# one RdemSharedState for every engine and functor of the plugin: the crack state, the deferred forces' record, the travel
 	shared = RdemSharedState()
-	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0, shared=shared, label=L['geom'])], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), strengthCoV=strengthCoV, strengthPerSegment=bool(strengthPerSegment), stiffnessCoV=stiffnessCoV, seed=int(seed), label=L['phys'])],
+	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0, shared=shared, label=L['geom'])], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), crackBand=bool(crackBand), strengthCoV=strengthCoV, strengthPerSegment=bool(strengthPerSegment), stiffnessCoV=stiffnessCoV, seed=int(seed), label=L['phys'])],
 	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True, totalStress=failureStress == 'total', shared=shared, label=L['law'])], label=L['loop'])
 	eng = [ForceResetter()]
 	if recontact not in (True, False, 'always'):

@@ -41,6 +41,12 @@ RULES = {
         'unitFractureEnergy': ((80.0, 800.0), 'G_f^I of the units of LourencoRots1997 [J/m2]; G_f^II = 10 G_f^I, assumed'),
         'capFractureEnergy': (5000.0, 'G_fc of the compression cap, LourencoRots1997 [J/m2]; cap strength f_m (joints) and f_b (units), '
                               'the table\'s strengths'),
+        'crackBand': (True, 'BazantOh1983: where a softening spring would snap back (its tributary length l_A + l_B longer than 2 M G/f^2, '
+                      'twice Hillerborg\'s length, as for a finite element wider than the crack band), its fracture energy is kept and its strength '
+                      'lowered to the equivalent strength of a vertical drop, f = sqrt(2 k G) (k = M/(l_A + l_B) the spring\'s stiffness per area; '
+                      'Ip2_RdemMat_RdemMat_RdemPhys.crackBand, 1 % short of vertical); applied per bond to f_t, c and the cap (1 - r) f_c; every other '
+                      'bond is unchanged (in the validation set: the springs inside the hollow clay units of PUP1-PUP6, whose f_b = 35 MPa is paired '
+                      'with E_m = 3.55 GPa)'),
         'capResidual': (0.2, 'residual fraction of the cap strength after crushing: the default of RdemJoint, assumed'),
         'headJoints': ('bonded only if thin-layer filled (TF)', 'MannMuller1982: general-purpose mortar head joints are not compressed while they '
                        'harden and shrink away from the units, so they carry no bond (validated on MI1, doc/validation.md); unfilled (U) '

@@ -109,6 +109,21 @@ class Statics(unittest.TestCase):
 			with self.assertRaisesRegex(ValueError, '^' + name):
 				db.rockingBound(*args)
 
+	def testCrackBandRule(self):
+		# one rule for every wall: on, with its source (tests/yade/test_wall_database.py builds every wall with it)
+		self.assertIs(db.rule('crackBand'), True)
+		self.assertIn('BazantOh1983', db.RULES['crackBand'][1])
+		# the case that needs it (tests/unit/test_crack_band.cpp computes the lowered strengths): PUP1's unit springs,
+		# f_t = 0.065 f_b = 2.275 MPa, E = E_m = 3.55 GPa, G_f^I = 80 J/m2; a 300 mm unit cut in two blocks of 155 mm
+		# (to the head joints' mid-planes): k_n = M/0.155, M = E (1 - nu)/((1 + nu)(1 - 2 nu)) = 4.26 GPa, and
+		# f_t^2/(2 k_n) = 94.2 J/m2 > 80: the spring would snap back without the rule
+		brick = db.materials(db.readTable()['PUP1'])['brick']
+		nu = brick['poisson']
+		M = brick['young'] * (1 - nu) / ((1 + nu) * (1 - 2 * nu))
+		self.assertAlmostEqual(brick['tensileStrength'], 2.275e6, delta=1e-6)
+		self.assertAlmostEqual(brick['tensileStrength']**2 / (2 * M / 0.155), 94.157, delta=1e-3)
+		self.assertGreater(brick['tensileStrength']**2 / (2 * M / 0.155), brick['GfI'])
+
 	def testEveryWallPasses(self):
 		for name, row in db.readTable().items():
 			check = db.staticsCheck(row)
