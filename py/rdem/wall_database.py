@@ -24,7 +24,7 @@ import os
 #: The validation set shipped with the project (data/walls/README.md gives its source).
 TABLE = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'data', 'walls', 'walls.csv')
 
-#: The rule set: name -> (value, source). SI units. doc/validation.md ("Fifteen walls") lists the same.
+#: The rule set: name -> (value, source). SI units. The user guide's validation page ("Fifteen walls") lists the same.
 RULES = {
         'jointThickness': ({'GP': 0.010, 'TL': 0.002}, 'EN1996-1-1 8.1.5: general-purpose mortar joints 6-15 mm, thin-layer joints 0.5-3 mm; '
                            'the nominal 10 and 2 mm make every length and height of the table a whole number of modules (unit + joint) '
@@ -49,12 +49,12 @@ RULES = {
                       'with E_m = 3.55 GPa)'),
         'capResidual': (0.2, 'residual fraction of the cap strength after crushing: the default of RdemJoint, assumed'),
         'headJoints': ('bonded only if thin-layer filled (TF)', 'MannMuller1982: general-purpose mortar head joints are not compressed while they '
-                       'harden and shrink away from the units, so they carry no bond (validated on MI1, doc/validation.md); unfilled (U) '
+                       'harden and shrink away from the units, so they carry no bond (validated on MI1: the user guide, validation); unfilled (U) '
                        'head joints have none; both keep compression and friction'),
         'bond': ('running bond (one wythe) or English bond (one and a half bricks)', 'assumed, the table gives no bond: one wythe when the '
                  'wall is about one unit thick (the unit width is taken as the wall thickness), English bond, the usual bond of a '
                  'one-and-a-half-brick wall, when t = l + joint + w; the overlap of running bond is half a unit'),
-        'blocksPerUnit': ('2 along the unit, 1 through, round(2 h/l) >= 1 up', 'doc/accuracy-vs-cost.md: a unit must be able to split '
+        'blocksPerUnit': ('2 along the unit, 1 through, round(2 h/l) >= 1 up', 'the user guide, accuracy against cost: a unit must be able to split '
                           '(1 block per brick: +23 % on MI1), 2 against 4 blocks per brick -0.6 %; blocks about as tall as long'),
         'beams': (dict(height=0.2, young=30e9, poisson=0.2, density=2400.0), 'assumed: reinforced concrete beams (EN1992-1-1 Table 3.1, C25/30: '
                   'E_cm = 31 GPa), rigid against the wall'),
@@ -62,7 +62,7 @@ RULES = {
                     'measured positive and negative peaks'),
         'quasiStatic': (dict(rate=0.04, damping=0.2, inertiaScaling=True, rampTravel=1e-3, compressTime=0.02, drift=0.006, pastPeak=2.0, maxDrift=0.02,
                              stopDrop=0.2, smoothDrift=2e-4),
-                        'doc/validation.md, "Quasi-static loading in fewer steps": the top beam at rate [m/s], its velocity ramped up over rampTravel [m] '
+                        'the user guide, validation, "Quasi-static loading in fewer steps": the top beam at rate [m/s], its velocity ramped up over rampTravel [m] '
                         "of travel; Cundall's non-viscous damping; the blocks' rotational inertia scaled (rdem.quasi_static) or not; sigma0 ramped over "
                         'compressTime [s] and held until the wall is at rest; the push ends once the load averaged over smoothDrift [-] of drift has '
                         'dropped by stopDrop of its peak, or once past drift [-] and pastPeak times the drift of that peak, or at maxDrift [-] (MI1 was '
@@ -218,7 +218,7 @@ def rockingBound(N, W, length, height, shearSpan):
 	height $H$ [m] and shear span ratio $H_0/H$:
 
 	* $H_0/H = 0.5$, both ends fixed (the top kept horizontal, the moments at the top and the base not controlled):
-	  the panel rocks about opposite corners, $V H = N L/2 + (N + W) L/2$, so $V \\le (2N + W) L/(2H)$ (doc/validation.md);
+	  the panel rocks about opposite corners, $V H = N L/2 + (N + W) L/2$, so $V \\le (2N + W) L/(2H)$ (:ref:`validation <rdem-validation>`);
 	* otherwise the top carries the moment $V (H_0 - H)$ as in the test: the base section $V H_0 \\le (N + W) L/2$ and,
 	  for $H_0 \\ne H$, the top section $V |H - H_0| \\le N L/2$.
 
@@ -239,7 +239,7 @@ def rockingBound(N, W, length, height, shearSpan):
 
 
 def staticsCheck(row):
-	"""The statics check of a row (doc/validation.md): the tested geometry, $N = \\sigma_0 L t$, the masonry's weight
+	"""The statics check of a row (:ref:`validation <rdem-validation>`): the tested geometry, $N = \\sigma_0 L t$, the masonry's weight
 	$W$ at the rule set's density, the :func:`rockingBound`; ``ratio`` = measured mean peak / bound, ``passes`` = ratio
 	< 1 (a model of constant axial load can reach the measured peak), ``sigma0Needed`` [Pa]: the $\\sigma_0$ at which
 	the bound equals the measured mean."""
@@ -256,13 +256,13 @@ def staticsCheck(row):
 
 
 def failureClass(horizontalTensionArea, coreCourses, coreCoursesCracked, jointArea):
-	"""The failure mode of a model wall, from its cracks at the end of the test (rule of doc/validation.md):
+	"""The failure mode of a model wall, from its cracks at the end of the test (rule of :ref:`validation <rdem-validation>`):
 
 	* *flexure* (rocking): in the bottom or the top tenth of the wall, the bed faces broken in tension add up to at least
 	  half of one bed joint's area $L t$ (``horizontalTensionArea``: the larger of the two bands [m²], ``jointArea`` =
 	  $L t$ [m²]): a rocking wall opens its heel joint over most of its length. (First fixed at a quarter; raised to a
 	  half for every wall after CS01 and CS02, which failed in a diagonal stair-stepped crack as tested, opened 40 % of
-	  a bed joint next to the top and were classed hybrid; doc/validation.md.)
+	  a bed joint next to the top and were classed hybrid; :ref:`validation <rdem-validation>`.)
 	* *shear*: broken springs in at least half of the courses of the wall's core (the middle half of its length and of
 	  its height), as a diagonal crack through the core crosses each of them (``coreCourses`` courses, of which
 	  ``coreCoursesCracked`` hold a broken spring there).
