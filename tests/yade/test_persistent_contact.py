@@ -1,6 +1,6 @@
 """Persistent face-to-face contacts against sampled ones and against closed forms.
 
-Two blocks meet face to face: with Ig2_RdemBlock_RdemBlock_RdemGeom.persistentContacts (opt-in) their contact is a
+Two blocks meet face to face: with Ig2_RdemBlock_RdemBlock_RdemGeom.persistentContacts (the default) their contact is a
 patch, the two faces clipped against each other once (rdem::facePatch), carrying contact springs at fixed material points;
 without it, sample points of both faces are tested at every step (the reference). Both blocks are held (blockedDOFs), so
 that the forces come from the configuration alone: a first step at an overlap eps starts every contact point (a point
@@ -192,7 +192,7 @@ class PersistentContact(unittest.TestCase):
 		h = 0.01
 		mat = O.materials.append(RdemMat(young=YOUNG, poisson=0.2, density=2300, frictionAngle=0.5))
 		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=True, dt=1e-7)
-		rdem.geomFunctor().persistentContacts = True  # opt-in (off by default)
+		rdem.geomFunctor().persistentContacts = True  # the default, set for the test
 		base = O.bodies.append(rdem.block((0, 0, 0), (h, h, h), mat, fixed=True))
 		b = O.bodies.append(rdem.block((0, 0, 2 * h - 1e-7), (h, h, h), mat, fixed=True))
 		O.step()
@@ -207,6 +207,44 @@ class PersistentContact(unittest.TestCase):
 			areas.add(I.geom.patchArea)
 		self.assertGreaterEqual(len(areas), 4)  # 45 um of travel: derived again 4 times
 		self.assertLessEqual(len(areas), 6)
+
+	def testHandOverMakesNoEnergy(self):
+		# A contact's history passes to new contact points (a patch derived again, or a switch between patch and samples)
+		# without storing more elastic energy than the old points held in the same configuration. Cube B overlaps the
+		# fixed cube A by a strip 0.1h wide along an edge (area 0.15h^2 with B shifted 0.5h along it, 3.75 % of a face:
+		# a patch), sunk uniformly by delta: the patch stores E1 = k_n w_n A (delta - eps)^2 / 2 exactly. B then slides
+		# by 2 um along the strip (beyond patchTravel = 1e-3 h, so the patch is derived again) with persistentContacts off:
+		# the contact is sampled at the blocks' vertices, two of which (A's and B's corners in the strip) are in contact
+		# with an area of a face / 8 each, 6.7 times the patch's: passed at the same compression, the samples would store
+		# 6.7 E1 more (measured 6.7 E1 before the hand-over capped it). With the same depth everywhere, the energy in the
+		# configuration is E1 before and after; tolerance 1e-9 for the round-off of depths of 1e-6 m from coordinates of
+		# 1e-2 m (1e-12 relative). Back to the patch the same way.
+		harness.freshScene()
+		h, delta = 0.01, 1e-6
+		mat = O.materials.append(RdemMat(young=YOUNG, poisson=0.2, density=2300, frictionAngle=0.5))
+		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=True, dt=1e-7)
+		ig2 = rdem.geomFunctor()
+		ig2.persistentContacts = True
+		O.trackEnergy = True
+		a = O.bodies.append(rdem.block((0, 0, 0), (h, h, h), mat, fixed=True))
+		x0 = Vector3(1.9 * h, 0.5 * h, 2 * h)
+		b = O.bodies.append(rdem.block(tuple(x0 - Vector3(0, 0, self.EPS)), (h, h, h), mat, fixed=True))
+		O.step()
+		O.bodies[b].state.pos = x0 - Vector3(0, 0, delta)
+		O.step()
+		I = O.interactions[a, b]
+		area = 0.1 * h * 1.5 * h
+		self.assertAlmostEqual(I.geom.patchArea / area, 1, delta=1e-9)
+		E1 = O.energy['rdemElastic']
+		self.assertAlmostEqual(E1 / (I.phys.kn * I.phys.weightNormal * area * (delta - self.EPS)**2 / 2), 1, delta=1e-9)
+		for persistent, dy in ((False, 2e-5), (True, -2e-5)):
+			ig2.persistentContacts = persistent
+			O.bodies[b].state.pos += Vector3(0, dy, 0)
+			O.step()
+			I = O.interactions[a, b]
+			self.assertEqual(len(I.geom.patchAreas) > 0, persistent)
+			self.assertEqual(len(I.geom.sampleKey) > 0, not persistent)
+			self.assertAlmostEqual(O.energy['rdemElastic'] / E1, 1, delta=1e-9, msg='persistent %s' % persistent)
 
 	def testInvalidTolerances(self):
 		harness.freshScene()
