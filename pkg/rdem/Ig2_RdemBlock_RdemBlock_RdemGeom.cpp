@@ -304,7 +304,8 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 		}
 		return false;
 	}
-	if (persistentContacts) {
+	const bool triedPatch = persistentContacts;
+	if (triedPatch) {
 		auto g            = shared_ptr<RdemGeom>(new RdemGeom);
 		g->samplesPerEdge = contactSamples();
 		if (derivePatch(A, B, s1.ori, s2.ori, *g, nullptr)) {
@@ -329,17 +330,25 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 	auto g  = shared_ptr<RdemGeom>(new RdemGeom(probe));
 	g->ell1 = faceDistance(A, probe.sampleNormal[0]);
 	g->ell2 = faceDistance(B, probe.sampleNormal[0]);
-	I->geom = g; // replaces a certificate that no longer holds
-	return true; // samples of this step are already in place
+	if (triedPatch) markDerived(A, B, s1.ori, s2.ori, *g); // no patch here (see go)
+	I->geom = g;                                           // replaces a certificate that no longer holds
+	return true;                                           // samples of this step are already in place
 }
 
-bool Ig2_RdemBlock_RdemBlock_RdemGeom::patchHolds(RdemGeom& g, const State& s1, const State& s2, const Vector3r& shift2) const
+bool Ig2_RdemBlock_RdemBlock_RdemGeom::withinPatchTravel(const RdemGeom& g, const State& s1, const State& s2, const Vector3r& shift2) const
 {
+	if (!(g.patchTravel > 0)) return false;
 	const Quaternionr q1c = s1.ori.conjugate();
 	const Vector3r    rel = q1c * (s2.pos + shift2 - s1.pos);
-	if (!(rdem::rigidTravel<Real>(g.patchRelPos, g.patchRelOri, rel, q1c * s2.ori, g.patchRadius) <= g.patchTravel)) return false;
-	g.normal = (s1.ori * g.segNormal1 - s2.ori * g.segNormal2).normalized();
-	return true;
+	return rdem::rigidTravel<Real>(g.patchRelPos, g.patchRelOri, rel, q1c * s2.ori, g.patchRadius) <= g.patchTravel;
+}
+
+void Ig2_RdemBlock_RdemBlock_RdemGeom::markDerived(const Block& A, const Block& B, const Quaternionr& q1, const Quaternionr& q2, RdemGeom& g) const
+{
+	g.patchRelPos = A.rot.transpose() * (B.pos - A.pos);
+	g.patchRelOri = q1.conjugate() * q2;
+	g.patchRadius = B.half.norm();
+	g.patchTravel = patchTravelTolerance * math::min(A.half.minCoeff(), B.half.minCoeff());
 }
 
 bool Ig2_RdemBlock_RdemBlock_RdemGeom::derivePatch(const Block& A, const Block& B, const Quaternionr& q1, const Quaternionr& q2, RdemGeom& g, RdemPhys* p) const
@@ -355,17 +364,23 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::derivePatch(const Block& A, const Block& 
 	if (!fp.found || fp.area < Real(0.04) * math::min(faceA, faceB)) return false;
 	const Vector3r   nA = fp.faceA.normal(A), nB = fp.faceB.normal(B), n = (nA - nB).normalized();
 	vector<Vector3r> mid(fp.point1.size());
-	for (size_t i = 0; i < mid.size(); ++i)
-		mid[i] = (fp.point1[i] + fp.point2[i]) / 2;
+	vector<Real>     depth(mid.size());
+	bool             touching = false;
+	for (size_t i = 0; i < mid.size(); ++i) {
+		mid[i]   = (fp.point1[i] + fp.point2[i]) / 2;
+		depth[i] = -(fp.point2[i] - fp.point1[i]).dot(n);
+		touching = touching || depth[i] > 0;
+	}
+	// A new contact none of whose springs overlaps (blocks side by side, within the touch tolerance) is not made: the law
+	// would erase it at once, and the pair would be found and made again at every step (as a sampled contact is not made
+	// without a sample inside).
+	if (!p && !touching) return false;
 	if (p) {
 		// The history of the old patch, or of the last step's samples, passed to the new springs (handOver).
-		const ContactHistory from = g.nPatch() > 0 && p->contactKey.empty() && p->contactOffset.size() == g.nPatch()
-		        ? patchHistory(g, *p, A, B, (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized())
-		        : sampleHistory(g, *p);
-		vector<Real>         depth(mid.size());
-		for (size_t i = 0; i < mid.size(); ++i)
-			depth[i] = -(fp.point2[i] - fp.point1[i]).dot(n);
-		vector<Real> offset = handOver(from, mid, depth, fp.pointArea, *p);
+		const ContactHistory from   = g.nPatch() > 0 && p->contactKey.empty() && p->contactOffset.size() == g.nPatch()
+		          ? patchHistory(g, *p, A, B, (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized())
+		          : sampleHistory(g, *p);
+		vector<Real>         offset = handOver(from, mid, depth, fp.pointArea, *p);
 		p->contactKey.clear();
 		p->contactOffset.swap(offset);
 	}
@@ -373,14 +388,11 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::derivePatch(const Block& A, const Block& 
 	for (size_t i = 0; i < mid.size(); ++i)
 		rdem::PatchSprings<Real>::append(
 		        g.patch, A.rot.transpose() * (fp.point1[i] - A.pos), B.rot.transpose() * (fp.point2[i] - B.pos), fp.pointArea[i]);
-	g.patchArea   = fp.area;
-	g.segNormal1  = A.rot.transpose() * nA;
-	g.segNormal2  = B.rot.transpose() * nB;
-	g.normal      = n;
-	g.patchRelPos = A.rot.transpose() * (B.pos - A.pos);
-	g.patchRelOri = q1.conjugate() * q2;
-	g.patchRadius = B.half.norm();
-	g.patchTravel = patchTravelTolerance * hMin;
+	g.patchArea  = fp.area;
+	g.segNormal1 = A.rot.transpose() * nA;
+	g.segNormal2 = B.rot.transpose() * nB;
+	g.normal     = n;
+	markDerived(A, B, q1, q2, g);
 	g.clearSamples();
 	return true;
 }
@@ -409,8 +421,12 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 		return false;
 	}
 	// A face-to-face contact whose blocks have not moved enough to change its patch: its springs are in place.
-	if (I->phys && static_cast<RdemGeom*>(I->geom.get())->nPatch() > 0 && patchHolds(*static_cast<RdemGeom*>(I->geom.get()), state1, state2, shift2))
+	if (I->phys && static_cast<RdemGeom*>(I->geom.get())->nPatch() > 0
+	    && withinPatchTravel(*static_cast<RdemGeom*>(I->geom.get()), state1, state2, shift2)) {
+		RdemGeom& g = *static_cast<RdemGeom*>(I->geom.get());
+		g.normal    = (state1.ori * g.segNormal1 - state2.ori * g.segNormal2).normalized();
 		return true;
+	}
 	const Block A { state1.pos, state1.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape1.get())->extents };
 	const Block B { state2.pos + shift2, state2.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape2.get())->extents };
 	if (!I->phys) return force ? bond(A, B, I) : findContact(A, B, state1, state2, I);
@@ -420,12 +436,17 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	RdemGeom&                   g       = *static_cast<RdemGeom*>(I->geom.get());
 	RdemPhys&                   p       = *static_cast<RdemPhys*>(I->phys.get());
 	const bool                  overlap = rdem::blocksOverlap<Real>(pair, tol);
-	if (overlap && persistentContacts && derivePatch(A, B, state1.ori, state2.ori, g, &p)) return true;
+	/* A sampled contact whose faces were found not to meet face to face (two grid neighbours along an edge, blocks tilted
+	   against each other) is not tested again before the blocks have moved by patchTravel relative to each other since:
+	   the same tolerance as a patch's, by which the patch found later lags (markDerived). */
+	const bool tried = overlap && persistentContacts && !(g.nPatch() == 0 && withinPatchTravel(g, state1, state2, shift2));
+	if (tried && derivePatch(A, B, state1.ori, state2.ori, g, &p)) return true;
 	// Sampled: a patch whose faces no longer meet hands its history to the samples.
 	const ContactHistory from = g.nPatch() > 0 && p.contactKey.empty() && p.contactOffset.size() == g.nPatch()
 	        ? patchHistory(g, p, A, B, (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized())
 	        : ContactHistory();
-	g.clearPatch();
+	if (g.nPatch() > 0) g.clearPatch(); // and the configuration it was derived in
+	if (tried) markDerived(A, B, state1.ori, state2.ori, g);
 	g.clearSamples();
 	if (overlap) sampleContacts(pair, state1, state2, tol, g.samplesPerEdge, g);
 	if (!from.pos.empty()) handOverToSamples(from, g, p);

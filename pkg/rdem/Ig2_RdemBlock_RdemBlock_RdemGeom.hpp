@@ -93,11 +93,16 @@ private:
 	/// false, with a new certificate (RdemGap) if the blocks are apart and skipApart is on.
 	bool
 	findContact(const rdem::OrientedBlock<Real>& A, const rdem::OrientedBlock<Real>& B, const State& s1, const State& s2, const shared_ptr<Interaction>& I);
-	/// Whether g's patch still holds for the blocks' states (relative travel within g.patchTravel); if so, sets g.normal.
-	bool patchHolds(RdemGeom& g, const State& s1, const State& s2, const Vector3r& shift2) const;
+	/// Whether the blocks' states are within g.patchTravel of relative travel of the configuration in which g's patch was
+	/// last derived, or found not to exist (a sampled contact with g.patchTravel > 0: see markDerived).
+	bool withinPatchTravel(const RdemGeom& g, const State& s1, const State& s2, const Vector3r& shift2) const;
+	/// Records the configuration of blocks A, B (orientations q1, q2) in g as the one in which the patch was derived,
+	/// or found not to exist: it is not derived again before the blocks have moved by patchTravel relative to each other.
+	void
+	markDerived(const rdem::OrientedBlock<Real>& A, const rdem::OrientedBlock<Real>& B, const Quaternionr& q1, const Quaternionr& q2, RdemGeom& g) const;
 	/// (Re)derives g's face-to-face patch (rdem::facePatch) for the blocks A, B with orientations q1, q2; false, with g
-	/// unchanged, if their faces do not meet. With p, the history of the old patch or of the last step's samples passes to
-	/// the new springs (nearest point).
+	/// unchanged, if their faces do not meet (or, for a new contact, p null, if no spring overlaps yet). With p, the history
+	/// of the old patch or of the last step's samples passes to the new springs (handOver).
 	bool derivePatch(
 	        const rdem::OrientedBlock<Real>& A, const rdem::OrientedBlock<Real>& B, const Quaternionr& q1, const Quaternionr& q2, RdemGeom& g, RdemPhys* p)
 	        const;

@@ -49,11 +49,12 @@ public:
 	size_t nPatch() const { return patch.size() / rdem::PatchSprings<Real>::stride; }
 	/// The springs of the patch as the law reads them (rdem::PatchSprings: the layout of ``patch``).
 	rdem::PatchSprings<Real> patchSprings() const { return rdem::PatchSprings<Real>(patch); }
-	/// Forget the patch: the contact is sampled from now on.
+	/// Forget the patch and the configuration it was derived in: the contact is sampled from now on.
 	void clearPatch()
 	{
 		patch.clear();
-		patchArea = 0;
+		patchArea   = 0;
+		patchTravel = 0;
 	}
 	/// Python: the patch springs' material points in body-1 (body-2) frame [m] and their areas [m²].
 	vector<Vector3r> patchPoints1() const;

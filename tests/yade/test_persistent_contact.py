@@ -246,6 +246,38 @@ class PersistentContact(unittest.TestCase):
 			self.assertEqual(len(I.geom.sampleKey) > 0, not persistent)
 			self.assertAlmostEqual(O.energy['rdemElastic'] / E1, 1, delta=1e-9, msg='persistent %s' % persistent)
 
+	def testEdgeNeighboursStaySampled(self):
+		# Two cubes of a grid that share an edge, strained into each other by e: the faces that meet overlap on a sliver
+		# e wide (1e-4 of a face at e = 1e-6 m, below the 1 % from which a patch is made), so the contact is sampled, and
+		# the pair is not tested for a patch again before it has moved by patchTravel (1e-5 m) relative to each other:
+		# the forces are those of the sampled contact (persistentContacts=False) bit for bit. Moved by h along y (a face
+		# neighbour shifted by half a face), the pair gets its patch, of area h * 2h exactly.
+		h = 0.01
+		forces = []
+		for persistent in (True, False):
+			harness.freshScene()
+			mat = O.materials.append(RdemMat(young=YOUNG, poisson=0.2, density=2300, frictionAngle=0.5))
+			O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=True, dt=1e-7)
+			rdem.geomFunctor().persistentContacts = persistent
+			a = O.bodies.append(rdem.block((0, 0, 0), (h, h, h), mat, fixed=True))
+			b = O.bodies.append(rdem.block((2 * h - 1e-8, 2 * h - 1e-8, 0), (h, h, h), mat, fixed=True))
+			O.step()
+			for k in range(3):  # sunk to e = 1e-6 m, then held
+				O.bodies[b].state.pos = Vector3(2 * h - 1e-6, 2 * h - 1e-6, 0)
+				O.step()
+				I = O.interactions[a, b]
+				self.assertEqual(len(I.geom.patchAreas), 0)
+				self.assertGreater(len(I.geom.sampleKey), 0)
+				self.assertEqual(I.geom.patchTravel > 0, persistent)  # the pair's configuration when found not face to face
+			forces.append((O.forces.f(b), O.forces.t(b)))
+			if persistent:
+				O.bodies[b].state.pos = Vector3(2 * h - 1e-6, h, 0)
+				O.step()
+				I = O.interactions[a, b]
+				self.assertAlmostEqual(I.geom.patchArea / (h * 2 * h), 1, delta=1e-9)
+		self.assertGreater(forces[1][0].norm(), 0)
+		self.assertEqual(forces[0], forces[1])
+
 	def testInvalidTolerances(self):
 		harness.freshScene()
 		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None)
