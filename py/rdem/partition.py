@@ -22,7 +22,7 @@ Typical use::
     parts = bisect([(0.1, 0, 0), (0.3, 0, 0), (0.5, 0, 0), (0.7, 0, 0)], 2)   # [0, 0, 1, 1]
 """
 
-__all__ = ['bisect', 'counts']
+__all__ = ['bisect', 'counts', 'refusals']
 
 
 def _cut(order, coord, wanted, tol):
@@ -91,3 +91,32 @@ def counts(parts, n):
 	for p in parts:
 		c[p] += 1
 	return c
+
+
+def refusals(f):
+	"""What keeps a scene from running on mpy identical to the serial run, as a list of messages (empty: it can run).
+
+	``f`` is a dict of what the scene has (read by :func:`rdem.distributed.features`): ``others`` (ids of bodies that are
+	not blocks), ``masterMoving`` (ids on the master that are not fixed), ``hex8`` (the paper's hexahedra),
+	``cells`` (blocks with a Poisson cell), ``exchange`` (an :yref:`RdemGhostExchange` in the engines), ``offsets``
+	(bonds with a centroid offset: running bond), ``trackEnergy`` (O.trackEnergy), ``breakable`` (springs that can
+	break). Missing keys count as absent."""
+	out = []
+	if f.get('others'):
+		out.append('bodies that are not RdemBlock (ids %s...): only blocks are assigned to subdomains and exchanged' % (sorted(f['others'])[:5], ))
+	if f.get('masterMoving'):
+		out.append('bodies on the master (subdomain 0) that move (ids %s...): mpy sends the master\'s states to no worker, so only fixed '
+		           'bodies (all DOFs blocked, at rest) may stay there' % (sorted(f['masterMoving'])[:5], ))
+	if f.get('cells') and not f.get('exchange'):
+		out.append('%d Poisson cells without an RdemGhostExchange: the strains of ghost blocks would come from the bonds the rank has, '
+		           'not from all of theirs (rdem.distributed.prepare inserts it)' % f['cells'])
+	if f.get('cells') and f.get('offsets'):
+		out.append('%d bonds with a centroid offset (running bond): the reaction of their offset correction on a ghost cell '
+		           '(RdemPhys.offsetGrad1, 2) is not exchanged yet' % f['offsets'])
+	if f.get('hex8') and f.get('breakable'):
+		out.append('%d hexahedral Poisson elements with springs that can break: an element across a subdomain boundary is released by '
+		           'the bonds between two ghosts, which mpy erases; their scales are not exchanged yet (use cells: '
+		           'RdemPoissonEngine.elements = \'cells\', or unbreakable springs)' % f['hex8'])
+	if f.get('trackEnergy'):
+		out.append('O.trackEnergy: the energies of blocks on a boundary are counted on two ranks and not reduced over ranks yet')
+	return out

@@ -7,7 +7,7 @@ import sys
 import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'py'))
-from rdem.partition import bisect, counts  # noqa: E402
+from rdem.partition import bisect, counts, refusals  # noqa: E402
 
 
 def grid(nx, ny, nz, h=0.02):
@@ -87,6 +87,22 @@ class Bisect(unittest.TestCase):
 			bisect(grid(1, 1, 2) + [(0.01, 0.01, 0.01)], 3)  # two layers (2 and 1 blocks) cannot make 3 subdomains
 		with self.assertRaisesRegex(ValueError, '3 coordinates'):
 			bisect([(0, 0)], 1)
+
+
+class Refusals(unittest.TestCase):
+
+	def test_springs_and_cells_with_exchange_run(self):
+		self.assertEqual(refusals({}), [])
+		self.assertEqual(refusals(dict(cells=1200, exchange=True, breakable=True)), [])
+		self.assertEqual(refusals(dict(hex8=891, breakable=False)), [])
+
+	def test_each_refusal_names_what(self):
+		for f, what in ((dict(others=[7]), 'not RdemBlock'), (dict(masterMoving=[3]), 'only fixed'), (dict(cells=10), 'RdemGhostExchange'),
+		                (dict(cells=10, exchange=True, offsets=4), 'centroid offset'), (dict(hex8=5, breakable=True), 'hexahedral'),
+		                (dict(trackEnergy=True), 'trackEnergy')):
+			r = refusals(f)
+			self.assertEqual(len(r), 1, f)
+			self.assertIn(what, r[0])
 
 
 if __name__ == '__main__':
