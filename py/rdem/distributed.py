@@ -87,6 +87,24 @@ def minTimeStep():
 	O.dt = mpy.comm.allreduce(O.dt, op=mpy.MPI.MIN)
 
 
+class _SceneCollider:
+	"""The scene's InsertionSortCollider, looked up at each use: mpy's parallelCollide uses a global ``collider`` (the
+	engine labelled so in YADE's examples); the plugin's is labelled ``rdemCollider``, and the workers' engines are
+	replaced when mpy splits the scene."""
+
+	def _engine(self):
+		return next(e for e in O.engines if isinstance(e, InsertionSortCollider))
+
+	def __getattr__(self, name):
+		return getattr(self._engine(), name)
+
+	def __setattr__(self, name, value):
+		setattr(self._engine(), name, value)
+
+	def __call__(self):
+		self._engine()()
+
+
 def prepare(workers=None, master=(), exchange=True):
 	"""Make the current scene ready for :func:`yade.mpy.mpirun` on every rank: assign the blocks (:func:`assign`, to
 	``workers`` ranks, default: all but the master), insert an :yref:`RdemGhostExchange` after the
@@ -117,6 +135,8 @@ def prepare(workers=None, master=(), exchange=True):
 	if stepper is not None:
 		eng.insert(stepper + 1, PyRunner(iterPeriod=1, initRun=True, command='from yade.rdem import distributed; distributed.minTimeStep()', label='rdemMinDt'))
 	O.engines = eng
+	if not hasattr(mpy, 'collider'):
+		mpy.collider = _SceneCollider()
 	if exchange:
 		check()
 	return perWorker
