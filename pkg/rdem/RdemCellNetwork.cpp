@@ -170,7 +170,7 @@ void RdemCellNetwork::updateStrains(Scene* scene, long brokenSprings, int thread
 	}
 }
 
-void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released, int threads)
+void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released, int threads, const StressSync& sync)
 {
 	if (!refresh(scene)) return;
 	const long nBlocks     = long(body.size());
@@ -206,6 +206,7 @@ void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energ
 	}
 	energy += e;
 	released += rel;
+	if (sync) sync(body, stress); // YADE's MPI: the ghosts' from their owners
 	/* 2. Per block: the normal force -∂W/∂u_n = -(c₁∂W/∂ε₁ + c₂∂W/∂ε₂) of each of its bonds, on body 2 along the bond's
 	      normal and on body 1 against it, at the face centre; summed block by block in the fixed order of the lists. */
 	RdemForceAssembler::prepareDirectSums(scene, long(scene->bodies->size()));
