@@ -23,6 +23,9 @@ parser.add_argument('--poisson', choices=['off', 'hex8', 'cells'], default='cell
                     help="Poisson effect: off (springs only), hex8 (the paper's elements), cells (consistent formulation; default)")
 parser.add_argument('--steps', type=int, default=200, help='time steps (default 200)')
 parser.add_argument('--rate', type=float, default=0.05, help='loading rate [m/s] (default 0.05: a visible Poisson effect in 200 steps)')
+parser.add_argument('--contacts', choices=['gate', 'always'], default='gate',
+                    help="contact detection: gate (RdemContactGate keeps the collider off until a spring breaks; default) or always (the "
+                    "collider from the first step, as mpy does on its workers: its split runs the collider whatever the gate says)")
 parser.add_argument('--mpi', action='store_true', help='run on yade.mpy (under mpiexec -n 3 or more)')
 parser.add_argument('--no-exchange', action='store_true', help='RdemGhostExchange off (wrong at the subdomain boundary: for the test)')
 parser.add_argument('--out', default='output/mpi/cube.json', help='result file (default output/mpi/cube.json)')
@@ -59,6 +62,8 @@ test = scenes.CompressionTest(blocksPerEdge=args.blocks, formulation=formulation
 if args.poisson == 'cells':
 	build.poissonEngine().elements = 'cells'
 	build.poissonEngine().build(test.ids)
+if args.contacts == 'always':
+	build.contactGate().open = True
 start = {i: O.bodies[i].state.pos for i in test.ids}
 
 rank = 0

@@ -48,8 +48,16 @@ void RdemCellNetwork::rebuild(Scene* scene)
                 return body.size() - 1;
 	};
 	vector<size_t> blockOfSide;
-	for (const auto& I : *scene->interactions) {
-		if (!I->isReal()) continue;
+	/* Bonds in the order of their body ids, not of the interaction container: every sum over a block's bonds then has
+	   the same order whatever the container's history (the collider's insertions and erasures reorder it, and so does a
+	   rank of YADE's MPI, which holds only some of the bodies), so that results are reproducible bit for bit. */
+	vector<shared_ptr<Interaction>> sorted;
+	for (const auto& I : *scene->interactions)
+		if (I->isReal()) sorted.push_back(I);
+	std::sort(sorted.begin(), sorted.end(), [](const shared_ptr<Interaction>& a, const shared_ptr<Interaction>& b) {
+		return std::make_pair(a->getId1(), a->getId2()) < std::make_pair(b->getId1(), b->getId2());
+	});
+	for (const auto& I : sorted) {
 		const auto* p = dynamic_cast<const RdemPhys*>(I->phys.get());
 		const auto* g = dynamic_cast<const RdemGeom*>(I->geom.get());
 		if (!p || !g || !g->bonded || (p->cellCoef1 == 0 && p->cellCoef2 == 0)) continue;

@@ -18,7 +18,7 @@ from yade.wrapper import RdemBlock, RdemMat, RdemPoissonEngine, RdemCellStrainUp
     InteractionLoop, Bo1_Box_Aabb, PyRunner
 from .partition import bisect, counts, refusals
 
-__all__ = ['assign', 'features', 'check', 'prepare', 'minTimeStep']
+__all__ = ['assign', 'features', 'check', 'prepare', 'minTimeStep', 'breakCounts']
 
 
 def _fixed(b):
@@ -140,3 +140,24 @@ def prepare(workers=None, master=(), exchange=True):
 	if exchange:
 		check()
 	return perWorker
+
+
+def breakCounts():
+	"""(tension, shear): restoring springs broken so far over all ranks, each bond counted once, on the rank that owns its
+	body of lower id (a bond across a subdomain boundary exists on two ranks, and each rank's
+	:yref:`Law2_RdemGeom_RdemPhys_FaceSprings.tensionBreaks` counts it). Collective: call it on every rank."""
+	from yade import mpy
+	from yade.wrapper import RdemPhys
+	from . import build
+
+	def mine(id1, id2):
+		b = O.bodies[min(id1, id2)]
+		return b is not None and b.subdomain == mpy.rank
+
+	tension = shear = 0
+	states = [I.phys.segState for I in O.interactions if I.isReal and isinstance(I.phys, RdemPhys) and mine(I.id1, I.id2)]
+	states += [r.segState for r in build.law().releasedBonds if mine(r.id1, r.id2)]
+	for seg in states:
+		tension += sum(1 for x in seg if x == 1)
+		shear += sum(1 for x in seg if x == 2)
+	return mpy.comm.allreduce(tension), mpy.comm.allreduce(shear)
