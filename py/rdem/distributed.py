@@ -53,7 +53,7 @@ def assign(workers, master=()):
 
 def features():
 	"""What the scene has that matters for a distributed run (the keys of :func:`rdem.partition.refusals`)."""
-	f = dict(others=[], masterMoving=[], hex8=0, cells=0, exchange=False, offsets=0, trackEnergy=bool(O.trackEnergy), breakable=False)
+	f = dict(others=[], masterMoving=[], hex8=0, cells=0, exchange=False, trackEnergy=bool(O.trackEnergy), breakable=False)
 	for b in O.bodies:
 		if b is None or b.isSubdomain:
 			continue
@@ -67,9 +67,6 @@ def features():
 			f['cells'] += e.nCells
 		if type(e).__name__ == 'RdemGhostExchange' and not e.dead and e.exchange:
 			f['exchange'] = True
-	for i in O.interactions:
-		if i.isReal and hasattr(i.phys, 'centroidOffset') and i.phys.centroidOffset.norm() > 0:
-			f['offsets'] += 1
 	f['breakable'] = any(isinstance(m, RdemMat) and (math.isfinite(m.tensileStrength) or math.isfinite(m.cohesion)) for m in O.materials)
 	return f
 

@@ -98,8 +98,7 @@ def refusals(f):
 
 	``f`` is a dict of what the scene has (read by :func:`rdem.distributed.features`): ``others`` (ids of bodies that are
 	not blocks), ``masterMoving`` (ids on the master that are not fixed), ``hex8`` (the paper's hexahedra),
-	``cells`` (blocks with a Poisson cell), ``exchange`` (an :yref:`RdemGhostExchange` in the engines), ``offsets``
-	(bonds with a centroid offset: running bond), ``trackEnergy`` (O.trackEnergy), ``breakable`` (springs that can
+	``cells`` (blocks with a Poisson cell), ``exchange`` (an :yref:`RdemGhostExchange` in the engines), ``trackEnergy`` (O.trackEnergy), ``breakable`` (springs that can
 	break). Missing keys count as absent."""
 	out = []
 	if f.get('others'):
@@ -110,9 +109,6 @@ def refusals(f):
 	if f.get('cells') and not f.get('exchange'):
 		out.append('%d Poisson cells without an RdemGhostExchange: the strains of ghost blocks would come from the bonds the rank has, '
 		           'not from all of theirs (rdem.distributed.prepare inserts it)' % f['cells'])
-	if f.get('cells') and f.get('offsets'):
-		out.append('%d bonds with a centroid offset (running bond): the reaction of their offset correction on a ghost cell '
-		           '(RdemPhys.offsetGrad1, 2) is not exchanged yet' % f['offsets'])
 	if f.get('hex8') and f.get('breakable'):
 		out.append('%d hexahedral Poisson elements with springs that can break: an element across a subdomain boundary is released by '
 		           'the bonds between two ghosts, which mpy erases; their scales are not exchanged yet (use cells: '

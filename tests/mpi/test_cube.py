@@ -1,5 +1,5 @@
 """The paper's cube on YADE's MPI (yade.mpy, three processes: the master and two workers, oversubscribed, one thread
-each) against the serial run of the same binary (scripts/mpi_cube.py): identical bit for bit with the Poisson cells'
+each) against the serial run of the same binary (scripts/mpi_compare.py): identical bit for bit with the Poisson cells'
 exchange (RdemGhostExchange), different without it (the ghosts' cell strains then come from the bonds the rank has).
 
 Run by CTest in a build against YADE with MPI (tools/setup.sh --mpi: build-mpi/); elsewhere it reports itself skipped
@@ -14,7 +14,7 @@ import tempfile
 import unittest
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..')
-SCRIPT = os.path.join(ROOT, 'scripts', 'mpi_cube.py')
+SCRIPT = os.path.join(ROOT, 'scripts', 'mpi_compare.py')
 LAUNCHER = os.environ.get('RDEM_LAUNCHER', os.path.join(ROOT, 'build-mpi', 'bin', 'yade'))
 MPIEXEC = shutil.which('mpiexec')
 STEPS = 100
