@@ -1,10 +1,12 @@
-"""The paper's cube on YADE's MPI (yade.mpy, three processes: the master and two workers, oversubscribed, one thread
-each) against the serial run of the same binary (scripts/mpi_compare.py): identical bit for bit with the Poisson cells'
-exchange (RdemGhostExchange), different without it (the ghosts' cell strains then come from the bonds the rank has).
+"""The paper's cube and a running-bond wall on YADE's MPI (yade.mpy, three processes: the master and two workers,
+oversubscribed, one thread each) against the serial run of the same binary (scripts/mpi_compare.py): identical bit for
+bit with the Poisson cells' exchange (RdemGhostExchange), different without it (the ghosts' cell strains then come
+from the bonds the rank has); the wall, with springs breaking on the total stress of their faces, with the same break
+counts every 10 steps.
 
 Run by CTest in a build against YADE with MPI (tools/setup.sh --mpi: build-mpi/); elsewhere it reports itself skipped
 (exit status 77) with the reason. By hand:
-    RDEM_LAUNCHER=build-mpi/bin/yade /usr/bin/python3 tests/mpi/test_cube.py"""
+    RDEM_LAUNCHER=build-mpi/bin/yade /usr/bin/python3 tests/mpi/test_mpy.py"""
 import json
 import os
 import shutil
@@ -30,10 +32,11 @@ def skipReason():
 	return None
 
 
-def run(out, poisson, mpi, exchange=True):
+def run(out, poisson, mpi, exchange=True, scene='cube', steps=STEPS, every=0):
 	env = dict(os.environ, OMP_NUM_THREADS='1')
 	# contact detection from the first step in both runs: mpy runs its collider at the split (doc/mpi.md)
-	cmd = [LAUNCHER, '-n', '-x', SCRIPT, '--poisson', poisson, '--steps', str(STEPS), '--contacts', 'always', '--out', out]
+	cmd = [LAUNCHER, '-n', '-x', SCRIPT, '--scene', scene, '--poisson', poisson, '--steps', str(steps), '--every', str(every), '--contacts', 'always',
+	       '--out', out]
 	if mpi:
 		cmd = [MPIEXEC, '--allow-run-as-root', '--oversubscribe', '-n', '3'] + cmd + ['--mpi']
 		env = {k: v for k, v in env.items() if not k.startswith(('OMPI_', 'PMIX_'))}  # a fresh MPI job, not ctest's
@@ -87,9 +90,18 @@ class Cube(unittest.TestCase):
 		self.assertGreater(dmax, 0)
 
 
+	def test_running_bond_wall_with_cracks(self):
+		# 10 bricks by 10 courses, 2 blocks per brick: cut along the wall's length between two bricks' blocks
+		serial = run(os.path.join(self.tmp, 'wall-serial.json'), 'cells', mpi=False, scene='wall', steps=300, every=10)
+		mpi = run(os.path.join(self.tmp, 'wall-mpi.json'), 'cells', mpi=True, scene='wall', steps=300, every=10)
+		self.assertGreater(serial['breaks'][0] + serial['breaks'][1], 0)  # it cracks within the run
+		self.assertEqual(mpi['history'], serial['history'])  # the same break counts (each bond counted once) every 10 steps
+		self.assertEqual(differences(serial, mpi), (0, 0.0))
+
+
 if __name__ == '__main__':
 	reason = skipReason()
 	if reason:
-		print('test_cube: skipped:', reason)
+		print('test_mpy: skipped:', reason)
 		sys.exit(77)
 	unittest.main()
