@@ -52,15 +52,18 @@ void RdemCellNetwork::rebuild(Scene* scene)
 	   the same order whatever the container's history (the collider's insertions and erasures reorder it, and so does a
 	   rank of YADE's MPI, which holds only some of the bodies), so that results are reproducible bit for bit. */
 	vector<shared_ptr<Interaction>> sorted;
-	for (const auto& I : *scene->interactions)
-		if (I->isReal()) sorted.push_back(I);
+	for (const auto& I : *scene->interactions) {
+		if (!I->isReal()) continue;
+		const auto* p = dynamic_cast<const RdemPhys*>(I->phys.get());
+		const auto* g = dynamic_cast<const RdemGeom*>(I->geom.get());
+		if (p && g && g->bonded && (p->cellCoef1 != 0 || p->cellCoef2 != 0)) sorted.push_back(I);
+	}
 	std::sort(sorted.begin(), sorted.end(), [](const shared_ptr<Interaction>& a, const shared_ptr<Interaction>& b) {
 		return std::make_pair(a->getId1(), a->getId2()) < std::make_pair(b->getId1(), b->getId2());
 	});
 	for (const auto& I : sorted) {
-		const auto* p = dynamic_cast<const RdemPhys*>(I->phys.get());
-		const auto* g = dynamic_cast<const RdemGeom*>(I->geom.get());
-		if (!p || !g || !g->bonded || (p->cellCoef1 == 0 && p->cellCoef2 == 0)) continue;
+		const auto* p = static_cast<const RdemPhys*>(I->phys.get());
+		const auto* g = static_cast<const RdemGeom*>(I->geom.get());
 		Bond b { indexOf(I->getId1()),
 			 indexOf(I->getId2()),
 			 rdem::dominantAxis<Real>(g->segNormal1),

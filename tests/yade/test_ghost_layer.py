@@ -8,11 +8,17 @@ orientations are overwritten with scene A's (what mpy sends: 13 reals per block)
 * Springs only: the own blocks of B follow A's bit for bit (no exchange beyond mpy's is needed; the per-body force sums
   do not depend on the interaction container, which differs between A and B).
 * Poisson cells, with nothing else exchanged: the own blocks next to the cut differ at once (a ghost's cell strain in B
-  comes from its bond to the own block only), which is what RdemGhostExchange is for (that exchange needs MPI and is
-  tested by tests/mpi/test_mpy.py)."""
+  comes from its bond to the own block only).
+* Poisson cells with the ghosts' cell strain, crack scale and elastic stress copied from A after B's
+  RdemCellStrainUpdater and before its InteractionLoop (a PyRunner there, with RdemState.updateAttrs): what
+  RdemGhostExchange sends first (7 reals per block); bit for bit again. Its second message (the full dW/deps inside
+  RdemPoissonEngine) only matters for bonds with a centroid offset (running bond), which a grid has not. The exchange
+  itself needs MPI: tests/mpi/test_mpy.py."""
+import builtins
 import unittest
 import harness
 from yade import O
+from yade.wrapper import PyRunner, RdemCellStrainUpdater
 from yade.rdem import scenes, build
 from yade.rdem.partition import bisect
 
@@ -27,8 +33,15 @@ def cube(poisson):
 	return test.ids
 
 
-def emulate(poisson):
-	"""Returns (own ids, {id: (pos, ori)} of A's own blocks, the same of B's) after STEPS steps."""
+def copyCells():
+	"""In scene B's step, after its RdemCellStrainUpdater: the ghosts' cell values of A's same step."""
+	for i, (strain, scale, stress) in builtins.rdemGhostCells.items():
+		O.bodies[i].state.updateAttrs({'strain': strain, 'cellScale': scale, 'cellStress': stress})
+
+
+def emulate(poisson, cells=False):
+	"""Returns (own ids, ghost ids, {id: (pos, ori)} of A's own blocks, the same of B's) after STEPS steps; cells: copy the
+	ghosts' cell values as RdemGhostExchange's first message does."""
 	O.switchToScene(0)
 	O.reset()
 	ids = cube(poisson)
@@ -47,10 +60,15 @@ def emulate(poisson):
 	for I in list(O.interactions):
 		if I.id1 in ghostSet and I.id2 in ghostSet:
 			O.interactions.erase(I.id1, I.id2)
+	if cells:
+		builtins.rdemCopyCells = copyCells
+		at = next(k for k, e in enumerate(O.engines) if isinstance(e, RdemCellStrainUpdater)) + 1
+		O.engines = O.engines[:at] + [PyRunner(iterPeriod=1, command='rdemCopyCells()')] + O.engines[at:]
 	for _ in range(STEPS):
 		O.switchToScene(0)
 		O.step()
 		states = [(O.bodies[i].state.pos, O.bodies[i].state.vel, O.bodies[i].state.angVel, O.bodies[i].state.ori) for i in ghosts]
+		builtins.rdemGhostCells = {i: (O.bodies[i].state.strain, O.bodies[i].state.cellScale, O.bodies[i].state.cellStress) for i in ghosts} if cells else {}
 		O.switchToScene(b)
 		O.step()
 		for i, (pos, vel, angVel, ori) in zip(ghosts, states):
@@ -82,6 +100,10 @@ class GhostLayer(unittest.TestCase):
 		# the error starts in the layer next to the cut and reaches every own block within 30 steps (all 144 differ, by
 		# up to 2.6e-8 m of about 1.3e-6 m of displacement); at least that layer (36 blocks) must differ
 		self.assertGreaterEqual(len(differ), 36)
+
+	def test_cells_with_the_exchanged_values(self):
+		own, ghosts, a, b = emulate('cells', cells=True)
+		self.assertEqual([i for i in own if a[i] != b[i]], [])
 
 
 if __name__ == '__main__':
