@@ -42,7 +42,7 @@ def run(out, poisson, mpi, exchange=True, scene='cube', steps=STEPS, every=0):
 		env = {k: v for k, v in env.items() if not k.startswith(('OMPI_', 'PMIX_'))}  # a fresh MPI job, not ctest's
 		if not exchange:
 			cmd.append('--no-exchange')
-	r = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True, timeout=1800)
+	r = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True, timeout=900)  # a rank that fails leaves the others waiting
 	if r.returncode != 0 or not os.path.exists(out):
 		raise AssertionError('%s failed (%d):\n%s' % (' '.join(cmd), r.returncode, r.stdout[-4000:]))
 	return json.load(open(out))
