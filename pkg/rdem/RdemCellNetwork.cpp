@@ -183,7 +183,13 @@ void RdemCellNetwork::updateStrains(Scene* scene, long brokenSprings, int thread
 
 void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released, int threads, const StressSync& sync)
 {
-	if (!refresh(scene)) return;
+	if (!refresh(scene)) {
+		if (sync) { // the sync is collective on YADE's MPI: a rank without cells takes part with none
+			vector<Vector3r> none;
+			sync(vector<Body::id_t>(), none);
+		}
+		return;
+	}
 	const long nBlocks     = long(body.size());
 	const bool trackEnergy = scene->trackEnergy;
 	Real       e = 0, rel = 0;
