@@ -8,7 +8,8 @@ with Poisson cells and springs that break on the total stress of their face, com
     /usr/bin/python3 scripts/mpi_compare.py --compare output/mpi/serial.json output/mpi/mpi.json
 
 Needs the plugin built against YADE with MPI (tools/setup.sh --mpi); the serial run uses the same binary without mpy.
-Writes a JSON file: input, steps, O.dt, break counts (tension, shear; with --every N also their history), and per block
+Writes a JSON file: input, steps, O.dt, break counts (tension, shear; with --every N also their history), with --mpi
+the blocks, ghosts and bytes sent per step of each rank (mpy's states and RdemGhostExchange's), and per block
 id its position and orientation (exact: float.hex) and its displacement from the start. --compare prints the largest
 position difference of two such files, absolute and over the largest displacement, whether they are identical bit for
 bit and their break counts (exit status 1 unless identical with the same break counts).
@@ -145,7 +146,20 @@ def record(ids):
 	return out
 
 
+def bytesPerStep():
+	"""This rank's bytes sent per step to the other workers: mpy's states (13 reals per boundary block and neighbour)
+	and RdemGhostExchange's last step (both its messages)."""
+	sd = O.subD
+	states = 0
+	if rank > 0:
+		states = sum(13 * 8 * len(sd.intersections[k]) for k in sd.intersections[rank] if k not in (0, rank))
+	ghost = next((e.bytesSent for e in O.engines if type(e).__name__ == 'RdemGhostExchange'), 0)
+	return dict(rank=rank, ownBlocks=sum(1 for b in O.bodies if b is not None and not b.isSubdomain and b.subdomain == rank),
+	            ghosts=sum(1 for b in O.bodies if b is not None and not b.isSubdomain and b.subdomain != rank), mpyStates=states, ghostExchange=ghost)
+
+
 if args.mpi:
+	traffic = mpy.comm.gather(bytesPerStep(), root=0)
 	parts = mpy.comm.gather(record([i for i in ids if O.bodies[i] is not None and O.bodies[i].subdomain == rank]), root=0)
 else:
 	parts = [record(ids)]
@@ -158,6 +172,8 @@ if rank == 0:
 	res = dict(input=vars(args), dt=O.dt, steps=args.steps, ranks=len(parts), blocks=blocks, breaks=finalBreaks, history=history)
 	if args.mpi:
 		res['blocksPerWorker'] = perWorker
+		res['bytesPerStep'] = traffic
+		print('mpi_compare: per rank, blocks, ghosts and bytes sent per step:', traffic)
 	os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
 	json.dump(res, open(args.out, 'w'), indent=0)
 	print('mpi_compare: %d blocks after %d steps (dt %.3g s), breaks %s, written to %s' % (len(blocks), args.steps, O.dt, finalBreaks, args.out))
