@@ -109,10 +109,11 @@ def refusals(f):
 	if f.get('cells') and not f.get('exchange'):
 		out.append('%d Poisson cells without an RdemGhostExchange: the strains of ghost blocks would come from the bonds the rank has, '
 		           'not from all of theirs (rdem.distributed.prepare inserts it)' % f['cells'])
-	if f.get('hex8') and f.get('breakable'):
-		out.append('%d hexahedral Poisson elements with springs that can break: an element across a subdomain boundary is released by '
-		           'the bonds between two ghosts, which mpy erases; their scales are not exchanged yet (use cells: '
-		           'RdemPoissonEngine.elements = \'cells\', or unbreakable springs)' % f['hex8'])
+	if f.get('hex8'):
+		out.append('%d hexahedral Poisson elements: an element across a subdomain boundary takes its scale from its 12 bonds, and the '
+		           'bonds between two ghosts are reset by YADE\'s InteractionLoop on the ranks that hold them as ghosts, which would '
+		           'release the element there at the first step; element scales are not exchanged yet (use cells: '
+		           'RdemPoissonEngine.elements = \'cells\' with the consistent formulation)' % f['hex8'])
 	if f.get('trackEnergy'):
 		out.append('O.trackEnergy: the energies of blocks on a boundary are counted on two ranks and not reduced over ranks yet')
 	return out
