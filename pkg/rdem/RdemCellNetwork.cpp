@@ -48,22 +48,11 @@ void RdemCellNetwork::rebuild(Scene* scene)
                 return body.size() - 1;
 	};
 	vector<size_t> blockOfSide;
-	/* Bonds in the order of their body ids, not of the interaction container: every sum over a block's bonds then has
-	   the same order whatever the container's history (the collider's insertions and erasures reorder it, and so does a
-	   rank of YADE's MPI, which holds only some of the bodies), so that results are reproducible bit for bit. */
-	vector<shared_ptr<Interaction>> sorted;
 	for (const auto& I : *scene->interactions) {
 		if (!I->isReal()) continue;
 		const auto* p = dynamic_cast<const RdemPhys*>(I->phys.get());
 		const auto* g = dynamic_cast<const RdemGeom*>(I->geom.get());
-		if (p && g && g->bonded && (p->cellCoef1 != 0 || p->cellCoef2 != 0)) sorted.push_back(I);
-	}
-	std::sort(sorted.begin(), sorted.end(), [](const shared_ptr<Interaction>& a, const shared_ptr<Interaction>& b) {
-		return std::make_pair(a->getId1(), a->getId2()) < std::make_pair(b->getId1(), b->getId2());
-	});
-	for (const auto& I : sorted) {
-		const auto* p = static_cast<const RdemPhys*>(I->phys.get());
-		const auto* g = static_cast<const RdemGeom*>(I->geom.get());
+		if (!p || !g || !g->bonded || (p->cellCoef1 == 0 && p->cellCoef2 == 0)) continue;
 		Bond b { indexOf(I->getId1()),
 			 indexOf(I->getId2()),
 			 rdem::dominantAxis<Real>(g->segNormal1),
@@ -82,6 +71,12 @@ void RdemCellNetwork::rebuild(Scene* scene)
 	}
 	vector<size_t> order;
 	rdem::groupByKey(blockOfSide, body.size(), first, order);
+	/* Each block's sides in the order of the other block's id, not of the interaction container: every sum over a block's
+	   bonds then has the same order whatever the container's history (the collider's insertions and erasures reorder it,
+	   and so does a rank of YADE's MPI, which holds only some of the bodies), as RdemForceAssembler does for the springs. */
+	const auto otherId = [&](size_t side) { return body[side % 2 ? bond[side / 2].i1 : bond[side / 2].i2]; };
+	for (size_t i = 0; i + 1 < first.size(); ++i)
+		std::sort(order.begin() + long(first[i]), order.begin() + long(first[i + 1]), [&](size_t x, size_t y) { return otherId(x) < otherId(y); });
 	sideBond.resize(order.size());
 	sideSecond.resize(order.size());
 	sideOffset.resize(order.size());
