@@ -77,10 +77,11 @@ def cube():
 
 
 def wall():
-	"""A running-bond wall, 10 bricks by 10 courses, one wythe, 2 blocks per brick along its length, between a base beam
-	(fixed) and a top beam that moves down at ``rate``; consistent formulation, cells, springs breaking on the total
-	stress of their face, contacts detected from the first step; a fixed step, half the stepper's estimate at set-up
-	(the same on every rank, which all build the whole scene)."""
+	"""A running-bond wall, 10 bricks by 10 courses, one wythe, one block per brick (the bed joints' bonds have centroid
+	offsets, which RdemGhostExchange's second message is for), its bottom course fixed and its top course moving down at
+	``rate``; consistent formulation, cells, springs breaking on the total stress of their face, contacts detected from
+	the first step; a fixed step, half the stepper's estimate at set-up (the same on every rank, which all build the
+	whole scene)."""
 	from yade.wrapper import RdemMat, RdemJoint
 	from yade.rdem import masonry
 	if args.poisson != 'cells':
@@ -89,11 +90,10 @@ def wall():
 	O.materials.append(brick)
 	O.engines = build.engines(formulation='consistent', failureStress='total', recontact='always', dt=1e-9)
 	mortar = RdemJoint(young=5e9, poisson=0.2, tensileStrength=0.3e6, cohesion=0.5e6, frictionAngle=0.6)
-	w = masonry.wall(10 * 0.26 - 0.01, 10 * 0.065 - 0.01, 0.12, bond='running', blocksPerBrick=(2, 1, 1), baseBeam=0.05, topBeam=0.05,
-	                 brickMaterial=brick, jointMaterial=mortar)
-	for i in w.beams['base'] + w.beams['top']:
+	w = masonry.wall(10 * 0.26 - 0.01, 10 * 0.065 - 0.01, 0.12, bond='running', brickMaterial=brick, jointMaterial=mortar)
+	for i in w.courses[0] + w.courses[-1]:
 		O.bodies[i].state.blockedDOFs = 'xyzXYZ'
-	for i in w.beams['top']:
+	for i in w.courses[-1]:
 		O.bodies[i].state.vel = Vector3(0, 0, -args.rate)
 	build.poissonEngine().elements = 'cells'
 	build.poissonEngine().build(w.ids)
