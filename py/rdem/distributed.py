@@ -31,6 +31,8 @@ def assign(workers, master=()):
 	1 … ``workers`` by :func:`rdem.partition.bisect` of their centroids. Returns the number of blocks of each worker.
 
 	:raises ValueError: a body that is not a block, a master body that is not fixed, or what ``bisect`` refuses."""
+	if not hasattr(O.bodies[0] if len(O.bodies) else None, 'subdomain'):
+		raise RuntimeError('rdem.distributed.assign: this YADE has no Body.subdomain (built without MPI); use build-mpi/bin/yade (tools/setup.sh --mpi)')
 	master = set(master)
 	ids = []
 	for b in O.bodies:
@@ -55,11 +57,11 @@ def features():
 	"""What the scene has that matters for a distributed run (the keys of :func:`rdem.partition.refusals`)."""
 	f = dict(others=[], masterMoving=[], hex8=0, cells=0, exchange=False, trackEnergy=bool(O.trackEnergy), breakable=False)
 	for b in O.bodies:
-		if b is None or b.isSubdomain:
+		if b is None or getattr(b, 'isSubdomain', False):  # (a YADE without MPI has neither attribute: all on the master)
 			continue
 		if not isinstance(b.shape, RdemBlock):
 			f['others'].append(b.id)
-		elif b.subdomain == 0 and not _fixed(b):
+		elif getattr(b, 'subdomain', 0) == 0 and not _fixed(b):
 			f['masterMoving'].append(b.id)
 	for e in O.engines:
 		if isinstance(e, RdemPoissonEngine) and not e.dead:
