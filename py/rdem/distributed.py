@@ -13,7 +13,7 @@ each builds the scene, mpy then replaces the workers' scenes by the master's whe
 Needs YADE built with MPI (``tools/setup.sh --mpi``): the plain YADE has no :yref:`Body.subdomain`.
 """
 import math
-from yade import O
+from yade import O, Body
 from yade.wrapper import RdemBlock, RdemMat, RdemPoissonEngine, RdemCellStrainUpdater, RdemTimeStepper, InsertionSortCollider, \
     InteractionLoop, Bo1_Box_Aabb, PyRunner
 from .partition import bisect, counts, refusals
@@ -31,7 +31,7 @@ def assign(workers, master=()):
 	1 … ``workers`` by :func:`rdem.partition.bisect` of their centroids. Returns the number of blocks of each worker.
 
 	:raises ValueError: a body that is not a block, a master body that is not fixed, or what ``bisect`` refuses."""
-	if not hasattr(O.bodies[0] if len(O.bodies) else None, 'subdomain'):
+	if not hasattr(Body(), 'subdomain'):
 		raise RuntimeError('rdem.distributed.assign: this YADE has no Body.subdomain (built without MPI); use build-mpi/bin/yade (tools/setup.sh --mpi)')
 	master = set(master)
 	ids = []
