@@ -14,7 +14,9 @@ readonly PACKAGES=(
 	qtbase5-dev libqt5opengl5-dev libqglviewer-dev-qt5 freeglut3-dev libglu1-mesa-dev libglib2.0-dev
 	pyqt5-dev-tools python3-pyqt5 python3-pyqt5.qtwebkit python3-pyqt5.qtsvg # yade.qt imports QtWebKit (or QtWebEngine); IPython's Qt check needs QtSvg
 	# the viewer test renders offscreen under Xvfb (xvfb-run needs xauth)
-	xvfb xauth)
+	xvfb xauth
+	# YADE's MPI (tools/setup.sh --mpi: ENABLE_MPI, yade.mpy) and the mpiexec that starts the parallel runs
+	libopenmpi-dev openmpi-bin python3-mpi4py)
 
 missing=()
 for pkg in "${PACKAGES[@]}"; do

@@ -71,6 +71,12 @@ void RdemCellNetwork::rebuild(Scene* scene)
 	}
 	vector<size_t> order;
 	rdem::groupByKey(blockOfSide, body.size(), first, order);
+	/* Each block's sides in the order of the other block's id, not of the interaction container: every sum over a block's
+	   bonds then has the same order whatever the container's history (the collider's insertions and erasures reorder it,
+	   and so does a rank of YADE's MPI, which holds only some of the bodies), as RdemForceAssembler does for the springs. */
+	const auto otherId = [&](size_t side) { return body[side % 2 ? bond[side / 2].i1 : bond[side / 2].i2]; };
+	for (size_t i = 0; i + 1 < first.size(); ++i)
+		std::sort(order.begin() + long(first[i]), order.begin() + long(first[i + 1]), [&](size_t x, size_t y) { return otherId(x) < otherId(y); });
 	sideBond.resize(order.size());
 	sideSecond.resize(order.size());
 	sideOffset.resize(order.size());
@@ -170,9 +176,15 @@ void RdemCellNetwork::updateStrains(Scene* scene, long brokenSprings, int thread
 	}
 }
 
-void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released, int threads)
+void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released, int threads, const StressSync& sync)
 {
-	if (!refresh(scene)) return;
+	if (!refresh(scene)) {
+		if (sync) { // the sync is collective on YADE's MPI: a rank without cells takes part with none
+			vector<Vector3r> none;
+			sync(vector<Body::id_t>(), none);
+		}
+		return;
+	}
 	const long nBlocks     = long(body.size());
 	const bool trackEnergy = scene->trackEnergy;
 	Real       e = 0, rel = 0;
@@ -206,6 +218,7 @@ void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energ
 	}
 	energy += e;
 	released += rel;
+	if (sync) sync(body, stress); // YADE's MPI: the ghosts' from their owners
 	/* 2. Per block: the normal force -∂W/∂u_n = -(c₁∂W/∂ε₁ + c₂∂W/∂ε₂) of each of its bonds, on body 2 along the bond's
 	      normal and on body 1 against it, at the face centre; summed block by block in the fixed order of the lists. */
 	RdemForceAssembler::prepareDirectSums(scene, long(scene->bodies->size()));

@@ -10,6 +10,7 @@
 #include <core/Scene.hpp>
 #include <pkg/rdem/RdemState.hpp>
 #include <pkg/rdem/math/StiffnessSpectrum.hpp>
+#include <functional>
 
 namespace yade {
 
@@ -21,6 +22,9 @@ namespace yade {
    Not a YADE class: RdemPoissonEngine owns one; RdemCellStrainUpdater calls updateStrains on it. */
 class RdemCellNetwork {
 public:
+	/// Called by applyForces between the cells' ∂W/∂ε and the bonds' forces with the blocks' ids and their ∂W/∂ε [N·m] (by
+	/// compact index): on YADE's MPI, RdemGhostExchange replaces the ghosts' by their owners' (it needs bonds the rank lacks).
+	using StressSync = std::function<void(const vector<Body::id_t>& body, vector<Vector3r>& stress)>;
 	/// Rebuilds the arrays if the scene changed since the last call; false if there is no cell.
 	bool refresh(Scene* scene);
 	/// Before the law: poses, openings u_n = n·(P₂ - P₁) at the face centres, crack scales, RdemState::strain,
@@ -30,7 +34,7 @@ public:
 	/// After the law: ∂W/∂ε of every cell (its elastic stress plus the reaction of its bonds' offset correction), then the
 	/// normal force -Σ c ∂W/∂ε of every bond at its face centre, added to the blocks in a fixed order. Adds the cells'
 	/// energy ½ s εᵀKε and the energy released by a drop of s [J]. Threads as for updateStrains.
-	void applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released, int threads);
+	void applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released, int threads, const StressSync& sync = StressSync());
 	/// Per body id, the Gershgorin bound of the squared eigenfrequency the cells add [1/s²] (see the definition).
 	vector<Real> omega2Bound(Scene* scene);
 	/// Adds the cells' linear stiffness ½ s εᵀ CᵀKC ε on the bond openings at the current poses to K (RdemTimeStepper);

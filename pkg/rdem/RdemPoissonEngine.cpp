@@ -294,7 +294,10 @@ int RdemPoissonEngine::nCells() const
 void RdemPoissonEngine::cellAction()
 {
 	Real energy = 0, released = 0;
-	cells.applyForces(scene, releaseOnCrack, energy, released, ompThreads);
+	// the ghosts' stresses from their owners on YADE's MPI (RdemGhostExchange sets the sync for this step only)
+	RdemCellNetwork::StressSync sync;
+	std::swap(sync, RdemSharedState::of(scene, shared).cellStressSync);
+	cells.applyForces(scene, releaseOnCrack, energy, released, ompThreads, sync);
 	if (scene->trackEnergy && cells.nCells() > 0) {
 		scene->energy->add(energy, "rdemPoisson", energyIx, /*reset every step*/ true);
 		scene->energy->add(released, "rdemPoissonRelease", releaseIx, /*reset every step*/ false);

@@ -12,6 +12,7 @@
 #include <core/Engine.hpp>
 #include <pkg/rdem/RdemStiffnessSource.hpp>
 #include <boost/weak_ptr.hpp>
+#include <functional>
 
 namespace yade {
 
@@ -77,6 +78,9 @@ public:
 	/// The Poisson cells, owned by the scene's RdemPoissonEngine, whose strains RdemCellStrainUpdater updates before the
 	/// interaction loop (set by the check of the engines; none without a Poisson engine).
 	RdemCellNetwork* cells = nullptr;
+	/// Set for one step by RdemGhostExchange (YADE's MPI), taken by RdemPoissonEngine for RdemCellNetwork::applyForces:
+	/// replaces the ghosts' ∂W/∂ε by their owners' (arguments: the cells' block ids and ∂W/∂ε by compact index).
+	std::function<void(const vector<Body::id_t>&, vector<Vector3r>&)> cellStressSync;
 	/* The shared state of an engine or functor of scene whose own is `mine`: if mine is None, the one of the scene's
 	   Law2_RdemGeom_RdemPhys_FaceSprings (handed to it here). Checks the scene's engines when their list changed since
 	   the last check (see checkEngines). Throws std::runtime_error if there is none. */

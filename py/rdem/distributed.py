@@ -1,0 +1,162 @@
+"""The refined DEM on YADE's MPI (:mod:`yade.mpy`): subdomains for the blocks, the checks, and the engines mpy does not
+add itself. See doc/mpi.md.
+
+Every rank runs the same script (``mpiexec -n 3 build-mpi/bin/yade -n script.py``: the master, rank 0, and two workers);
+each builds the scene, mpy then replaces the workers' scenes by the master's when it splits it. Typical use::
+
+    from yade import mpy, rdem
+    from yade.rdem import distributed, scenes
+    test = scenes.CompressionTest(formulation=None)
+    distributed.prepare()              # subdomains by bisection, checks, collider, one time step
+    mpy.mpirun(1000, withMerge=True)    # the master's O.bodies hold every block afterwards
+
+Needs YADE built with MPI (``tools/setup.sh --mpi``): the plain YADE has no :yref:`Body.subdomain`.
+"""
+import math
+from yade import O, Body
+from yade.wrapper import RdemBlock, RdemMat, RdemPoissonEngine, RdemCellStrainUpdater, RdemTimeStepper, InsertionSortCollider, \
+    InteractionLoop, Bo1_Box_Aabb, PyRunner
+from .partition import bisect, counts, refusals
+
+__all__ = ['assign', 'features', 'check', 'prepare', 'minTimeStep', 'breakCounts']
+
+
+def _fixed(b):
+	s = b.state
+	return s.blockedDOFs == 'xyzXYZ' and s.vel.norm() == 0 and s.angVel.norm() == 0
+
+
+def assign(workers, master=()):
+	"""Set :yref:`Body.subdomain` of every block: ``master`` (ids of fixed blocks) stay on rank 0, the others go to ranks
+	1 … ``workers`` by :func:`rdem.partition.bisect` of their centroids. Returns the number of blocks of each worker.
+
+	:raises ValueError: a body that is not a block, a master body that is not fixed, or what ``bisect`` refuses."""
+	if not hasattr(Body(), 'subdomain'):
+		raise RuntimeError('rdem.distributed.assign: this YADE has no Body.subdomain (built without MPI); use build-mpi/bin/yade (tools/setup.sh --mpi)')
+	master = set(master)
+	ids = []
+	for b in O.bodies:
+		if b is None or b.isSubdomain:
+			continue
+		if not isinstance(b.shape, RdemBlock):
+			raise ValueError('assign: body %d is not an RdemBlock; only blocks can be assigned to subdomains' % b.id)
+		if b.id in master:
+			if not _fixed(b):
+				raise ValueError('assign: body %d on the master moves (blockedDOFs %r, vel %s): mpy sends the master\'s states to no worker, '
+				                 'only fixed bodies may stay there' % (b.id, b.state.blockedDOFs, b.state.vel))
+			b.subdomain = 0
+		else:
+			ids.append(b.id)
+	parts = bisect([O.bodies[i].state.pos for i in ids], workers)
+	for i, p in zip(ids, parts):
+		O.bodies[i].subdomain = p + 1
+	return counts(parts, workers)
+
+
+def features():
+	"""What the scene has that matters for a distributed run (the keys of :func:`rdem.partition.refusals`)."""
+	f = dict(others=[], masterMoving=[], hex8=0, cells=0, exchange=False, trackEnergy=bool(O.trackEnergy), breakable=False)
+	for b in O.bodies:
+		if b is None or getattr(b, 'isSubdomain', False):  # (a YADE without MPI has neither attribute: all on the master)
+			continue
+		if not isinstance(b.shape, RdemBlock):
+			f['others'].append(b.id)
+		elif getattr(b, 'subdomain', 0) == 0 and not _fixed(b):
+			f['masterMoving'].append(b.id)
+	for e in O.engines:
+		if isinstance(e, RdemPoissonEngine) and not e.dead:
+			f['hex8'] += e.nElements
+			f['cells'] += e.nCells
+		if type(e).__name__ == 'RdemGhostExchange' and not e.dead and e.exchange:
+			f['exchange'] = True
+	f['breakable'] = any(isinstance(m, RdemMat) and (math.isfinite(m.tensileStrength) or math.isfinite(m.cohesion)) for m in O.materials)
+	return f
+
+
+def check():
+	"""Raise RuntimeError naming everything that keeps the scene from a distributed run identical to the serial one."""
+	r = refusals(features())
+	if r:
+		raise RuntimeError('rdem.distributed: this scene cannot run on yade.mpy yet:\n  - ' + '\n  - '.join(r))
+
+
+def minTimeStep():
+	"""O.dt := its minimum over all ranks (a PyRunner after the time stepper calls it: one step for all ranks)."""
+	from yade import mpy
+	O.dt = mpy.comm.allreduce(O.dt, op=mpy.MPI.MIN)
+
+
+class _SceneCollider:
+	"""The scene's InsertionSortCollider, looked up at each use: mpy's parallelCollide uses a global ``collider`` (the
+	engine labelled so in YADE's examples); the plugin's is labelled ``rdemCollider``, and the workers' engines are
+	replaced when mpy splits the scene."""
+
+	def _engine(self):
+		return next(e for e in O.engines if isinstance(e, InsertionSortCollider))
+
+	def __getattr__(self, name):
+		return getattr(self._engine(), name)
+
+	def __setattr__(self, name, value):
+		setattr(self._engine(), name, value)
+
+	def __call__(self):
+		self._engine()()
+
+
+def prepare(workers=None, master=(), exchange=True):
+	"""Make the current scene ready for :func:`yade.mpy.mpirun` on every rank: assign the blocks (:func:`assign`, to
+	``workers`` ranks, default: all but the master), insert an :yref:`RdemGhostExchange` after the
+	:yref:`RdemCellStrainUpdater` (with ``exchange=False`` one that does not exchange, which is wrong at the boundary:
+	for tests), a collider if there is none (mpy's parallel collision detection needs an :yref:`InsertionSortCollider`,
+	sweep distance 5 % of the smallest block), and, if :yref:`RdemTimeStepper` sets the step, a PyRunner after it that
+	takes the minimum over ranks; then :func:`check`. Returns the blocks per worker."""
+	from yade import mpy
+	if mpy.comm is None:
+		mpy.configure()
+	if workers is None:
+		workers = mpy.numThreads - 1
+	if workers < 1:
+		raise ValueError('workers = %r: mpy needs at least one worker besides the master (mpiexec -n 2 or more)' % (workers, ))
+	perWorker = assign(workers, master)
+	eng = list(O.engines)
+	names = [type(e).__name__ for e in eng]
+	if 'RdemGhostExchange' not in names:
+		at = next((k + 1 for k, e in enumerate(eng) if isinstance(e, RdemCellStrainUpdater)), None)
+		if at is not None:
+			from yade.wrapper import RdemGhostExchange
+			eng.insert(at, RdemGhostExchange(exchange=bool(exchange), label='rdemGhosts'))
+	if not any(isinstance(e, InsertionSortCollider) for e in eng):
+		size = min(min(b.shape.extents) for b in O.bodies if b is not None and isinstance(b.shape, RdemBlock))
+		at = next(k for k, e in enumerate(eng) if isinstance(e, InteractionLoop))
+		eng.insert(at, InsertionSortCollider([Bo1_Box_Aabb()], verletDist=0.1 * size, label='rdemCollider'))
+	stepper = next((k for k, e in enumerate(eng) if isinstance(e, RdemTimeStepper) and e.active), None)
+	if stepper is not None:
+		eng.insert(stepper + 1, PyRunner(iterPeriod=1, initRun=True, command='from yade.rdem import distributed; distributed.minTimeStep()', label='rdemMinDt'))
+	O.engines = eng
+	if not hasattr(mpy, 'collider'):
+		mpy.collider = _SceneCollider()
+	if exchange:
+		check()
+	return perWorker
+
+
+def breakCounts():
+	"""(tension, shear): restoring springs broken so far over all ranks, each bond counted once, on the rank that owns its
+	body of lower id (a bond across a subdomain boundary exists on two ranks, and each rank's
+	:yref:`Law2_RdemGeom_RdemPhys_FaceSprings.tensionBreaks` counts it). Collective: call it on every rank."""
+	from yade import mpy
+	from yade.wrapper import RdemPhys
+	from . import build
+
+	def mine(id1, id2):
+		b = O.bodies[min(id1, id2)]
+		return b is not None and b.subdomain == mpy.rank
+
+	tension = shear = 0
+	states = [I.phys.segState for I in O.interactions if I.isReal and isinstance(I.phys, RdemPhys) and mine(I.id1, I.id2)]
+	states += [r.segState for r in build.law().releasedBonds if mine(r.id1, r.id2)]
+	for seg in states:
+		tension += sum(1 for x in seg if x == 1)
+		shear += sum(1 for x in seg if x == 2)
+	return mpy.comm.allreduce(tension), mpy.comm.allreduce(shear)

@@ -1,0 +1,42 @@
+"""rdem.distributed's reading of a scene (features) and the refusals it leads to, on real scenes of the plugin, in any
+YADE (without MPI every body counts as on the master). The runs on mpy are tests/mpi/test_mpy.py."""
+import unittest
+import harness
+from yade import O
+from yade.rdem import scenes, build, partition, distributed
+
+
+def cube(formulation):
+	O.reset()
+	t = scenes.CompressionTest(blocksPerEdge=4, formulation=formulation)
+	if formulation == 'consistent':
+		build.poissonEngine().elements = 'cells'
+		build.poissonEngine().build(t.ids)
+	return t
+
+
+class Features(unittest.TestCase):
+
+	def test_hexahedra_refused(self):
+		cube('paper')
+		f = distributed.features()
+		self.assertEqual(f['hex8'], 45)  # 3 x 3 x 5 elements on the 4 x 4 x 6 grid of blocks (cube and platens)
+		self.assertTrue(any('hexahedral' in r for r in partition.refusals(f)))
+
+	def test_cells_need_the_exchange(self):
+		cube('consistent')
+		f = distributed.features()
+		self.assertEqual((f['cells'], f['hex8'], f['exchange']), (96, 0, False))
+		self.assertTrue(any('RdemGhostExchange' in r for r in partition.refusals(f)))
+
+	def test_springs_only_on_workers(self):
+		cube(None)
+		f = distributed.features()
+		self.assertEqual((f['cells'], f['hex8'], len(f['others'])), (0, 0, 0))
+		# every block is on the master in a YADE without MPI (or before assign): moving ones are refused there
+		self.assertEqual(len(f['masterMoving']), 96)
+		self.assertEqual(len(partition.refusals(f)), 1)
+
+
+if __name__ == '__main__':
+	harness.run(Features)
