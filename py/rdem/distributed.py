@@ -1,5 +1,5 @@
 """The refined DEM on YADE's MPI (:mod:`yade.mpy`): subdomains for the blocks, the checks, and the engines mpy does not
-add itself. See doc/mpi.md.
+add itself. See :ref:`the MPI page <rdem-mpi>` of the user guide.
 
 Every rank runs the same script (``mpiexec -n 3 build-mpi/bin/yade -n script.py``: the master, rank 0, and two workers);
 each builds the scene, mpy then replaces the workers' scenes by the master's when it splits it. Typical use::
