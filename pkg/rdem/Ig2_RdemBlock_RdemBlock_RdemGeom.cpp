@@ -195,9 +195,8 @@ namespace {
 			afterN += area[i] * kn * compression[i] * compression[i];
 			afterS += area[i] * ks * p.contactShear[size_t(j)].squaredNorm();
 		}
-		const bool       down   = afterN + afterS > before;
-		const Real       scaleS = down ? math::sqrt(before / (afterN + afterS)) : Real(1);
-		const Real       scaleN = down ? scaleS : afterN > 0 ? math::sqrt((before - afterS) / afterN) : Real(1);
+		const auto       scale  = rdem::handOverScales(before, afterN, afterS); // (compression, shear elongation)
+		const Real       scaleN = scale.first, scaleS = scale.second;
 		vector<Vector3r> shear(pos.size(), Vector3r::Zero()), dashpot(pos.size(), Vector3r::Zero());
 		vector<Real>     offset(pos.size(), Real(-1));
 		for (size_t i = 0; i < pos.size(); ++i) {

@@ -213,3 +213,22 @@ TEST(FacePatch, RandomFaceToFaceConfigurations)
 }
 
 } // namespace
+
+TEST(FacePatch, HandOverScalesKeepTheElasticEnergy)
+{
+	// new springs that would store more (a sliver patch handed to vertex samples: 6.67 times) are scaled down alike;
+	// ones that would store less get their compressions scaled up with the shear kept; either way the scaled energy,
+	// scaleN² afterN + scaleS² afterS, is the old one (to round-off)
+	const Scalar cases[][3] = { { 1.0, 5.0, 1.67 }, { 6.0, 1.0, 0.5 }, { 2.0, 2.0, 0.0 }, { 3.0, 0.0, 3.0 }, { 1e-9, 4e-9, 2e-9 } };
+	for (const auto& c : cases) {
+		const auto s = rdem::handOverScales<Scalar>(c[0], c[1], c[2]);
+		EXPECT_NEAR(double(s.first * s.first * c[1] + s.second * s.second * c[2]), double(c[0]), 1e-14 * double(c[0])) << c[0] << ' ' << c[1];
+		if (c[1] + c[2] > c[0]) EXPECT_EQ(s.first, s.second); // down alike
+		else
+			EXPECT_EQ(s.second, Scalar(1)); // the shear kept
+	}
+	// without a compressed new spring nothing is scaled up (the energy is not restored: there is nothing to hold it)
+	const auto none = rdem::handOverScales<Scalar>(2.0, 0.0, 1.0);
+	EXPECT_EQ(none.first, Scalar(1));
+	EXPECT_EQ(none.second, Scalar(1));
+}

@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace yade {
@@ -301,6 +302,22 @@ namespace rdem {
 			}
 		}
 		return out;
+	}
+
+	/// Scale factors (of the compressions, of the shear elongations) that make the springs taking over a contact's
+	/// history store the elastic energy the old ones stored: twice the old energy `before` and the new springs' normal and
+	/// shear parts `afterN`, `afterS` as they would be with the history passed unscaled [J], each Σ a k̄ x² (eqs. 13, 17).
+	/// Where the new springs would store more, both are scaled down alike, √(before/(afterN + afterS)); where less, the
+	/// shear is kept (a larger elongation could pass the friction limit, eq. 17) and the compressions are scaled up,
+	/// √((before − afterS)/afterN), 1 without a compressed new spring. The caller caps a compression at its depth.
+	template <class S> std::pair<S, S> handOverScales(S before, S afterN, S afterS)
+	{
+		using std::sqrt;
+		if (afterN + afterS > before) {
+			const S down = sqrt(before / (afterN + afterS));
+			return { down, down };
+		}
+		return { afterN > 0 ? sqrt((before - afterS) / afterN) : S(1), S(1) };
 	}
 
 } // namespace rdem
