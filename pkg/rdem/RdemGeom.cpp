@@ -40,31 +40,31 @@ vector<Vector3r> RdemGeom::segDispPy(const shared_ptr<State>& s1, const shared_p
 	return out;
 }
 
+namespace {
+	/// One value per spring of a patch, `of(springs, i)` (the Python accessors of ``patch``).
+	template <class T, class Of> vector<T> perSpring(const rdem::PatchSprings<Real>& springs, Of of)
+	{
+		vector<T> out;
+		out.reserve(springs.size);
+		for (size_t i = 0; i < springs.size; ++i)
+			out.push_back(of(springs, i));
+		return out;
+	}
+}
+
 vector<Vector3r> RdemGeom::patchPoints1() const
 {
-	vector<Vector3r> out;
-	const auto       springs = patchSprings();
-	for (size_t i = 0; i < springs.size; ++i)
-		out.push_back(springs.point1(i));
-	return out;
+	return perSpring<Vector3r>(patchSprings(), [](const rdem::PatchSprings<Real>& s, size_t i) { return s.point1(i); });
 }
 
 vector<Vector3r> RdemGeom::patchPoints2() const
 {
-	vector<Vector3r> out;
-	const auto       springs = patchSprings();
-	for (size_t i = 0; i < springs.size; ++i)
-		out.push_back(springs.point2(i));
-	return out;
+	return perSpring<Vector3r>(patchSprings(), [](const rdem::PatchSprings<Real>& s, size_t i) { return s.point2(i); });
 }
 
 vector<Real> RdemGeom::patchAreas() const
 {
-	vector<Real> out;
-	const auto   springs = patchSprings();
-	for (size_t i = 0; i < springs.size; ++i)
-		out.push_back(springs.area(i));
-	return out;
+	return perSpring<Real>(patchSprings(), [](const rdem::PatchSprings<Real>& s, size_t i) { return s.area(i); });
 }
 
 void RdemGeom::clearSamples()
