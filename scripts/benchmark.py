@@ -305,14 +305,20 @@ def pluginLibrary():
 	return os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build', 'lib', 'libpkg_rdem.so')
 
 
-def crackedState():
-	"""Path of the paper scene 5000 steps after its first broken spring, saved by a native run of this build (the saved
-	attributes follow the build) into the system's temporary folder; made if missing (about a minute)."""
+def buildStatePath(name):
+	"""Path of the state `name` saved by this build in the system's temporary folder: `rdem-<name>-<build>` with the first
+	12 hex digits of the SHA-1 of the plugin library this process loaded (a saved scene's attributes follow the build)."""
 	import hashlib
 	import tempfile
 	with open(pluginLibrary(), 'rb') as f:
 		build = hashlib.sha1(f.read()).hexdigest()[:12]
-	path = os.path.join(tempfile.gettempdir(), 'rdem-paper-cracked-%s.yade.gz' % build)
+	return os.path.join(tempfile.gettempdir(), 'rdem-%s-%s' % (name, build))
+
+
+def crackedState():
+	"""Path of the paper scene 5000 steps after its first broken spring, saved by a native run of this build (the saved
+	attributes follow the build) into the system's temporary folder; made if missing (about a minute)."""
+	path = buildStatePath('paper-cracked') + '.yade.gz'
 	if not os.path.exists(path):
 		print('benchmark: saving the cracked paper scene to %s (about a minute) ...' % path, flush=True)
 		rdem.batch.runChild(dict(kind='phases', save=path, saveAfter=5000), 1)
@@ -413,16 +419,12 @@ def wallState(drift):
 	"""Path of the validated MI1 run (scripts/shear_wall.py with its defaults, one thread) saved when the push reaches
 	``drift`` [%], by a native run of this build into the system's temporary folder; made if missing (0.3 %: several
 	minutes)."""
-	import hashlib
 	import subprocess
-	import tempfile
-	with open(pluginLibrary(), 'rb') as f:
-		build = hashlib.sha1(f.read()).hexdigest()[:12]
-	path = os.path.join(tempfile.gettempdir(), 'rdem-mi1-%.2f-%s.yade.gz' % (drift, build))
+	out = buildStatePath('mi1-%.2f' % drift)  # the run's output folder; the state beside it
+	path = out + '.yade.gz'
 	if not os.path.exists(path):
 		print('benchmark: saving MI1 at %.2f %% drift to %s ...' % (drift, path), flush=True)
 		script = os.path.join(os.path.dirname(os.path.abspath(sys.argv[0])), 'shear_wall.py')
-		out = os.path.join(tempfile.gettempdir(), 'rdem-mi1-%.2f-%s' % (drift, build))
 		cmd = rdem.batch.yadeCommand() + ['-j1', '-n', '-x', script, '--max-drift', str(drift), '--save', path, '--vtk-every', '0', '--out', out]
 		proc = subprocess.run(cmd, env=dict(os.environ, OMP_NUM_THREADS='1'), stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
 		if proc.returncode != 0 or not os.path.exists(path):
@@ -436,11 +438,7 @@ WALL_STATES = ((0.02, 'MI1 intact (0.02 % drift)'), (0.30, 'MI1 at its peak (0.3
 def heavyCrackedState():
 	"""Path of the paper's cube at 20 mm/s to three times its first-break displacement (runHeavySave), saved by a native
 	run of this build into the system's temporary folder; made if missing (a few minutes)."""
-	import hashlib
-	import tempfile
-	with open(pluginLibrary(), 'rb') as f:
-		build = hashlib.sha1(f.read()).hexdigest()[:12]
-	path = os.path.join(tempfile.gettempdir(), 'rdem-paper-heavy-%s.yade.gz' % build)
+	path = buildStatePath('paper-heavy') + '.yade.gz'
 	if not os.path.exists(path):
 		print('benchmark: saving the heavily cracked cube to %s (a few minutes) ...' % path, flush=True)
 		res = rdem.batch.runChild(dict(kind='heavysave', save=path), 1)
