@@ -576,10 +576,15 @@ lines = [
     'Made by `build/bin/yade -n scripts/benchmark.py %s` on %s (%d cores, load average %.2f at the end); '
     'each row a fresh process, %d warm-up steps, then 20 timed windows of `O.step()` loops: the fastest window (the speed of the code) and the median one '
     '(this virtual machine\'s speed varies by up to 1.5× from second to second); the whole plan ran %d times round robin, each row is its case\'s '
-    'fastest round and "rounds" lists every round\'s fastest window [µs per body-step]. See doc/performance.md for the discussion.' %
+    'fastest round and "rounds" gives the median of the rounds\' fastest windows, their range, and every round\'s [µs per body-step]. See doc/performance.md for the discussion.' %
     (' '.join(sys.argv[1:]), time.strftime('%Y-%m-%d'), os.cpu_count(), load, warmup, cli.repeat), ''
 ]
-rounds = lambda r: ' '.join('%.3f' % x for x in r['rounds'])
+def rounds(r):
+	"""The rounds column: the median of the rounds' fastest windows, their range, then each round's [µs per body-step]."""
+	x = sorted(r['rounds'])
+	median = x[len(x) // 2] if len(x) % 2 else (x[len(x) // 2 - 1] + x[len(x) // 2]) / 2
+	return '**%.3f** (%.3f–%.3f): %s' % (median, x[0], x[-1], ' '.join('%.3f' % v for v in r['rounds']))
+
 paper = [r for r in results if r['section'] == 'paper']
 if paper:
 	lines += ['## Paper scene and the YADE reference', '', '| model | bodies | threads | steps/s | µs per body-step | median window | rounds | speed-up | breaks |', '|---|---|---|---|---|---|---|---|---|']
