@@ -9,7 +9,8 @@ with Poisson cells and springs that break on the total stress of their face, com
 
 Needs the plugin built against YADE with MPI (tools/setup.sh --mpi); the serial run uses the same binary without mpy.
 Writes a JSON file: input, steps, O.dt, break counts (tension, shear; with --every N also their history), with --mpi
-the blocks, ghosts and bytes sent per step of each rank (mpy's states and RdemGhostExchange's), and per block
+the blocks, ghosts, bytes sent per step (mpy's states and RdemGhostExchange's) and bonds across the cut put back
+(RdemBondKeeper) of each rank, and per block
 id its position and orientation (exact: float.hex) and its displacement from the start. --compare prints the largest
 position difference of two such files, absolute and over the largest displacement, whether they are identical bit for
 bit and their break counts (exit status 1 unless identical with the same break counts).
@@ -147,15 +148,18 @@ def record(ids):
 
 
 def bytesPerStep():
-	"""This rank's bytes sent per step to the other workers: mpy's states (13 reals per boundary block and neighbour)
-	and RdemGhostExchange's last step (both its messages)."""
+	"""This rank's blocks and ghosts, bytes sent per step to the other workers: mpy's states (13 reals per boundary block
+	and neighbour) and RdemGhostExchange's last step (both its messages), and the bonds across the cut RdemBondKeeper put
+	back after mpy's split."""
 	sd = O.subD
 	states = 0
 	if rank > 0:
 		states = sum(13 * 8 * len(sd.intersections[k]) for k in sd.intersections[rank] if k not in (0, rank))
 	ghost = next((e.bytesSent for e in O.engines if type(e).__name__ == 'RdemGhostExchange'), 0)
+	kept = next((e.restored for e in O.engines if type(e).__name__ == 'RdemBondKeeper'), 0)
 	return dict(rank=rank, ownBlocks=sum(1 for b in O.bodies if b is not None and not b.isSubdomain and b.subdomain == rank),
-	            ghosts=sum(1 for b in O.bodies if b is not None and not b.isSubdomain and b.subdomain != rank), mpyStates=states, ghostExchange=ghost)
+	            ghosts=sum(1 for b in O.bodies if b is not None and not b.isSubdomain and b.subdomain != rank), mpyStates=states, ghostExchange=ghost,
+	            bondsRestored=kept)
 
 
 if args.mpi:

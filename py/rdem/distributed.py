@@ -14,11 +14,10 @@ Needs YADE built with MPI (``tools/setup.sh --mpi``): the plain YADE has no :yre
 """
 import math
 from yade import O, Body
-from yade.wrapper import RdemBlock, RdemMat, RdemPoissonEngine, RdemCellStrainUpdater, RdemTimeStepper, InsertionSortCollider, \
-    InteractionLoop, Bo1_Box_Aabb, PyRunner
+from yade.wrapper import RdemBlock, RdemMat, RdemPoissonEngine, RdemCellStrainUpdater, InsertionSortCollider, InteractionLoop, Bo1_Box_Aabb
 from .partition import bisect, counts, refusals
 
-__all__ = ['assign', 'features', 'check', 'prepare', 'minTimeStep', 'breakCounts']
+__all__ = ['assign', 'features', 'check', 'prepare', 'breakCounts']
 
 
 def _fixed(b):
@@ -80,12 +79,6 @@ def check():
 		raise RuntimeError('rdem.distributed: this scene cannot run on yade.mpy yet:\n  - ' + '\n  - '.join(r))
 
 
-def minTimeStep():
-	"""O.dt := its minimum over all ranks (a PyRunner after the time stepper calls it: one step for all ranks)."""
-	from yade import mpy
-	O.dt = mpy.comm.allreduce(O.dt, op=mpy.MPI.MIN)
-
-
 class _SceneCollider:
 	"""The scene's InsertionSortCollider, looked up at each use: mpy's parallelCollide uses a global ``collider`` (the
 	engine labelled so in YADE's examples); the plugin's is labelled ``rdemCollider``, and the workers' engines are
@@ -106,11 +99,12 @@ class _SceneCollider:
 
 def prepare(workers=None, master=(), exchange=True):
 	"""Make the current scene ready for :func:`yade.mpy.mpirun` on every rank: assign the blocks (:func:`assign`, to
-	``workers`` ranks, default: all but the master), insert an :yref:`RdemGhostExchange` after the
+	``workers`` ranks, default: all but the master), put an :yref:`RdemBondKeeper` first in the engines and record the
+	bonds across the cuts (mpy's split erases them; it puts them back), insert an :yref:`RdemGhostExchange` after the
 	:yref:`RdemCellStrainUpdater` (with ``exchange=False`` one that does not exchange, which is wrong at the boundary:
 	for tests), a collider if there is none (mpy's parallel collision detection needs an :yref:`InsertionSortCollider`,
-	sweep distance 5 % of the smallest block), and, if :yref:`RdemTimeStepper` sets the step, a PyRunner after it that
-	takes the minimum over ranks; then :func:`check`. Returns the blocks per worker."""
+	sweep distance 5 % of the smallest block); then :func:`check`. :yref:`RdemTimeStepper` takes one step for all ranks
+	itself (the minimum of their limits). Returns the blocks per worker."""
 	from yade import mpy
 	if mpy.comm is None:
 		mpy.configure()
@@ -119,7 +113,11 @@ def prepare(workers=None, master=(), exchange=True):
 	if workers < 1:
 		raise ValueError('workers = %r: mpy needs at least one worker besides the master (mpiexec -n 2 or more)' % (workers, ))
 	perWorker = assign(workers, master)
-	eng = list(O.engines)
+	from yade.wrapper import RdemBondKeeper
+	eng = [e for e in O.engines if not isinstance(e, RdemBondKeeper)]
+	keeper = RdemBondKeeper(label='rdemBondKeeper')
+	keeper.keep()
+	eng.insert(0, keeper)
 	names = [type(e).__name__ for e in eng]
 	if 'RdemGhostExchange' not in names:
 		at = next((k + 1 for k, e in enumerate(eng) if isinstance(e, RdemCellStrainUpdater)), None)
@@ -130,9 +128,6 @@ def prepare(workers=None, master=(), exchange=True):
 		size = min(min(b.shape.extents) for b in O.bodies if b is not None and isinstance(b.shape, RdemBlock))
 		at = next(k for k, e in enumerate(eng) if isinstance(e, InteractionLoop))
 		eng.insert(at, InsertionSortCollider([Bo1_Box_Aabb()], verletDist=0.1 * size, label='rdemCollider'))
-	stepper = next((k for k, e in enumerate(eng) if isinstance(e, RdemTimeStepper) and e.active), None)
-	if stepper is not None:
-		eng.insert(stepper + 1, PyRunner(iterPeriod=1, initRun=True, command='from yade.rdem import distributed; distributed.minTimeStep()', label='rdemMinDt'))
 	O.engines = eng
 	if not hasattr(mpy, 'collider'):
 		mpy.collider = _SceneCollider()

@@ -74,6 +74,8 @@ class Cube(unittest.TestCase):
 		mpi = run(os.path.join(self.tmp, poisson + '-mpi.json'), poisson, mpi=True)
 		self.assertEqual(mpi['ranks'], 3)
 		self.assertEqual(sorted(mpi['blocksPerWorker']), [600, 600])  # 12 layers of 100 blocks, cut in the middle
+		# the 100 bonds across the cut, erased by mpy's split, are back on both workers (RdemBondKeeper)
+		self.assertEqual([t['bondsRestored'] for t in mpi['bytesPerStep'] if t['rank'] > 0], [100, 100])
 		self.assertEqual(set(serial['blocks']), set(mpi['blocks']))
 		self.assertEqual(differences(serial, mpi), (0, 0.0))
 		return serial
