@@ -4,6 +4,7 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
+#include <lib/pyutil/gil.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
 #include <pkg/rdem/RdemBondKeeper.hpp>
@@ -45,6 +46,9 @@ void RdemBondKeeper::action()
 		++restored;
 	}
 	LOG_INFO("rank " << scene->subdomain << ": " << restored << " of " << kept.size() << " bonds across subdomains put back");
+	// the master and the other ranks drop the bonds of bodies they no longer hold: the last references, in the simulation's
+	// thread, to what may come from Python (an RdemJoint made in a script), which needs the GIL (RdemCellNetwork::rebuild)
+	gilLock lock;
 	kept.clear();
 #endif
 }

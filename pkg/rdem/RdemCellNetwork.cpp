@@ -4,6 +4,7 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
+#include <lib/pyutil/gil.hpp>
 #include <pkg/rdem/OpenMPLoops.hpp>
 #include <pkg/rdem/RdemCellNetwork.hpp>
 #include <pkg/rdem/RdemForceAssembler.hpp>
@@ -18,6 +19,25 @@ namespace yade {
 
 long RdemCellNetwork::generation = 0;
 
+namespace {
+	void releaseBonds(vector<shared_ptr<Interaction>>& intr, vector<shared_ptr<IPhys>>& phys)
+	{
+		// The bonds of erased bodies (O.bodies.erase, or yade.mpy's erasure of other subdomains' bodies) live on here until
+		// this rebuild, in the simulation's thread. What they hold may come from Python (an RdemJoint made in a script, held
+		// through boost.python's deleter), and releasing that needs the GIL, which this thread does not hold.
+		const bool last = std::any_of(intr.begin(), intr.end(), [](const shared_ptr<Interaction>& I) { return I.use_count() == 1; })
+		        || std::any_of(phys.begin(), phys.end(), [](const shared_ptr<IPhys>& P) { return P.use_count() == 1; });
+		if (last) {
+			gilLock lock;
+			intr.clear();
+			phys.clear();
+		} else {
+			intr.clear();
+			phys.clear();
+		}
+	}
+}
+
 bool RdemCellNetwork::refresh(Scene* scene)
 {
 	// A scene without cells (the paper's hexahedra, or no build) stays without them until the next build: its
@@ -30,9 +50,8 @@ bool RdemCellNetwork::refresh(Scene* scene)
 
 void RdemCellNetwork::rebuild(Scene* scene)
 {
+	releaseBonds(intr, phys);
 	bond.clear();
-	intr.clear();
-	phys.clear();
 	body.clear();
 	state.clear();
 	hasCell.clear();

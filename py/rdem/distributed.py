@@ -102,8 +102,9 @@ def prepare(workers=None, master=(), exchange=True):
 	``workers`` ranks, default: all but the master), put an :yref:`RdemBondKeeper` first in the engines and record the
 	bonds across the cuts (mpy's split erases them; it puts them back), insert an :yref:`RdemGhostExchange` after the
 	:yref:`RdemCellStrainUpdater` (with ``exchange=False`` one that does not exchange, which is wrong at the boundary:
-	for tests), a collider if there is none (mpy's parallel collision detection needs an :yref:`InsertionSortCollider`,
-	sweep distance 5 % of the smallest block); then :func:`check`. :yref:`RdemTimeStepper` takes one step for all ranks
+	for tests), a collider if there is none (mpy's parallel collision detection needs an :yref:`InsertionSortCollider`),
+	with a sweep distance (``verletDist``) of 5 % of the smallest block if it has none (mpy's ghosts are the blocks whose
+	bounding boxes overlap a subdomain's: without a sweep, blocks face to face across the cut only touch); then :func:`check`. :yref:`RdemTimeStepper` takes one step for all ranks
 	itself (the minimum of their limits). Returns the blocks per worker."""
 	from yade import mpy
 	if mpy.comm is None:
@@ -124,10 +125,15 @@ def prepare(workers=None, master=(), exchange=True):
 		if at is not None:
 			from yade.wrapper import RdemGhostExchange
 			eng.insert(at, RdemGhostExchange(exchange=bool(exchange), label='rdemGhosts'))
-	if not any(isinstance(e, InsertionSortCollider) for e in eng):
-		size = min(min(b.shape.extents) for b in O.bodies if b is not None and isinstance(b.shape, RdemBlock))
+	size = min(min(b.shape.extents) for b in O.bodies if b is not None and isinstance(b.shape, RdemBlock))  # smallest half-extent
+	collider = next((e for e in eng if isinstance(e, InsertionSortCollider)), None)
+	if collider is None:
 		at = next(k for k, e in enumerate(eng) if isinstance(e, InteractionLoop))
 		eng.insert(at, InsertionSortCollider([Bo1_Box_Aabb()], verletDist=0.1 * size, label='rdemCollider'))
+	elif not collider.verletDist > 0:
+		# mpy finds a subdomain's ghosts by the overlap of bounding boxes: without a sweep, the boxes of blocks face to face
+		# only touch, and some bonded neighbours across the cut would not become ghosts (their bonds then missing)
+		collider.verletDist = 0.1 * size
 	O.engines = eng
 	if not hasattr(mpy, 'collider'):
 		mpy.collider = _SceneCollider()
