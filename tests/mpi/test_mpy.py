@@ -45,7 +45,8 @@ def run(out, poisson, mpi, exchange=True, scene='cube', steps=STEPS, every=0, ra
 	r = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True, timeout=900)  # a rank that fails leaves the others waiting
 	if r.returncode != 0 or not os.path.exists(out):
 		raise AssertionError('%s failed (%d):\n%s' % (' '.join(cmd), r.returncode, r.stdout[-4000:]))
-	return json.load(open(out))
+	with open(out) as f:
+		return json.load(f)
 
 
 def differences(a, b):
@@ -93,8 +94,9 @@ class Cube(unittest.TestCase):
 
 
 	def test_running_bond_wall_with_cracks(self):
-		# 10 bricks by 10 courses, one block per brick, cut along the wall's length between bricks; the first springs break
-		# between steps 30 and 40 (4 in tension), 8 by step 50, 16 by step 100 (serial, 0.5 m/s)
+		# 10 bricks by 10 courses, one block per brick, cut across the wall's length between bricks (19 bonds across the
+		# cut); the first springs break between steps 30 and 40 (4 in tension), 8 by step 50, 16 by step 100, 24 by step
+		# 110 and no more to step 300 (serial, 0.5 m/s)
 		serial = run(os.path.join(self.tmp, 'wall-serial.json'), 'cells', mpi=False, scene='wall', steps=300, every=10, rate=0.5)
 		mpi = run(os.path.join(self.tmp, 'wall-mpi.json'), 'cells', mpi=True, scene='wall', steps=300, every=10, rate=0.5)
 		self.assertGreater(serial['breaks'][0] + serial['breaks'][1], 0)  # it cracks within the run
