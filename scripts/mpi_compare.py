@@ -34,6 +34,7 @@ parser.add_argument('--contacts', choices=['gate', 'always'], default='gate',
                     help="cube: contact detection by RdemContactGate (collider off until a spring breaks; default) or always (from the first "
                     "step, as mpy does on its workers: its split runs the collider whatever the gate says); the wall: always")
 parser.add_argument('--mpi', action='store_true', help='run on yade.mpy (under mpiexec -n 3 or more)')
+parser.add_argument('--energy', action='store_true', help='track the energies (O.trackEnergy) and record them, summed over ranks under --mpi')
 parser.add_argument('--no-exchange', action='store_true', help='RdemGhostExchange off (wrong at the subdomain boundary: for the test)')
 parser.add_argument('--out', default='output/mpi/result.json', help='result file (default output/mpi/result.json)')
 parser.add_argument('--compare', nargs=2, metavar=('A', 'B'), help='compare two result files (plain python3, no YADE)')
@@ -56,6 +57,11 @@ def compare(a, b):
 	print('compare: %d blocks, largest position difference %.3e m, largest displacement %.3e m, ratio %.3e, %s' %
 	      (len(A['blocks']), dmax, umax, dmax / umax if umax else float('nan'), 'bit for bit identical' if same else 'NOT identical'))
 	print('compare: breaks (tension, shear) %s and %s; history %s and %s' % (A['breaks'], B['breaks'], A.get('history'), B.get('history')))
+	if A.get('energy') and B.get('energy'):
+		ea, eb = A['energy'], B['energy']
+		for k in sorted(set(ea) | set(eb)):
+			a, b = ea.get(k, 0.0), eb.get(k, 0.0)
+			print('compare: energy %s %.17g and %.17g, relative difference %.3e' % (k, a, b, abs(a - b) / max(abs(a), abs(b)) if a or b else 0.0))
 	return same and A['breaks'] == B['breaks']
 
 
@@ -106,6 +112,7 @@ def wall():
 
 
 ids = cube() if args.scene == 'cube' else wall()
+O.trackEnergy = args.energy
 start = {i: O.bodies[i].state.pos for i in ids}
 
 rank = 0
@@ -165,6 +172,9 @@ def bytesPerStep():
 	            bondsRestored=kept)
 
 
+energy = None
+if args.energy:
+	energy = distributed.energies() if args.mpi else dict(O.energy.items())
 if args.mpi:
 	traffic = mpy.comm.gather(bytesPerStep(), root=0)
 	parts = mpy.comm.gather(record([i for i in ids if O.bodies[i] is not None and O.bodies[i].subdomain == rank]), root=0)
@@ -176,7 +186,7 @@ if rank == 0:
 		blocks.update(p)
 	if len(blocks) != len(ids):
 		raise RuntimeError('mpi_compare: %d of %d blocks gathered' % (len(blocks), len(ids)))
-	res = dict(input=vars(args), dt=O.dt, steps=args.steps, ranks=len(parts), blocks=blocks, breaks=finalBreaks, history=history)
+	res = dict(input=vars(args), dt=O.dt, steps=args.steps, ranks=len(parts), blocks=blocks, breaks=finalBreaks, history=history, energy=energy)
 	if args.mpi:
 		res['blocksPerWorker'] = perWorker
 		res['bytesPerStep'] = traffic

@@ -10,6 +10,7 @@
 #include <pkg/rdem/RdemForceAssembler.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
+#include <pkg/rdem/RdemRanks.hpp>
 #include <pkg/rdem/math/BlockCells.hpp>
 #include <pkg/rdem/math/GroupByKey.hpp>
 #include <algorithm>
@@ -229,7 +230,7 @@ void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energ
 			grad += sideSecond[j] ? p.offsetGrad2 : p.offsetGrad1;
 		}
 		stress[size_t(i)] = s * Ke + condensation[size_t(i)].transpose() * grad;
-		if (trackEnergy) {
+		if (trackEnergy && !rdem::isGhost(*scene, *Body::byId(body[size_t(i)], scene))) { // a ghost's cell: its owner's energy
 			e += s * st.strain.dot(Ke) / 2;
 			rel += (scalePrev[size_t(i)] - s) * st.strain.dot(Ke) / 2;
 		}

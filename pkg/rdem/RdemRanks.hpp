@@ -37,6 +37,22 @@ namespace rdem {
 #endif
 	}
 
+	/// Whether body b is not this rank's to integrate: a ghost, or one of mpy's Subdomain bodies.
+	inline bool notOwned(const Scene& scene, const Body& b)
+	{
+#ifdef YADE_MPI
+		return splitSubdomain(scene) && (b.getIsSubdomain() || b.subdomain != scene.subdomain);
+#else
+		(void)scene;
+		(void)b;
+		return false;
+#endif
+	}
+
+	/// The share of an interaction's energies booked on this rank: 1/2 if one of its bodies is a ghost (the interaction is
+	/// computed alike on its other body's rank, which books the other half), else 1. Sums over ranks are then the scene's.
+	inline Real energyShare(const Scene& scene, const Body& b1, const Body& b2) { return isGhost(scene, b1) || isGhost(scene, b2) ? Real(0.5) : Real(1); }
+
 	/// v[0 … n-1] := their minima over all ranks (one MPI_Allreduce; collective: every rank calls it at the same point).
 	inline void minOverRanks(const Scene& scene, Real* v, int n)
 	{

@@ -17,7 +17,7 @@ from yade import O, Body
 from yade.wrapper import RdemBlock, RdemMat, RdemPoissonEngine, RdemCellStrainUpdater, InsertionSortCollider, InteractionLoop, Bo1_Box_Aabb
 from .partition import bisect, counts, refusals
 
-__all__ = ['assign', 'features', 'check', 'prepare', 'breakCounts']
+__all__ = ['assign', 'features', 'check', 'prepare', 'breakCounts', 'energies']
 
 
 def _fixed(b):
@@ -54,7 +54,7 @@ def assign(workers, master=()):
 
 def features():
 	"""What the scene has that matters for a distributed run (the keys of :func:`rdem.partition.refusals`)."""
-	f = dict(others=[], masterMoving=[], hex8=0, cells=0, exchange=False, trackEnergy=bool(O.trackEnergy), breakable=False)
+	f = dict(others=[], masterMoving=[], hex8=0, cells=0, exchange=False, breakable=False)
 	for b in O.bodies:
 		if b is None or getattr(b, 'isSubdomain', False):  # (a YADE without MPI has neither attribute: all on the master)
 			continue
@@ -161,3 +161,17 @@ def breakCounts():
 		tension += sum(1 for x in seg if x == 1)
 		shear += sum(1 for x in seg if x == 2)
 	return mpy.comm.allreduce(tension), mpy.comm.allreduce(shear)
+
+
+def energies():
+	"""O.energy summed over all ranks, as a dict (name: value [J]); collective: call it on every rank. Each rank books its
+	own blocks' kinetic energy and cells and, of an interaction between one of its blocks and a ghost, half (the rank of
+	the ghost books the other half: :yref:`Law2_RdemGeom_RdemPhys_FaceSprings`, :yref:`RdemLeapfrogEnergy`,
+	:yref:`RdemPoissonEngine`'s cells). The sums equal the serial run's up to the order of summation."""
+	from yade import mpy
+	mine = dict(O.energy.items())
+	out = {}
+	for part in mpy.comm.allgather(mine):
+		for k, v in part.items():
+			out[k] = out.get(k, 0.0) + v
+	return out
