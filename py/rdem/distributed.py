@@ -7,7 +7,7 @@ each builds the scene, mpy then replaces the workers' scenes by the master's whe
     from yade import mpy, rdem
     from yade.rdem import distributed, scenes
     test = scenes.CompressionTest(formulation=None)
-    distributed.prepare()              # subdomains by bisection, checks, collider, one time step
+    distributed.prepare()              # subdomains by bisection, bonds across the cuts kept, collider, checks
     mpy.mpirun(1000, withMerge=True)    # the master's O.bodies hold every block afterwards
 
 Needs YADE built with MPI (``tools/setup.sh --mpi``): the plain YADE has no :yref:`Body.subdomain`.
