@@ -9,7 +9,8 @@ with Poisson cells and springs that break on the total stress of their face, com
 
 Needs the plugin built against YADE with MPI (tools/setup.sh --mpi); the serial run uses the same binary without mpy.
 Writes a JSON file: input, steps, O.dt, break counts (tension, shear; with --every N also their history), with --mpi
-the blocks, ghosts and bytes sent per step of each rank (mpy's states and RdemGhostExchange's), and per block
+the blocks, ghosts, bytes sent per step (mpy's states and RdemGhostExchange's) and bonds across the cut put back
+(RdemBondKeeper) of each rank, and per block
 id its position and orientation (exact: float.hex) and its displacement from the start. --compare prints the largest
 position difference of two such files, absolute and over the largest displacement, whether they are identical bit for
 bit and their break counts (exit status 1 unless identical with the same break counts).
@@ -33,6 +34,7 @@ parser.add_argument('--contacts', choices=['gate', 'always'], default='gate',
                     help="cube: contact detection by RdemContactGate (collider off until a spring breaks; default) or always (from the first "
                     "step, as mpy does on its workers: its split runs the collider whatever the gate says); the wall: always")
 parser.add_argument('--mpi', action='store_true', help='run on yade.mpy (under mpiexec -n 3 or more)')
+parser.add_argument('--energy', action='store_true', help='track the energies (O.trackEnergy) and record them, summed over ranks under --mpi')
 parser.add_argument('--no-exchange', action='store_true', help='RdemGhostExchange off (wrong at the subdomain boundary: for the test)')
 parser.add_argument('--out', default='output/mpi/result.json', help='result file (default output/mpi/result.json)')
 parser.add_argument('--compare', nargs=2, metavar=('A', 'B'), help='compare two result files (plain python3, no YADE)')
@@ -55,6 +57,11 @@ def compare(a, b):
 	print('compare: %d blocks, largest position difference %.3e m, largest displacement %.3e m, ratio %.3e, %s' %
 	      (len(A['blocks']), dmax, umax, dmax / umax if umax else float('nan'), 'bit for bit identical' if same else 'NOT identical'))
 	print('compare: breaks (tension, shear) %s and %s; history %s and %s' % (A['breaks'], B['breaks'], A.get('history'), B.get('history')))
+	if A.get('energy') and B.get('energy'):
+		ea, eb = A['energy'], B['energy']
+		for k in sorted(set(ea) | set(eb)):
+			a, b = ea.get(k, 0.0), eb.get(k, 0.0)
+			print('compare: energy %s %.17g and %.17g, relative difference %.3e' % (k, a, b, abs(a - b) / max(abs(a), abs(b)) if a or b else 0.0))
 	return same and A['breaks'] == B['breaks']
 
 
@@ -80,7 +87,7 @@ def wall():
 	"""A running-bond wall, 10 bricks by 10 courses, one wythe, one block per brick (the bed joints' bonds have centroid
 	offsets, which RdemGhostExchange's second message is for), its bottom course fixed and its top course moving down at
 	``rate``; consistent formulation, cells, springs breaking on the total stress of their face, contacts detected from
-	the first step; a fixed step, half the stepper's estimate at set-up (the same on every rank, which all build the
+	the first step, with a collider sweep of 5 % of the smallest brick dimension; a fixed step, half the stepper's estimate at set-up (the same on every rank, which all build the
 	whole scene)."""
 	from yade.wrapper import RdemMat, RdemJoint
 	from yade.rdem import masonry
@@ -97,11 +104,15 @@ def wall():
 		O.bodies[i].state.vel = Vector3(0, 0, -args.rate)
 	build.poissonEngine().elements = 'cells'
 	build.poissonEngine().build(w.ids)
+	# the collider's sweep that rdem.distributed.prepare gives a collider without one (mpy finds ghosts by overlapping
+	# boxes), here in both runs: after the first breaks the serial run itself depends on it (doc/mpi.md)
+	build.collider().verletDist = 0.1 * min(min(O.bodies[i].shape.extents) for i in w.ids)
 	O.dt = 0.5 * build.timeStepper().estimate()
 	return w.ids
 
 
 ids = cube() if args.scene == 'cube' else wall()
+O.trackEnergy = args.energy
 start = {i: O.bodies[i].state.pos for i in ids}
 
 rank = 0
@@ -147,17 +158,23 @@ def record(ids):
 
 
 def bytesPerStep():
-	"""This rank's bytes sent per step to the other workers: mpy's states (13 reals per boundary block and neighbour)
-	and RdemGhostExchange's last step (both its messages)."""
+	"""This rank's blocks and ghosts, bytes sent per step to the other workers: mpy's states (13 reals per boundary block
+	and neighbour) and RdemGhostExchange's last step (both its messages), and the bonds across the cut RdemBondKeeper put
+	back after mpy's split."""
 	sd = O.subD
 	states = 0
 	if rank > 0:
 		states = sum(13 * 8 * len(sd.intersections[k]) for k in sd.intersections[rank] if k not in (0, rank))
 	ghost = next((e.bytesSent for e in O.engines if type(e).__name__ == 'RdemGhostExchange'), 0)
+	kept = next((e.restored for e in O.engines if type(e).__name__ == 'RdemBondKeeper'), 0)
 	return dict(rank=rank, ownBlocks=sum(1 for b in O.bodies if b is not None and not b.isSubdomain and b.subdomain == rank),
-	            ghosts=sum(1 for b in O.bodies if b is not None and not b.isSubdomain and b.subdomain != rank), mpyStates=states, ghostExchange=ghost)
+	            ghosts=sum(1 for b in O.bodies if b is not None and not b.isSubdomain and b.subdomain != rank), mpyStates=states, ghostExchange=ghost,
+	            bondsRestored=kept)
 
 
+energy = None
+if args.energy:
+	energy = distributed.energies() if args.mpi else dict(O.energy.items())
 if args.mpi:
 	traffic = mpy.comm.gather(bytesPerStep(), root=0)
 	parts = mpy.comm.gather(record([i for i in ids if O.bodies[i] is not None and O.bodies[i].subdomain == rank]), root=0)
@@ -169,7 +186,7 @@ if rank == 0:
 		blocks.update(p)
 	if len(blocks) != len(ids):
 		raise RuntimeError('mpi_compare: %d of %d blocks gathered' % (len(blocks), len(ids)))
-	res = dict(input=vars(args), dt=O.dt, steps=args.steps, ranks=len(parts), blocks=blocks, breaks=finalBreaks, history=history)
+	res = dict(input=vars(args), dt=O.dt, steps=args.steps, ranks=len(parts), blocks=blocks, breaks=finalBreaks, history=history, energy=energy)
 	if args.mpi:
 		res['blocksPerWorker'] = perWorker
 		res['bytesPerStep'] = traffic

@@ -9,6 +9,7 @@
 #include <pkg/rdem/InteractionOrder.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
+#include <pkg/rdem/RdemRanks.hpp>
 #include <pkg/rdem/RdemState.hpp>
 #include <pkg/rdem/math/BlockCells.hpp>
 #include <pkg/rdem/math/ContactBound.hpp>
@@ -39,6 +40,14 @@ namespace {
 	struct Breaks {
 		int tension = 0, shear = 0;
 	};
+
+	/// e with its energies times share (rdem::energyShare: 1/2 for an interaction with a ghost of YADE's MPI).
+	Energies shareOf(Energies e, Real share)
+	{
+		for (Real* x : { &e.elastic, &e.dashpot, &e.friction, &e.bondBreak, &e.fractureTension, &e.fractureShear, &e.crushing })
+			*x *= share;
+		return e;
+	}
 
 	/// Force on body 2 and its moment about x₂, summed over the points of an interaction [N, N·m].
 	struct ForceOnBody2 {
@@ -552,7 +561,7 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		return false;
 	}
 	applyForces(*I, p, on2.f, on2.t, pair.x2 - pair.x1);
-	if (pair.trackEnergy) bookEnergies(e);
+	if (pair.trackEnergy) bookEnergies(shareOf(e, rdem::energyShare(*scene, *Body::byId(I->getId1(), scene), *Body::byId(I->getId2(), scene))));
 	return true;
 }
 

@@ -4,11 +4,13 @@
 *  This program is free software; it is licensed under the terms of the  *
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
+#include <lib/pyutil/gil.hpp>
 #include <pkg/rdem/OpenMPLoops.hpp>
 #include <pkg/rdem/RdemCellNetwork.hpp>
 #include <pkg/rdem/RdemForceAssembler.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
+#include <pkg/rdem/RdemRanks.hpp>
 #include <pkg/rdem/math/BlockCells.hpp>
 #include <pkg/rdem/math/GroupByKey.hpp>
 #include <algorithm>
@@ -17,6 +19,25 @@
 namespace yade {
 
 long RdemCellNetwork::generation = 0;
+
+namespace {
+	void releaseBonds(vector<shared_ptr<Interaction>>& intr, vector<shared_ptr<IPhys>>& phys)
+	{
+		// The bonds of erased bodies (O.bodies.erase, or yade.mpy's erasure of other subdomains' bodies) live on here until
+		// this rebuild, in the simulation's thread. What they hold may come from Python (an RdemJoint made in a script, held
+		// through boost.python's deleter), and releasing that needs the GIL, which this thread does not hold.
+		const bool last = std::any_of(intr.begin(), intr.end(), [](const shared_ptr<Interaction>& I) { return I.use_count() == 1; })
+		        || std::any_of(phys.begin(), phys.end(), [](const shared_ptr<IPhys>& P) { return P.use_count() == 1; });
+		if (last) {
+			gilLock lock;
+			intr.clear();
+			phys.clear();
+		} else {
+			intr.clear();
+			phys.clear();
+		}
+	}
+}
 
 bool RdemCellNetwork::refresh(Scene* scene)
 {
@@ -30,9 +51,8 @@ bool RdemCellNetwork::refresh(Scene* scene)
 
 void RdemCellNetwork::rebuild(Scene* scene)
 {
+	releaseBonds(intr, phys);
 	bond.clear();
-	intr.clear();
-	phys.clear();
 	body.clear();
 	state.clear();
 	hasCell.clear();
@@ -210,7 +230,7 @@ void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energ
 			grad += sideSecond[j] ? p.offsetGrad2 : p.offsetGrad1;
 		}
 		stress[size_t(i)] = s * Ke + condensation[size_t(i)].transpose() * grad;
-		if (trackEnergy) {
+		if (trackEnergy && !rdem::isGhost(*scene, *Body::byId(body[size_t(i)], scene))) { // a ghost's cell: its owner's energy
 			e += s * st.strain.dot(Ke) / 2;
 			rel += (scalePrev[size_t(i)] - s) * st.strain.dot(Ke) / 2;
 		}

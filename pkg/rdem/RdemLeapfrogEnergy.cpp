@@ -7,6 +7,7 @@
 #include <core/Scene.hpp>
 #include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/RdemLeapfrogEnergy.hpp>
+#include <pkg/rdem/RdemRanks.hpp>
 #include <pkg/rdem/math/LeapfrogEnergy.hpp>
 #include <algorithm>
 #include <stdexcept>
@@ -53,7 +54,8 @@ void RdemLeapfrogEnergy::action()
 	velAfter.resize(nBodies, Vector3r::Zero());
 	angVelAfter.resize(nBodies, Vector3r::Zero());
 	for (const auto& b : *scene->bodies) {
-		if (!b || b->isClumpMember() || (newton.mask > 0 && !b->maskCompatible(newton.mask))) continue; // as the integrator
+		if (!b || b->isClumpMember() || (newton.mask > 0 && !b->maskCompatible(newton.mask)) || rdem::notOwned(*scene, *b))
+			continue; // as the integrator
 		const State& s  = *b->state;
 		const size_t id = size_t(b->getId());
 		Vector3r     v0 = paired ? velAfter[id] : s.vel, w0 = paired ? angVelAfter[id] : s.angVel;

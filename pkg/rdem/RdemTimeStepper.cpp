@@ -15,6 +15,7 @@
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemMat.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
+#include <pkg/rdem/RdemRanks.hpp>
 #include <pkg/rdem/RdemTimeStepper.hpp>
 #include <pkg/rdem/math/ContactBound.hpp>
 #include <pkg/rdem/math/Elasticity.hpp>
@@ -80,7 +81,7 @@ namespace {
 	{
 		const ContactSetup setup = contactSetup(sc);
 		for (const auto& b : *sc->bodies) {
-			if (!b || b->state->blockedDOFs == State::DOF_ALL || bonded[size_t(b->id)]) continue;
+			if (!b || b->state->blockedDOFs == State::DOF_ALL || bonded[size_t(b->id)] || rdem::isGhost(*sc, *b)) continue;
 			const auto* shape = dynamic_cast<RdemBlock*>(b->shape.get());
 			const auto* mat   = dynamic_cast<RdemMat*>(b->material.get());
 			if (!shape || !mat) continue;
@@ -98,6 +99,8 @@ Real RdemTimeStepper::gershgorin(Scene* sc)
 	for (RdemStiffnessSource* source : RdemSharedState::of(sc, shared).stiffnessSources)
 		source->addOmega2Bound(sc, omega2); // the law's springs, the Poisson engine's elements and cells
 	if (contactBound) addContactBound(omega2, bondedBodies(sc), sc);
+	for (const auto& b : *sc->bodies)
+		if (b && rdem::isGhost(*sc, *b)) omega2[size_t(b->id)] = 0; // moved by its owner (see assemble)
 	const Real w2 = *std::max_element(omega2.begin(), omega2.end());
 	return w2 > 0 ? 2 / math::sqrt(w2) : std::numeric_limits<Real>::infinity();
 }
@@ -135,9 +138,12 @@ void RdemTimeStepper::assemble(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::B
 	const ContactSetup setup = contactBound ? contactSetup(sc) : ContactSetup();
 	for (const auto& b : *sc->bodies) {
 		if (!b) continue;
-		const State& s       = *b->state;
-		scale[size_t(b->id)] = rdem::bodyScale<Real>(s.mass, s.inertia, s.ori.toRotationMatrix(), unsigned(s.blockedDOFs));
-		if (contactBound && s.blockedDOFs != State::DOF_ALL && !bonded[size_t(b->id)]) addContactsToCome(K, *b, setup);
+		// On a rank of a distributed run (yade.mpy), a ghost's motion is its owner's: its DOFs are fixed here, so that
+		// the estimate is that of the rank's own blocks, with all their springs (rdem::isGhost, computeTimeStep).
+		const State&   s       = *b->state;
+		const unsigned blocked = rdem::isGhost(*sc, *b) ? unsigned(State::DOF_ALL) : unsigned(s.blockedDOFs);
+		scale[size_t(b->id)]   = rdem::bodyScale<Real>(s.mass, s.inertia, s.ori.toRotationMatrix(), blocked);
+		if (contactBound && blocked != State::DOF_ALL && !bonded[size_t(b->id)]) addContactsToCome(K, *b, setup);
 	}
 }
 
@@ -204,7 +210,7 @@ bool RdemTimeStepper::contactsPossible(Scene* sc)
 	}
 	if (!contactBound) return false;
 	for (const auto& b : *sc->bodies)
-		if (b && b->state->blockedDOFs != State::DOF_ALL && !bonded[size_t(b->id)]) return true;
+		if (b && b->state->blockedDOFs != State::DOF_ALL && !bonded[size_t(b->id)] && !rdem::isGhost(*sc, *b)) return true;
 	return false;
 }
 
@@ -258,24 +264,25 @@ bool RdemTimeStepper::isActivated()
 {
 	if (timeStepUpdateInterval < 1) throw std::invalid_argument("RdemTimeStepper.timeStepUpdateInterval = 0: must be an integer >= 1 [steps]");
 	// also at once when a spring breaks: its contact dashpot acts from the next step, and may need a shorter step now
-	return scene->iter % timeStepUpdateInterval == 0 || !(scene->dt > 0 && math::isfinite(scene->dt)) || (!active && scene->dt != checkedDt)
+	const bool due = scene->iter % timeStepUpdateInterval == 0 || !(scene->dt > 0 && math::isfinite(scene->dt)) || (!active && scene->dt != checkedDt)
 	        || brokenSprings(scene) != brokenAtEstimate;
+	return rdem::anyOverRanks(*scene, due); // distributed: all ranks together (computeTimeStep reduces over them)
 }
 
-void RdemTimeStepper::checkFixedDt(Scene* sc)
+void RdemTimeStepper::checkFixedDt(Scene* sc, Real criticalDtAll, Real springCriticalDtAll)
 {
 	const bool firstSeen = sc->dt != checkedDt;
 	checkedDt            = sc->dt;
-	if (!(sc->dt > criticalDt)) return;
+	if (!(sc->dt > criticalDtAll)) return;
 	// above the springs' limit the run blows up; between it and the lower limit with the contact dashpots it may, but the
 	// dashpots' compression-only clamp and caps (Law2…::dashpotCap) often hold it: a warning
-	const bool         springs = sc->dt > springCriticalDt;
+	const bool         springs = sc->dt > springCriticalDtAll;
 	std::ostringstream msg;
-	msg << "O.dt = " << sc->dt << " s exceeds the critical time step " << (springs ? springCriticalDt : criticalDt) << " s ("
+	msg << "O.dt = " << sc->dt << " s exceeds the critical time step " << (springs ? springCriticalDtAll : criticalDtAll) << " s ("
 	    << (springs ? "2/omega_max of the springs" : "with the contact dashpots") << ", " << method
 	    << " estimate of RdemTimeStepper) of this block assembly: the explicit integration is unstable ";
 	if (springs && firstSeen && method == "lanczos" && refuseUnstableDt) {
-		msg << "and would blow up. Set O.dt <= " << springCriticalDt
+		msg << "and would blow up. Set O.dt <= " << springCriticalDtAll
 		    << " s, or O.dt = -1 to let RdemTimeStepper choose (RdemTimeStepper.refuseUnstableDt = False to run anyway).";
 		throw std::invalid_argument(msg.str());
 	}
@@ -299,16 +306,23 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 		reused        = 0;
 	}
 	brokenAtEstimate = brokenSprings(sc);
-	if (!math::isfinite(criticalDt)) { // nothing elastic yet: nothing to check a fixed O.dt against
+	const Real inf   = std::numeric_limits<Real>::infinity();
+	const bool step  = active && math::isfinite(criticalDt); // this rank sets a step (not computed for a fixed O.dt)
+	if (step) contactDt = method == "lanczos" && contactLimit && contactsPossible(sc) ? rdem::criticallyDampedStep(springCriticalDt) : inf;
+	/* One step for all ranks of a distributed run (yade.mpy): each rank's limits are those of its own blocks (their ghosts'
+	   DOFs fixed, assemble), and the scene's are their minima (rdem::minOverRanks: an MPI_Allreduce, which every rank
+	   reaches, as isActivated is the same on all). A rank's mass-normalised stiffness is then a principal submatrix of the
+	   whole scene's, so by Cauchy's interlacing these minima are not below the whole scene's limits; they are above them
+	   only by a mode that spans two subdomains. With one rank they are this scene's limits. */
+	Real all[3] = { criticalDt, springCriticalDt, step ? contactDt : inf };
+	rdem::minOverRanks(*sc, all, 3);
+	if (!math::isfinite(all[0])) { // nothing elastic yet: nothing to check a fixed O.dt against
 		checkedDt = sc->dt;
 		return;
 	}
-	if (active) {
-		contactDt = method == "lanczos" && contactLimit && contactsPossible(sc) ? rdem::criticallyDampedStep(springCriticalDt)
-		                                                                        : std::numeric_limits<Real>::infinity();
-		sc->dt    = safety * math::min(criticalDt, contactDt);
-	} else
-		checkFixedDt(sc);
+	if (active) sc->dt = safety * math::min(all[0], all[2]);
+	else
+		checkFixedDt(sc, all[0], all[1]);
 }
 
 } // namespace yade

@@ -42,7 +42,9 @@ YADE's :yref:`PWaveTimeStep<yade.utils.PWaveTimeStep>` ignores boxes and :yref:`
 
 *Gershgorin* (``method='gershgorin'``, the fallback, 2.2–2.7 times below the limit): for every free block $b$, $\omega_b^2=\sum_i 2\left(k_{t,i}/m_b + k_{r,i}/I_{min,b}\right)+P_b/m_b$, summed over the springs $i$ of its segments and contact samples, $k_{t}=\max(\bar{k}_n,\bar{k}_s)A$, $k_{r}=A(\bar{k}_n|\mathbf{r}\times\mathbf{n}|^2+\bar{k}_s(|\mathbf{r}|^2+(\mathbf{r}\cdot\mathbf{n})^2))$ with $\mathbf{r}$ the arm from the centroid, and $P_b$ the Poisson row-sum bound of :yref:`RdemPoissonEngine`; $\omega_{max}\le\max_b\omega_b$. It leaves the dashpots out: at 0.37–0.44 of the undamped limit it is already about where critical dashpots put the limit (0.41 of it), and the law's caps keep the dashpots of small blocks below critical.
 
-When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the user), a fixed ``O.dt`` above the Lanczos estimate of the springs' limit $2/\omega_{max}$ is refused when it is first seen (at the first step, or when it was changed): the step stops before the integrator moves anything and ``O.run`` raises ``RuntimeError`` with a message naming ``O.dt`` and the limit, unless ``refuseUnstableDt`` is false; if the limit falls below it later (contacts), if only the dashpots' limit is exceeded (their compression-only clamp and caps often keep such a run bounded, as the paper's 2 µs after cracking), or with the Gershgorin method, it warns once (and sets ``warned``). ``O.dt`` zero or not finite stops the run the same way.)""",
+When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the user), a fixed ``O.dt`` above the Lanczos estimate of the springs' limit $2/\omega_{max}$ is refused when it is first seen (at the first step, or when it was changed): the step stops before the integrator moves anything and ``O.run`` raises ``RuntimeError`` with a message naming ``O.dt`` and the limit, unless ``refuseUnstableDt`` is false; if the limit falls below it later (contacts), if only the dashpots' limit is exceeded (their compression-only clamp and caps often keep such a run bounded, as the paper's 2 µs after cracking), or with the Gershgorin method, it warns once (and sets ``warned``). ``O.dt`` zero or not finite stops the run the same way.
+
+On a distributed run (:ref:`mpy`, YADE built with ``ENABLE_MPI``) each rank estimates the limits of its own blocks, with its ghosts' DOFs fixed (their owners move them), and all ranks take the minimum over ranks (one ``MPI_Allreduce`` of three reals at each update, and of one integer at every step, so that all ranks update together): one ``O.dt`` for all, and a fixed ``O.dt`` is checked against that minimum. A rank's mass-normalised stiffness is then a principal submatrix of the whole scene's, so the minimum is not below the whole scene's limit (Cauchy's interlacing), and above it only by a mode that spans two subdomains; ``criticalDt``, ``springCriticalDt`` and ``contactDt`` are the rank's own.)""",
 		((Real,safety,0.8,Attr::triggerPostLoad,"Fraction of the critical step used for ``O.dt``."))
 		((string,method,"lanczos",Attr::triggerPostLoad,"How $\\omega_{max}$ is found: ``'lanczos'`` (default: tight, see above) or ``'gershgorin'`` (a bound 2.2–2.7 times too high, one pass over the springs)."))
 		((Real,lanczosTolerance,1e-3,Attr::triggerPostLoad,"Lanczos iterations stop when the residual of the largest Ritz value is below this fraction of it, in (0, 0.1]."))
@@ -76,7 +78,8 @@ When not :yref:`active<TimeStepper::active>` (a positive ``O.dt`` was set by the
 private:
 	Real gershgorin(Scene* scene);
 	Real lanczos(Scene* scene);
-	void checkFixedDt(Scene* scene);
+	/// Refuse or warn about a fixed O.dt above the scene's limits (over all ranks of a distributed run) [s].
+	void checkFixedDt(Scene* scene, Real criticalDtAll, Real springCriticalDtAll);
 	/// The step for which the dashpots are capped as the law caps them (Law2…::dashpotCap): O.dt when the estimate
 	/// is made, 0 (no cap) if O.dt is not yet set [s]. A step chosen larger than it lowers the caps, so the estimate holds.
 	Real capDt = 0;

@@ -7,18 +7,17 @@ each builds the scene, mpy then replaces the workers' scenes by the master's whe
     from yade import mpy, rdem
     from yade.rdem import distributed, scenes
     test = scenes.CompressionTest(formulation=None)
-    distributed.prepare()              # subdomains by bisection, checks, collider, one time step
+    distributed.prepare()              # subdomains by bisection, bonds across the cuts kept, collider, checks
     mpy.mpirun(1000, withMerge=True)    # the master's O.bodies hold every block afterwards
 
 Needs YADE built with MPI (``tools/setup.sh --mpi``): the plain YADE has no :yref:`Body.subdomain`.
 """
 import math
 from yade import O, Body
-from yade.wrapper import RdemBlock, RdemMat, RdemPoissonEngine, RdemCellStrainUpdater, RdemTimeStepper, InsertionSortCollider, \
-    InteractionLoop, Bo1_Box_Aabb, PyRunner
+from yade.wrapper import RdemBlock, RdemMat, RdemPoissonEngine, RdemCellStrainUpdater, InsertionSortCollider, InteractionLoop, Bo1_Box_Aabb
 from .partition import bisect, counts, refusals
 
-__all__ = ['assign', 'features', 'check', 'prepare', 'minTimeStep', 'breakCounts']
+__all__ = ['assign', 'features', 'check', 'prepare', 'breakCounts', 'energies']
 
 
 def _fixed(b):
@@ -55,7 +54,7 @@ def assign(workers, master=()):
 
 def features():
 	"""What the scene has that matters for a distributed run (the keys of :func:`rdem.partition.refusals`)."""
-	f = dict(others=[], masterMoving=[], hex8=0, cells=0, exchange=False, trackEnergy=bool(O.trackEnergy), breakable=False)
+	f = dict(others=[], masterMoving=[], hex8=0, cells=0, exchange=False, breakable=False)
 	for b in O.bodies:
 		if b is None or getattr(b, 'isSubdomain', False):  # (a YADE without MPI has neither attribute: all on the master)
 			continue
@@ -80,12 +79,6 @@ def check():
 		raise RuntimeError('rdem.distributed: this scene cannot run on yade.mpy yet:\n  - ' + '\n  - '.join(r))
 
 
-def minTimeStep():
-	"""O.dt := its minimum over all ranks (a PyRunner after the time stepper calls it: one step for all ranks)."""
-	from yade import mpy
-	O.dt = mpy.comm.allreduce(O.dt, op=mpy.MPI.MIN)
-
-
 class _SceneCollider:
 	"""The scene's InsertionSortCollider, looked up at each use: mpy's parallelCollide uses a global ``collider`` (the
 	engine labelled so in YADE's examples); the plugin's is labelled ``rdemCollider``, and the workers' engines are
@@ -106,11 +99,13 @@ class _SceneCollider:
 
 def prepare(workers=None, master=(), exchange=True):
 	"""Make the current scene ready for :func:`yade.mpy.mpirun` on every rank: assign the blocks (:func:`assign`, to
-	``workers`` ranks, default: all but the master), insert an :yref:`RdemGhostExchange` after the
+	``workers`` ranks, default: all but the master), put an :yref:`RdemBondKeeper` first in the engines and record the
+	bonds across the cuts (mpy's split erases them; it puts them back), insert an :yref:`RdemGhostExchange` after the
 	:yref:`RdemCellStrainUpdater` (with ``exchange=False`` one that does not exchange, which is wrong at the boundary:
-	for tests), a collider if there is none (mpy's parallel collision detection needs an :yref:`InsertionSortCollider`,
-	sweep distance 5 % of the smallest block), and, if :yref:`RdemTimeStepper` sets the step, a PyRunner after it that
-	takes the minimum over ranks; then :func:`check`. Returns the blocks per worker."""
+	for tests), a collider if there is none (mpy's parallel collision detection needs an :yref:`InsertionSortCollider`),
+	with a sweep distance (``verletDist``) of 5 % of the smallest block if it has none (mpy's ghosts are the blocks whose
+	bounding boxes overlap a subdomain's: without a sweep, blocks face to face across the cut only touch); then :func:`check`. :yref:`RdemTimeStepper` takes one step for all ranks
+	itself (the minimum of their limits). Returns the blocks per worker."""
 	from yade import mpy
 	if mpy.comm is None:
 		mpy.configure()
@@ -119,20 +114,26 @@ def prepare(workers=None, master=(), exchange=True):
 	if workers < 1:
 		raise ValueError('workers = %r: mpy needs at least one worker besides the master (mpiexec -n 2 or more)' % (workers, ))
 	perWorker = assign(workers, master)
-	eng = list(O.engines)
+	from yade.wrapper import RdemBondKeeper
+	eng = [e for e in O.engines if not isinstance(e, RdemBondKeeper)]
+	keeper = RdemBondKeeper(label='rdemBondKeeper')
+	keeper.keep()
+	eng.insert(0, keeper)
 	names = [type(e).__name__ for e in eng]
 	if 'RdemGhostExchange' not in names:
 		at = next((k + 1 for k, e in enumerate(eng) if isinstance(e, RdemCellStrainUpdater)), None)
 		if at is not None:
 			from yade.wrapper import RdemGhostExchange
 			eng.insert(at, RdemGhostExchange(exchange=bool(exchange), label='rdemGhosts'))
-	if not any(isinstance(e, InsertionSortCollider) for e in eng):
-		size = min(min(b.shape.extents) for b in O.bodies if b is not None and isinstance(b.shape, RdemBlock))
+	size = min(min(b.shape.extents) for b in O.bodies if b is not None and isinstance(b.shape, RdemBlock))  # smallest half-extent
+	collider = next((e for e in eng if isinstance(e, InsertionSortCollider)), None)
+	if collider is None:
 		at = next(k for k, e in enumerate(eng) if isinstance(e, InteractionLoop))
 		eng.insert(at, InsertionSortCollider([Bo1_Box_Aabb()], verletDist=0.1 * size, label='rdemCollider'))
-	stepper = next((k for k, e in enumerate(eng) if isinstance(e, RdemTimeStepper) and e.active), None)
-	if stepper is not None:
-		eng.insert(stepper + 1, PyRunner(iterPeriod=1, initRun=True, command='from yade.rdem import distributed; distributed.minTimeStep()', label='rdemMinDt'))
+	elif not collider.verletDist > 0:
+		# mpy finds a subdomain's ghosts by the overlap of bounding boxes: without a sweep, the boxes of blocks face to face
+		# only touch, and some bonded neighbours across the cut would not become ghosts (their bonds then missing)
+		collider.verletDist = 0.1 * size
 	O.engines = eng
 	if not hasattr(mpy, 'collider'):
 		mpy.collider = _SceneCollider()
@@ -160,3 +161,17 @@ def breakCounts():
 		tension += sum(1 for x in seg if x == 1)
 		shear += sum(1 for x in seg if x == 2)
 	return mpy.comm.allreduce(tension), mpy.comm.allreduce(shear)
+
+
+def energies():
+	"""O.energy summed over all ranks, as a dict (name: value [J]); collective: call it on every rank. Each rank books its
+	own blocks' kinetic energy and cells and, of an interaction between one of its blocks and a ghost, half (the rank of
+	the ghost books the other half: :yref:`Law2_RdemGeom_RdemPhys_FaceSprings`, :yref:`RdemLeapfrogEnergy`,
+	:yref:`RdemPoissonEngine`'s cells). The sums equal the serial run's up to the order of summation."""
+	from yade import mpy
+	mine = dict(O.energy.items())
+	out = {}
+	for part in mpy.comm.allgather(mine):
+		for k, v in part.items():
+			out[k] = out.get(k, 0.0) + v
+	return out

@@ -98,8 +98,7 @@ def refusals(f):
 
 	``f`` is a dict of what the scene has (read by :func:`rdem.distributed.features`): ``others`` (ids of bodies that are
 	not blocks), ``masterMoving`` (ids on the master that are not fixed), ``hex8`` (the paper's hexahedra),
-	``cells`` (blocks with a Poisson cell), ``exchange`` (an :yref:`RdemGhostExchange` in the engines), ``trackEnergy`` (O.trackEnergy), ``breakable`` (springs that can
-	break). Missing keys count as absent."""
+	``cells`` (blocks with a Poisson cell), ``exchange`` (an :yref:`RdemGhostExchange` in the engines), ``breakable`` (springs that can break). Missing keys count as absent."""
 	out = []
 	if f.get('others'):
 		out.append('bodies that are not RdemBlock (ids %s...): only blocks are assigned to subdomains and exchanged' % (sorted(f['others'])[:5], ))
@@ -114,6 +113,4 @@ def refusals(f):
 		           'bonds between two ghosts are reset by YADE\'s InteractionLoop on the ranks that hold them as ghosts, which would '
 		           'release the element there at the first step; element scales are not exchanged yet (use cells: '
 		           'RdemPoissonEngine.elements = \'cells\' with the consistent formulation)' % f['hex8'])
-	if f.get('trackEnergy'):
-		out.append('O.trackEnergy: the energies of blocks on a boundary are counted on two ranks and not reduced over ranks yet')
 	return out

@@ -32,11 +32,11 @@ def skipReason():
 	return None
 
 
-def run(out, poisson, mpi, exchange=True, scene='cube', steps=STEPS, every=0, rate=0.05):
+def run(out, poisson, mpi, exchange=True, scene='cube', steps=STEPS, every=0, rate=0.05, energy=False):
 	env = dict(os.environ, OMP_NUM_THREADS='1')
 	# contact detection from the first step in both runs: mpy runs its collider at the split (doc/mpi.md)
 	cmd = [LAUNCHER, '-n', '-x', SCRIPT, '--scene', scene, '--poisson', poisson, '--steps', str(steps), '--every', str(every), '--rate', str(rate), '--contacts', 'always',
-	       '--out', out]
+	       '--out', out] + (['--energy'] if energy else [])
 	if mpi:
 		cmd = [MPIEXEC, '--allow-run-as-root', '--oversubscribe', '-n', '3'] + cmd + ['--mpi']
 		env = {k: v for k, v in env.items() if not k.startswith(('OMPI_', 'PMIX_'))}  # a fresh MPI job, not ctest's
@@ -45,7 +45,8 @@ def run(out, poisson, mpi, exchange=True, scene='cube', steps=STEPS, every=0, ra
 	r = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True, timeout=900)  # a rank that fails leaves the others waiting
 	if r.returncode != 0 or not os.path.exists(out):
 		raise AssertionError('%s failed (%d):\n%s' % (' '.join(cmd), r.returncode, r.stdout[-4000:]))
-	return json.load(open(out))
+	with open(out) as f:
+		return json.load(f)
 
 
 def differences(a, b):
@@ -69,20 +70,29 @@ class Cube(unittest.TestCase):
 	def tearDownClass(cls):
 		shutil.rmtree(cls.tmp, ignore_errors=True)
 
-	def compare(self, poisson):
-		serial = run(os.path.join(self.tmp, poisson + '-serial.json'), poisson, mpi=False)
-		mpi = run(os.path.join(self.tmp, poisson + '-mpi.json'), poisson, mpi=True)
+	def compare(self, poisson, energy=False):
+		serial = run(os.path.join(self.tmp, poisson + '-serial.json'), poisson, mpi=False, energy=energy)
+		mpi = run(os.path.join(self.tmp, poisson + '-mpi.json'), poisson, mpi=True, energy=energy)
 		self.assertEqual(mpi['ranks'], 3)
 		self.assertEqual(sorted(mpi['blocksPerWorker']), [600, 600])  # 12 layers of 100 blocks, cut in the middle
+		# the 100 bonds across the cut, erased by mpy's split, are back on both workers (RdemBondKeeper)
+		self.assertEqual([t['bondsRestored'] for t in mpi['bytesPerStep'] if t['rank'] > 0], [100, 100])
 		self.assertEqual(set(serial['blocks']), set(mpi['blocks']))
 		self.assertEqual(differences(serial, mpi), (0, 0.0))
+		if energy:
+			# rdem.distributed.energies: each rank's share summed over ranks; the same terms as the serial run's, summed in
+			# another order: equal to rounding (measured: within 4e-15 relative after 100 steps)
+			self.assertEqual(set(mpi['energy']), set(serial['energy']))
+			scale = max(abs(v) for v in serial['energy'].values())
+			for name, value in serial['energy'].items():
+				self.assertAlmostEqual(mpi['energy'][name], value, delta=1e-12 * scale, msg=name)
 		return serial
 
 	def test_springs_bit_for_bit(self):
 		self.compare('off')
 
 	def test_cells_bit_for_bit_and_not_without_exchange(self):
-		serial = self.compare('cells')
+		serial = self.compare('cells', energy=True)
 		off = run(os.path.join(self.tmp, 'cells-noexchange.json'), 'cells', mpi=True, exchange=False)
 		n, dmax = differences(serial, off)
 		# the boundary layers' Poisson forces are wrong from the first step: at least both layers next to the cut differ
@@ -91,8 +101,9 @@ class Cube(unittest.TestCase):
 
 
 	def test_running_bond_wall_with_cracks(self):
-		# 10 bricks by 10 courses, one block per brick, cut along the wall's length between bricks; the first springs break
-		# between steps 30 and 40 (4 in tension), 8 by step 50, 16 by step 100 (serial, 0.5 m/s)
+		# 10 bricks by 10 courses, one block per brick, cut across the wall's length between bricks (19 bonds across the
+		# cut); the first springs break between steps 30 and 40 (4 in tension), 8 by step 50, 16 by step 100, 24 by step
+		# 110 and no more to step 300 (serial, 0.5 m/s)
 		serial = run(os.path.join(self.tmp, 'wall-serial.json'), 'cells', mpi=False, scene='wall', steps=300, every=10, rate=0.5)
 		mpi = run(os.path.join(self.tmp, 'wall-mpi.json'), 'cells', mpi=True, scene='wall', steps=300, every=10, rate=0.5)
 		self.assertGreater(serial['breaks'][0] + serial['breaks'][1], 0)  # it cracks within the run

@@ -1,5 +1,6 @@
-"""rdem.distributed's reading of a scene (features) and the refusals it leads to, on real scenes of the plugin, in any
-YADE (without MPI every body counts as on the master). The runs on mpy are tests/mpi/test_mpy.py."""
+"""rdem.distributed's reading of a scene (features) and the refusals it leads to, and RdemBondKeeper's record of the bonds
+across a cut, on real scenes of the plugin, in any YADE (without MPI every body counts as on the master, and the keeper
+refuses). The runs on mpy are tests/mpi/test_mpy.py."""
 import unittest
 import harness
 from yade import O
@@ -36,6 +37,20 @@ class Features(unittest.TestCase):
 		# every block is on the master in a YADE without MPI (or before assign): moving ones are refused there
 		self.assertEqual(len(f['masterMoving']), 96)
 		self.assertEqual(len(partition.refusals(f)), 1)
+
+	def test_bond_keeper_records_the_bonds_across_the_cut(self):
+		from yade import Body
+		from yade.wrapper import RdemBondKeeper
+		t = cube(None)
+		keeper = RdemBondKeeper()
+		if not hasattr(Body(), 'subdomain'):  # a YADE without MPI has no subdomains: keep() says so
+			with self.assertRaisesRegex(RuntimeError, 'built without MPI'):
+				keeper.keep()
+			return
+		distributed.assign(2)
+		# the 4 x 4 x 6 grid (cube and platens) cut between its 3rd and 4th layers: 16 bonds across the cut
+		self.assertEqual(keeper.keep(), 16)
+		self.assertEqual(len(t.ids), 96)
 
 
 if __name__ == '__main__':
