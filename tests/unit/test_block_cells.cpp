@@ -203,8 +203,9 @@ TEST(BlockCells, SliverAlongAnAxisIsNotPartOfTheCell)
 	// cell is the slab's plane-stress cell, exact for any uniform in-plane strain.
 	const Scalar hx = 0.2825, hy = 0.28945, hz = 0.075, sliver = 0.005 * 0.005;
 	auto         in = block(hx, hy, hz);
-	const Scalar hb = 0.03; // the brick's half height
-	in.bonds.push_back(Bond { 2, -1, sliver, hz / (hz + hb), hz + hb }); // share: the slab's side of the opening (one material)
+	// the brick's half height; share: the slab's side of the opening (one material)
+	const Scalar hb = 0.03;
+	in.bonds.push_back(Bond { 2, -1, sliver, hz / (hz + hb), hz + hb });
 	for (int s : { -1, 1 }) {
 		in.bonds.push_back(Bond { 0, s, 4 * hy * hz, 0.5, 2 * hx });
 		in.bonds.push_back(Bond { 1, s, 4 * hx * hz, 0.5, 2 * hy });
