@@ -185,9 +185,9 @@ void RdemCellNetwork::updateStrains(Scene* scene, long brokenSprings, int thread
 		Real       scale = st.cellScale;
 		for (size_t j = first[size_t(i)]; j < first[size_t(i) + 1]; ++j) {
 			const Bond& b = bond[sideBond[j]];
-			if (sideSecond[j]) eps[b.ax2] += b.c2 * opening[sideBond[j]];
-			else
-				eps[b.ax1] += b.c1 * opening[sideBond[j]];
+			const Real  c = sideSecond[j] ? b.c2 : b.c1;
+			if (c == 0) continue; // a sliver on a condensed axis (rdem::cellMinBondedFraction): not part of this cell
+			eps[sideSecond[j] ? b.ax2 : b.ax1] += c * opening[sideBond[j]];
 			scale = math::min(scale, intact[sideBond[j]]);
 		}
 		st.strain     = condensation[size_t(i)] * eps;

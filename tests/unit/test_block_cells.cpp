@@ -193,6 +193,53 @@ TEST(BlockCells, PlatenIsAHalfCell)
 	EXPECT_NEAR((cellStrainOfUniform(in, c, eps) - eps).norm(), 0.0, 1e-18);
 }
 
+TEST(BlockCells, SliverAlongAnAxisIsNotPartOfTheCell)
+{
+	// A roof slab piece over a room (0.565 × 0.579 × 0.15 m, the big house of scripts/building.py): bonded to slab pieces
+	// on its four sides, and on its -z face only at a 5 × 5 mm corner where a wall's top brick reaches into the joint.
+	// Extrapolated from that sliver, its free ±z faces would weight the sliver's spring by
+	// w_n - 1 = ℓ_z A_free/(|s| A_bonded) = 0.075·(2·0.327 - 2.5e-5)/(0.1·2.5e-5) ≈ 2·10⁴. Below a quarter of a face the
+	// axis is condensed instead (σ_zz = 0, plane stress): the sliver is a plain spring (coef 0, no extra weight) and the
+	// cell is the slab's plane-stress cell, exact for any uniform in-plane strain.
+	const Scalar hx = 0.2825, hy = 0.28945, hz = 0.075, sliver = 0.005 * 0.005;
+	auto         in = block(hx, hy, hz);
+	// the brick's half height; share: the slab's side of the opening (one material)
+	const Scalar hb = 0.03;
+	in.bonds.push_back(Bond { 2, -1, sliver, hz / (hz + hb), hz + hb });
+	for (int s : { -1, 1 }) {
+		in.bonds.push_back(Bond { 0, s, 4 * hy * hz, 0.5, 2 * hx });
+		in.bonds.push_back(Bond { 1, s, 4 * hx * hz, 0.5, 2 * hy });
+	}
+	const auto c = rdem::blockCell(in);
+	EXPECT_EQ(c.axes[2], rdem::CellAxis::Condensed);
+	EXPECT_EQ(c.coef[0], 0.0);
+	EXPECT_EQ(c.extraWeight[0], 0.0);
+	Mat3       C;
+	const Mat3 D = c.volume * rdem::cellElasticity<Scalar>(E, nu, { rdem::CellAxis::Resolved, rdem::CellAxis::Resolved, rdem::CellAxis::Condensed }, C);
+	EXPECT_NEAR((c.stiffness - D).norm(), 0.0, 1e-15 * D.norm());
+	// a uniform in-plane strain: the cell measures it exactly (each bond opens by ε_axis |s|), and the condensation gives
+	// the plane-stress ε_zz = -λ/M (ε_xx + ε_yy)
+	const Vec3 eps(2e-5, -1e-5, 0);
+	Vec3       expected = eps;
+	expected[2]         = -lambda() / M() * (eps[0] + eps[1]);
+	EXPECT_NEAR((cellStrainOfUniform(in, c, eps) - expected).norm(), 0.0, 1e-18);
+	// the same piece on a quarter of its bottom face (the least overlap of a bond pattern): resolved, and the weight its
+	// free faces give the bond is the bound of cellMinBondedFraction, w_n - 1 = ℓ_z (2 - ¼)/(¼ |s|) = 7 ℓ_z/|s|
+	in.bonds[0].area = rdem::cellMinBondedFraction * 4 * hx * hy;
+	const auto q     = rdem::blockCell(in);
+	EXPECT_EQ(q.axes[2], rdem::CellAxis::Resolved);
+	EXPECT_NEAR(q.extraWeight[0], 7 * hz / (hz + hb), 1e-14);
+	const Vec3 eps3(2e-5, -1e-5, 3e-5);
+	EXPECT_NEAR((cellStrainOfUniform(in, q, eps3) - eps3).norm(), 0.0, 1e-18);
+	// a block held by a sliver only has no cell, and its bond keeps the plain spring's weight (lateral 1, no extra)
+	auto only = block(hx, hy, hz);
+	only.bonds.push_back(Bond { 2, -1, sliver, hz / (hz + hb), hz + hb });
+	const auto n = rdem::blockCell(only);
+	EXPECT_EQ(n.volume, 0.0);
+	EXPECT_EQ(n.coef[0], 0.0);
+	EXPECT_EQ(rdem::cellBondWeightNormal<Scalar>(n.lateral[2], 1, n.extraWeight[0], 0), 1.0);
+}
+
 TEST(BlockCells, BlockWithoutBondsHasNoCell)
 {
 	const auto c = rdem::blockCell(block(0.01, 0.01, 0.01));

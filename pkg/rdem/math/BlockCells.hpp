@@ -55,8 +55,19 @@ namespace rdem {
 	enum class CellAxis {
 		Resolved,  ///< bonds along the axis: the strain comes from their openings (free faces extrapolated)
 		Half,      ///< normal translation prescribed and bonds on one side only: the cell stops at the centroid plane
-		Condensed, ///< no bond along the axis: its strain is eliminated with σ = 0 (plane stress through a one-wythe wall)
+		Condensed, ///< no bond along the axis, or bonds over less than cellMinBondedFraction of a face: its strain is
+		           ///< eliminated with σ = 0 (plane stress through a one-wythe wall; a slab piece touching a wall at a corner)
 	};
+
+	/* The least bonded area along an axis, as a fraction of one of the block's faces across it, for the cell to resolve the
+	   axis [-]. The free part of the ±d faces is extrapolated from the bonds' slopes and weighted onto their springs,
+	   w_n - 1 = ℓ_d A_free,d / (|s| A_bonded,d): a bond over a sliver of the face (a 5 × 5 mm corner where a slab piece over a
+	   room overlaps the joint of a wall's top brick) would carry the stiffness of the whole face (w_n ≈ 2·10⁴) and the
+	   cell's strain, and set the time step of the whole assembly. A block held along d over so little of its section
+	   carries the load there locally, not as a uniform strain through its section: σ_dd ≈ 0, as on a free axis, so the
+	   axis is condensed and those bonds are plain springs. A quarter of a face is the least overlap of a bond pattern
+	   (the quarter lap, doc/sphinx/rdemTheory.rst §5.4); with it, w_n - 1 ≤ 7ℓ_d/|s| from each block. */
+	constexpr double cellMinBondedFraction = 0.25;
 
 	/// One bond of a block, as the block's cell sees it.
 	template <class S> struct CellBond {
@@ -82,7 +93,7 @@ namespace rdem {
 		S                       volume = 0;                 ///< V [m³]; 0: no cell (the block has no bond)
 		Mat3                    stiffness = Mat3::Zero();   ///< V (D_cond - M I) on the normal strains [N·m]
 		Mat3                    condensation = Mat3::Zero(); ///< ε_all = condensation · ε (condensed axes from the others)
-		std::array<S, 3>        lateral {};                 ///< per axis d: the cell's extent fraction across d (½ per half axis)
+		std::array<S, 3>        lateral {};                 ///< per axis d: the cell's extent fraction across d (½ per half axis; 1 without a cell)
 		std::vector<S>          coef;                        ///< per bond: ∂ε_axis/∂u_n [1/m]
 		std::vector<S>          extraWeight;                 ///< per bond: this block's addition to the bond's w_n
 	};
@@ -131,29 +142,34 @@ namespace rdem {
 	{
 		Cell<S>            c;
 		std::array<int, 3> sides {}; // bit 1: a bond on the -axis face, bit 2: on the +axis face
-		for (const auto& b : in.bonds)
+		std::array<S, 3>   bonded {};
+		for (const auto& b : in.bonds) {
 			sides[size_t(b.axis)] |= (b.side > 0 ? 2 : 1);
+			bonded[size_t(b.axis)] += b.area;
+		}
 		std::array<S, 3> frac {};
 		for (size_t d = 0; d < 3; ++d) {
-			c.axes[d] = sides[d] == 0 ? CellAxis::Condensed : ((in.prescribed[d] && sides[d] != 3) ? CellAxis::Half : CellAxis::Resolved);
-			frac[d]   = c.axes[d] == CellAxis::Half ? S(0.5) : S(1);
+			const S face = 4 * in.half[long((d + 1) % 3)] * in.half[long((d + 2) % 3)];
+			if (sides[d] == 0 || bonded[d] < S(cellMinBondedFraction) * face) c.axes[d] = CellAxis::Condensed;
+			else
+				c.axes[d] = (in.prescribed[d] && sides[d] != 3) ? CellAxis::Half : CellAxis::Resolved;
+			frac[d] = c.axes[d] == CellAxis::Half ? S(0.5) : S(1);
 		}
 		c.coef.assign(in.bonds.size(), 0);
 		c.extraWeight.assign(in.bonds.size(), 0);
-		if (sides[0] == 0 && sides[1] == 0 && sides[2] == 0) return c;
 		for (size_t d = 0; d < 3; ++d)
 			c.lateral[d] = frac[(d + 1) % 3] * frac[(d + 2) % 3];
+		// no cell (no bond, or slivers only): its bonds are plain springs of weight 1
+		if (c.axes[0] == CellAxis::Condensed && c.axes[1] == CellAxis::Condensed && c.axes[2] == CellAxis::Condensed) return c;
 		c.volume = 8 * in.half.prod() * frac[0] * frac[1] * frac[2];
 		c.stiffness = c.volume * cellElasticity<S>(in.young, in.poisson, c.axes, c.condensation);
-		std::array<S, 3> bonded {};
-		for (const auto& b : in.bonds)
-			bonded[size_t(b.axis)] += b.area;
 		for (size_t q = 0; q < in.bonds.size(); ++q) {
 			const auto&  b    = in.bonds[q];
 			const size_t d    = size_t(b.axis);
 			const S      lat  = c.lateral[d];
 			const S      face = 4 * in.half[long((d + 1) % 3)] * in.half[long((d + 2) % 3)];
-			S            coef = b.area * b.share;
+			if (c.axes[d] == CellAxis::Condensed) continue; // a sliver: a plain spring, no part of the cell's strain
+			S coef = b.area * b.share;
 			if (c.axes[d] == CellAxis::Resolved) {
 				const S free = face * 2 > bonded[d] ? face * 2 - bonded[d] : S(0); // of both ±d faces [m²]
 				coef += in.half[long(d)] * free * b.area / (bonded[d] * b.distance);
