@@ -1,0 +1,292 @@
+# -*- coding: utf-8 -*-
+"""Cost of a step of one running-bond wall serially and on YADE's MPI (yade.mpy) with 1 and 2 workers: µs per
+block-step (median and range of several rounds), bytes sent per worker and step (mpy's states and RdemGhostExchange's),
+ghosts per worker and memory per rank; with --big, the same for one large wall (default 10^5 blocks) on three processes.
+
+    /usr/bin/python3 scripts/mpi_scaling.py --blocks 4000 --rounds 5 --doc doc/scaling-mpi.md
+    /usr/bin/python3 scripts/mpi_scaling.py --big 1e5 --big-steps 20 --doc doc/scaling-mpi.md
+
+The driver runs under plain python3 and starts the runs itself: serially `build-mpi/bin/yade -n -x scripts/mpi_scaling.py
+--child ...` (the same binary as the MPI runs, without mpy) and `mpiexec --allow-run-as-root --oversubscribe -n 2|3
+build-mpi/bin/yade -n -x scripts/mpi_scaling.py --child --mpi ...`, one thread per process (OMP_NUM_THREADS=1). The
+rounds alternate the three configurations, so that the load of the machine falls on all of them alike.
+
+The scene is the bigwall case of scripts/benchmark.py (rdem.masonry.wall, two blocks per brick, courses : bricks per
+course = 5 : 4, 250 × 120 × 55 mm bricks, MI1's materials, Poisson cells, softening, total-stress failure, on a fixed
+base beam under gravity; nothing breaks under its own weight, so the timed window is the intact phase), split by
+rdem.distributed.prepare (coordinate bisection; a wall taller than long is cut between courses). A timed window is a
+loop of O.step() on every rank between two barriers (O.step runs mpy's engines: the states' exchange, the ghost
+exchange, the collision check; O.run would add up to 40 ms of polling per window), after mpy.mpirun(warm-up), which
+splits the scene. Every rank builds the whole scene and mpy then replaces the workers' scenes by the master's (mpy's
+default; not its DISTRIBUTED_INSERT): the peak resident set of a rank holds the whole scene at least once, the
+resident set after the run only what the rank keeps.
+
+Writes OUT/results.json (every round's figures), OUT/scaling-mpi.png and, with --doc, the markdown tables of
+doc/scaling-mpi.md between the markers it finds there (the prose around them is kept).
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..')
+parser = argparse.ArgumentParser(prog='python3 scripts/mpi_scaling.py', description=__doc__.split('\n\n')[0])
+parser.add_argument('--blocks', type=float, default=4000, help='blocks of the timed wall, about (default 4000: a serial step of a few ms)')
+parser.add_argument('--rounds', type=int, default=5, help='rounds of each configuration (default 5)')
+parser.add_argument('--steps', type=int, default=200, help='timed steps per round (default 200)')
+parser.add_argument('--windows', type=int, default=5, help='timed windows per round (default 5; a round gives the median window)')
+parser.add_argument('--warmup', type=int, default=20, help='steps before timing (default 20; the MPI runs split the scene in them)')
+parser.add_argument('--ranks', type=int, nargs='+', default=[1, 2, 3], help='process counts (1: serial without mpy; default 1 2 3)')
+parser.add_argument('--big', type=float, default=0, help='instead: one wall of about this many blocks (e.g. 1e5) on --big-ranks processes')
+parser.add_argument('--big-steps', type=int, default=20, help='timed steps of the --big wall (default 20)')
+parser.add_argument('--big-ranks', type=int, nargs='+', default=[3], help='process counts of the --big wall (default 3)')
+parser.add_argument('--launcher', default=os.path.join(ROOT, 'build-mpi', 'bin', 'yade'), help='YADE with MPI and the plugin (default build-mpi/bin/yade)')
+parser.add_argument('--out', default=os.path.join(ROOT, 'output', 'mpi-scaling'), help='output directory (default output/mpi-scaling)')
+parser.add_argument('--doc', default='', help='markdown file whose generated tables to rewrite (e.g. doc/scaling-mpi.md)')
+parser.add_argument('--child', action='store_true', help=argparse.SUPPRESS)
+parser.add_argument('--mpi', action='store_true', help=argparse.SUPPRESS)
+parser.add_argument('--result', default='', help=argparse.SUPPRESS)
+args = parser.parse_args(sys.argv[1:])
+
+
+def rssMB():
+	"""(peak, current) resident set of this process [MB], from /proc/self/status (VmHWM, VmRSS)."""
+	out = {}
+	with open('/proc/self/status') as f:
+		for line in f:
+			k, _, v = line.partition(':')
+			if k in ('VmHWM', 'VmRSS'):
+				out[k] = int(v.split()[0]) / 1024.0
+	return out['VmHWM'], out['VmRSS']
+
+
+# --------------------------------------------------------------------------------------------------- one run (in YADE)
+def buildWall(blocks):
+	"""The bigwall case of scripts/benchmark.py (runBigWall), same materials and engines; returns the block ids."""
+	from yade import O, rdem
+	from yade.wrapper import RdemMat, RdemJoint
+	bricks = blocks / 2
+	perCourse = max(2, int(round(math.sqrt(bricks * 4 / 5))))
+	courses = max(2, int(round(bricks / perCourse)))
+	brick = O.materials.append(
+	        RdemMat(young=2.991e9, poisson=0.25, density=1800, tensileStrength=1.2818e6, cohesion=1.7945e6, frictionAngle=math.atan(0.81), fractureEnergy=80,
+	                shearFractureEnergy=800, compressiveStrength=19.72e6, compressiveFractureEnergy=5000))
+	joint = RdemJoint(young=2.991e9, poisson=0.25, tensileStrength=0.15e6, cohesion=0.21e6, frictionAngle=math.atan(0.81), fractureEnergy=18,
+	                  shearFractureEnergy=125, compressiveStrength=7.92e6, compressiveFractureEnergy=5000)
+	O.engines = rdem.engines(segmentsPerEdge=2, contactSamples=2, formulation='consistent', failureStress='total', softening=True, gravity=(0, 0, -9.81),
+	                         damping=0.2, verletDist=0.003)
+	w = rdem.masonry.wall(perCourse * 0.26 - 0.01, courses * 0.065 - 0.01, 0.12, blocksPerBrick=(2, 1, 1), baseBeam=0.1, brickMaterial=brick, jointMaterial=joint)
+	rdem.poissonEngine().elements = 'cells'
+	rdem.poissonEngine().build(w.ids)
+	for i in w.beams['base']:
+		O.bodies[i].state.blockedDOFs = 'xyzXYZ'
+	O.dt = -1
+	return dict(perCourse=perCourse, courses=courses, base=list(w.beams['base']))
+
+
+def child():
+	from yade import O
+	t0 = time.time()
+	layout = buildWall(args.blocks)
+	nBlocks = len(O.bodies)
+	base = layout.pop('base')
+	layout['baseBlocks'] = len(base)
+	setup = time.time() - t0
+	rank, comm = 0, None
+	if args.mpi:
+		from yade import mpy
+		from yade.rdem import distributed
+		mpy.VERBOSE_OUTPUT = False
+		distributed.prepare(master=base)  # the fixed base beam on the master: a beam as long as the wall would make its
+		# worker's subdomain box span the whole wall, and every block of the other worker its ghost
+		rank, comm = mpy.rank, mpy.comm
+		t1 = time.time()
+		mpy.mpirun(args.warmup)  # splits the scene, then steps
+		split = time.time() - t1
+	else:
+		O.run(args.warmup, True)
+		split = 0.0
+	n = max(1, args.steps // args.windows)
+	walls = []
+	for w in range(args.windows):
+		if comm is not None:
+			comm.barrier()
+		t = time.perf_counter()
+		for i in range(n):
+			O.step()
+		if comm is not None:
+			comm.barrier()
+		walls.append(time.perf_counter() - t)
+	peak, current = rssMB()
+	mine = dict(rank=rank, peakMB=peak, rssMB=current)
+	if args.mpi:
+		sd = O.subD
+		own = sum(1 for b in O.bodies if b is not None and not b.isSubdomain and b.subdomain == rank)
+		ghosts = sum(1 for b in O.bodies if b is not None and not b.isSubdomain and b.subdomain != rank)
+		states = 0
+		if rank > 0:  # 13 reals (position, velocity, angular velocity, orientation) per boundary body and neighbouring worker
+			states = sum(13 * 8 * len(sd.intersections[k]) for k in sd.intersections[rank] if k not in (0, rank))
+		ghostBytes = next((e.bytesSent for e in O.engines if type(e).__name__ == 'RdemGhostExchange'), 0)
+		mine.update(ownBlocks=own, ghosts=ghosts, mpyStateBytes=states, ghostExchangeBytes=ghostBytes,
+		            interactions=sum(1 for I in O.interactions if I.isReal))
+		from yade.rdem import distributed
+		breaks = list(distributed.breakCounts())
+		ranks = comm.gather(mine, root=0)
+	else:
+		from yade import rdem
+		breaks = list(rdem.breakCounts())
+		ranks = [mine]
+	if rank == 0:
+		walls.sort()
+		res = dict(blocks=nBlocks, layout=layout, processes=len(ranks), steps=n, windows=args.windows, warmup=args.warmup, dt=O.dt, setupSeconds=setup,
+		           splitSeconds=split, windowSeconds=walls, usPerBlockStep=walls[len(walls) // 2] / n / nBlocks * 1e6,
+		           usPerBlockStepFastest=walls[0] / n / nBlocks * 1e6, breaks=breaks, ranks=ranks)
+		with open(args.result, 'w') as f:
+			json.dump(res, f, indent=1)
+		print('mpi_scaling: %d processes, %d blocks, %.3f µs per block-step (median of %d windows of %d steps)' % (len(ranks), nBlocks, res['usPerBlockStep'], len(walls), n))
+
+
+# ------------------------------------------------------------------------------------------------- driver (python3)
+def launch(processes, blocks, steps, windows, warmup, tag):
+	os.makedirs(args.out, exist_ok=True)
+	result = os.path.join(args.out, 'run-%s-%d.json' % (tag, processes))
+	if os.path.exists(result):
+		os.remove(result)
+	cmd = [args.launcher, '-n', '-x', os.path.abspath(__file__), '--child', '--blocks', str(blocks), '--steps', str(steps), '--windows', str(windows), '--warmup',
+	       str(warmup), '--result', result]
+	env = dict(os.environ, OMP_NUM_THREADS='1')
+	if processes > 1:
+		cmd = ['mpiexec', '--allow-run-as-root', '--oversubscribe', '-n', str(processes)] + cmd + ['--mpi']
+		env = {k: v for k, v in env.items() if not k.startswith(('OMPI_', 'PMIX_'))}
+	t = time.time()
+	r = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+	if r.returncode != 0 or not os.path.exists(result):
+		raise SystemExit('mpi_scaling: %s failed (%d):\n%s' % (' '.join(cmd), r.returncode, r.stdout[-4000:]))
+	with open(result) as f:
+		res = json.load(f)
+	res['command'] = ' '.join(cmd)
+	res['seconds'] = time.time() - t
+	return res
+
+
+def median(xs):
+	s = sorted(xs)
+	m = len(s) // 2
+	return s[m] if len(s) % 2 else 0.5 * (s[m - 1] + s[m])
+
+
+def label(p):
+	return 'serial (no mpy)' if p == 1 else 'mpy, %d worker%s' % (p - 1, '' if p == 2 else 's')
+
+
+def summarize(runs):
+	"""Per process count: median and range over rounds, and the per-rank figures of the first round."""
+	out = []
+	for p in sorted({r['processes'] for r in runs}):
+		rs = [r for r in runs if r['processes'] == p]
+		us = [r['usPerBlockStep'] for r in rs]
+		out.append(dict(processes=p, label=label(p), rounds=len(rs), blocks=rs[0]['blocks'], usMedian=median(us), usMin=min(us), usMax=max(us), dt=rs[0]['dt'],
+		                ranks=rs[0]['ranks'], peakMB=[median([r['ranks'][k]['peakMB'] for r in rs]) for k in range(p)],
+		                rssMB=[median([r['ranks'][k]['rssMB'] for r in rs]) for k in range(p)], setupSeconds=median([r['setupSeconds'] for r in rs]),
+		                splitSeconds=median([r['splitSeconds'] for r in rs]), breaks=rs[-1]['breaks']))
+	return out
+
+
+def tables(summary):
+	serial = next((s for s in summary if s['processes'] == 1), None)
+	lines = ['| run | processes | blocks | µs per block-step, median (range) of %d rounds | speed-up (medians) | ms per step |' % summary[0]['rounds'],
+	         '|---|---|---|---|---|---|']
+	for s in summary:
+		sp = '%.2f×' % (serial['usMedian'] / s['usMedian']) if serial else '–'
+		lines.append('| %s | %d | %d | %.3f (%.3f – %.3f) | %s | %.2f |' % (s['label'], s['processes'], s['blocks'], s['usMedian'], s['usMin'], s['usMax'], sp,
+		                                                                    s['usMedian'] * s['blocks'] * 1e-3))
+	lines += ['', '| run | rank | own blocks | ghosts | mpy states [bytes/step] | RdemGhostExchange [bytes/step] | peak RSS [MB] | RSS after the run [MB] |',
+	          '|---|---|---|---|---|---|---|---|']
+	for s in summary:
+		for k, r in enumerate(s['ranks']):
+			lines.append('| %s | %d | %s | %s | %s | %s | %.0f | %.0f |' % (s['label'], r['rank'], r.get('ownBlocks', s['blocks']), r.get('ghosts', 0),
+			                                                                r.get('mpyStateBytes', 0), r.get('ghostExchangeBytes', 0), s['peakMB'][k], s['rssMB'][k]))
+	return '\n'.join(lines)
+
+
+def plot(summary, path):
+	import matplotlib
+	matplotlib.use('Agg')
+	import matplotlib.pyplot as plt
+	fig, ax = plt.subplots(figsize=(6, 4))
+	x = [s['processes'] for s in summary]
+	y = [s['usMedian'] for s in summary]
+	err = [[s['usMedian'] - s['usMin'] for s in summary], [s['usMax'] - s['usMedian'] for s in summary]]
+	ax.errorbar(x, y, yerr=err, fmt='o-', capsize=4)
+	ax.set_xticks(x)
+	ax.set_xticklabels([s['label'] for s in summary])
+	ax.set_ylabel('µs per block-step (median, range of rounds)')
+	ax.set_title('%d-block running-bond wall, 2-core machine, 1 thread per process' % summary[0]['blocks'], fontsize=9)
+	ax.set_ylim(bottom=0)
+	fig.tight_layout()
+	fig.savefig(path, dpi=120)
+
+
+def writeDoc(path, marker, text):
+	"""Replace the text between <!-- marker --> and <!-- /marker --> in path (append both if absent)."""
+	begin, end = '<!-- %s -->' % marker, '<!-- /%s -->' % marker
+	doc = open(path).read() if os.path.exists(path) else ''
+	if begin in doc and end in doc:
+		doc = doc[:doc.index(begin) + len(begin)] + '\n' + text + '\n' + doc[doc.index(end):]
+	else:
+		doc += '\n%s\n%s\n%s\n' % (begin, text, end)
+	with open(path, 'w') as f:
+		f.write(doc)
+
+
+def driver():
+	os.makedirs(args.out, exist_ok=True)
+	resultsPath = os.path.join(args.out, 'results.json')
+	results = json.load(open(resultsPath)) if os.path.exists(resultsPath) else {}
+	if args.big:
+		runs = []
+		for p in args.big_ranks:
+			print('mpi_scaling: the %.0f-block wall on %d process(es) ...' % (args.big, p), flush=True)
+			r = launch(p, args.big, args.big_steps, 1, 2, 'big')
+			print('mpi_scaling:   %.3f µs per block-step, peak RSS per rank %s MB (%.0f s)' % (r['usPerBlockStep'], [round(x['peakMB']) for x in r['ranks']], r['seconds']),
+			      flush=True)
+			runs.append(r)
+		results['big'] = dict(input=vars(args), runs=runs)
+		lines = ['| run | blocks | steps timed | µs per block-step | s per step | set-up [s] | split + 2 steps [s] | rank | own blocks | ghosts | peak RSS [MB] | RSS after [MB] |',
+		         '|---|---|---|---|---|---|---|---|---|---|---|---|']
+		for r in runs:
+			for k, x in enumerate(r['ranks']):
+				head = ('%s | %d | %d | %.3f | %.3f | %.1f | %.1f' % (label(r['processes']), r['blocks'], r['steps'], r['usPerBlockStep'], r['usPerBlockStep'] * r['blocks'] * 1e-6,
+				                                                      r['setupSeconds'], r['splitSeconds'])) if k == 0 else ' | | | | | |'
+				lines.append('| %s | %d | %s | %s | %.0f | %.0f |' % (head, x['rank'], x.get('ownBlocks', r['blocks']), x.get('ghosts', 0), x['peakMB'], x['rssMB']))
+		text = '\n'.join(lines)
+		if args.doc:
+			writeDoc(args.doc, 'mpi_scaling big', text)
+	else:
+		runs = []
+		for k in range(args.rounds):
+			for p in args.ranks:
+				r = launch(p, args.blocks, args.steps, args.windows, args.warmup, 'r%d' % k)
+				runs.append(r)
+				print('mpi_scaling: round %d/%d, %s: %.3f µs per block-step (%.0f s)' % (k + 1, args.rounds, label(p), r['usPerBlockStep'], r['seconds']), flush=True)
+		summary = summarize(runs)
+		results['timed'] = dict(input=vars(args), runs=runs, summary=summary)
+		plot(summary, os.path.join(args.out, 'scaling-mpi.png'))
+		if args.doc:
+			plot(summary, os.path.join(os.path.dirname(os.path.abspath(args.doc)), 'figures', 'scaling-mpi.png'))
+		text = tables(summary)
+		if args.doc:
+			writeDoc(args.doc, 'mpi_scaling tables', text)
+	print(text)
+	with open(resultsPath, 'w') as f:
+		json.dump(results, f, indent=1)
+	print('mpi_scaling: written %s' % resultsPath)
+
+
+if args.child:
+	child()
+else:
+	driver()
