@@ -43,6 +43,13 @@ parser.add_argument('--ranks', type=int, nargs='+', default=[1, 2, 3], help='pro
 parser.add_argument('--big', type=float, default=0, help='instead: one wall of about this many blocks (e.g. 1e5) on --big-ranks processes')
 parser.add_argument('--big-steps', type=int, default=20, help='timed steps of the --big wall (default 20)')
 parser.add_argument('--big-ranks', type=int, nargs='+', default=[3], help='process counts of the --big wall (default 3)')
+parser.add_argument('--yield-when-idle', action='store_true',
+                    help="mpiexec --mca mpi_yield_when_idle 1 (a rank waiting in MPI gives its core away instead of polling; Open MPI does so by itself when oversubscribed)")
+parser.add_argument('--profile', action='store_true', help="O.timingEnabled in the timed windows: each rank's time per engine and step (slows the step a little)")
+parser.add_argument('--target', type=float, nargs=2, default=[1e6, 64], metavar=('BLOCKS', 'CORES'), help='projection: blocks and cores (default 1e6 64)')
+parser.add_argument('--latency-us', type=float, default=10.0, help='projection: assumed latency of one MPI message [µs] (default 10: Ethernet class)')
+parser.add_argument('--bandwidth', type=float, default=1.25, help='projection: assumed bandwidth per rank [GB/s] (default 1.25: 10 Gb/s)')
+parser.add_argument('--kb-per-block', type=float, default=7.7, help='projection: memory per block [kB] (default 7.7: doc/performance.md, serial, 10^3-10^5 blocks)')
 parser.add_argument('--launcher', default=os.path.join(ROOT, 'build-mpi', 'bin', 'yade'), help='YADE with MPI and the plugin (default build-mpi/bin/yade)')
 parser.add_argument('--out', default=os.path.join(ROOT, 'output', 'mpi-scaling'), help='output directory (default output/mpi-scaling)')
 parser.add_argument('--doc', default='', help='markdown file whose generated tables to rewrite (e.g. doc/scaling-mpi.md)')
@@ -110,7 +117,12 @@ def child():
 		O.run(args.warmup, True)
 		split = 0.0
 	n = max(1, args.steps // args.windows)
+	if args.profile:
+		O.timingEnabled = True
+		for e in O.engines:
+			e.execTime, e.execCount = 0, 0
 	walls = []
+	cpu0 = time.process_time()
 	for w in range(args.windows):
 		if comm is not None:
 			comm.barrier()
@@ -120,8 +132,11 @@ def child():
 		if comm is not None:
 			comm.barrier()
 		walls.append(time.perf_counter() - t)
+	cpu = (time.process_time() - cpu0) / (n * args.windows)
 	peak, current = rssMB()
-	mine = dict(rank=rank, peakMB=peak, rssMB=current)
+	mine = dict(rank=rank, peakMB=peak, rssMB=current, cpuMsPerStep=cpu * 1e3)
+	if args.profile:  # ms per timed step of each engine (execTime is in ns), and how often it ran
+		mine['engines'] = [[e.label or type(e).__name__, e.execTime * 1e-6 / (n * args.windows), e.execCount] for e in O.engines if e.execCount]
 	if args.mpi:
 		sd = O.subD
 		own = sum(1 for b in O.bodies if b is not None and not b.isSubdomain and b.subdomain == rank)
@@ -155,11 +170,12 @@ def launch(processes, blocks, steps, windows, warmup, tag):
 	result = os.path.join(args.out, 'run-%s-%d.json' % (tag, processes))
 	if os.path.exists(result):
 		os.remove(result)
-	cmd = [args.launcher, '-n', '-x', os.path.abspath(__file__), '--child', '--blocks', str(blocks), '--steps', str(steps), '--windows', str(windows), '--warmup',
+	cmd = [args.launcher, '-n', '-x', os.path.abspath(__file__), '--child'] + (['--profile'] if args.profile else []) + [ '--blocks', str(blocks), '--steps', str(steps), '--windows', str(windows), '--warmup',
 	       str(warmup), '--result', result]
 	env = dict(os.environ, OMP_NUM_THREADS='1')
 	if processes > 1:
-		cmd = ['mpiexec', '--allow-run-as-root', '--oversubscribe', '-n', str(processes)] + cmd + ['--mpi']
+		cmd = ['mpiexec', '--allow-run-as-root', '--oversubscribe'] + (['--mca', 'mpi_yield_when_idle', '1'] if args.yield_when_idle else []) + ['-n', str(processes)
+		                                                                                                                                   ] + cmd + ['--mpi']
 		env = {k: v for k, v in env.items() if not k.startswith(('OMPI_', 'PMIX_'))}
 	t = time.time()
 	r = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
@@ -242,6 +258,48 @@ def writeDoc(path, marker, text):
 		f.write(doc)
 
 
+def projection(timed, big):
+	"""Per-step time and memory of a wall of args.target[0] blocks on args.target[1] cores (one master, the others
+	workers), from the measured figures (see doc/scaling-mpi.md for the model)."""
+	N, cores = args.target
+	P = int(cores) - 1
+	S = {s['processes']: s for s in timed['summary']}
+	c = S[1]['usMedian']  # serial µs per block-step (this machine)
+	overhead = max(0.0, (S[2]['usMedian'] - S[1]['usMedian']) * S[2]['blocks'] * 1e-3) if 2 in S else 0.0  # mpy's fixed cost per step [ms]
+	w = next(r for r in S[3]['ranks'] if r['rank'] == 1) if 3 in S else None
+	perBoundary = (w['mpyStateBytes'] + w['ghostExchangeBytes']) / (w['mpyStateBytes'] / 104.0) if w and w['mpyStateBytes'] else 184.0
+	n = N / P
+	bw, bh = 0.13, 0.065  # a block's pitch in the wall's plane [m] (half a 250 mm brick + joint; a 55 mm course + joint)
+	side = math.sqrt(n * bw * bh)  # a square patch of n blocks
+	boundary = 2 * (side / bh + side / bw)  # one block per course on each vertical cut, one per block on each bed cut
+	neighbours = 8  # 4 sides, 4 corners
+	messages = 3 * neighbours  # mpy's states, RdemGhostExchange's two messages
+	collectives = 2 * math.ceil(math.log2(P + 1))  # mpy's barrier and its collision vote each step, as log2 rounds
+	compute = (n + boundary) * c * 1e-3  # ms: own blocks and the ghosts' duplicated bonds (upper bound: a ghost costs a block)
+	comm = (messages + collectives) * args.latency_us * 1e-3 + boundary * perBoundary / (args.bandwidth * 1e9) * 1e3
+	step = compute + comm + overhead
+	serial = N * c * 1e-3
+	base = S[1]['rssMB'][0] - S[1]['blocks'] * args.kb_per_block / 1024 if 1 in S else 200.0
+	return dict(blocks=N, cores=cores, workers=P, blocksPerWorker=n, boundaryPerWorker=boundary, bytesPerBoundaryBlock=perBoundary,
+	            bytesPerWorkerStep=boundary * perBoundary, usPerBlockStepSerial=c, computeMs=compute, commMs=comm, overheadMs=overhead, stepMs=step, serialStepMs=serial,
+	            speedup=serial / step, efficiency=serial / step / P, baseMB=base, memoryPerWorkerMB=base + (n + boundary) * args.kb_per_block / 1024,
+	            memoryWholeSceneMB=base + N * args.kb_per_block / 1024, latencyUs=args.latency_us, bandwidthGBs=args.bandwidth)
+
+
+def projectionTable(p):
+	rows = [('workers (one more core: the master)', '%d' % p['workers']), ('blocks per worker', '%.0f' % p['blocksPerWorker']),
+	        ('boundary blocks sent per worker and step (surface-to-volume, a square patch of the wall)', '%.0f' % p['boundaryPerWorker']),
+	        ('bytes per boundary block (measured: mpy 104, RdemGhostExchange 80)', '%.0f' % p['bytesPerBoundaryBlock']),
+	        ('bytes sent per worker and step', '%.0f' % p['bytesPerWorkerStep']),
+	        ('compute per step: own blocks + ghosts at the serial %.2f µs per block-step [ms]' % p['usPerBlockStepSerial'], '%.1f' % p['computeMs']),
+	        ('communication per step at %.0f µs per message, %.2f GB/s [ms]' % (p['latencyUs'], p['bandwidthGBs']), '%.2f' % p['commMs']),
+	        ("mpy's fixed cost per step (measured: 1 worker minus serial) [ms]", '%.1f' % p['overheadMs']), ('step [ms]', '%.1f' % p['stepMs']),
+	        ('serial step of the same wall [ms]', '%.0f' % p['serialStepMs']), ('speed-up, parallel efficiency', '%.0f×, %.0f %%' % (p['speedup'], 100 * p['efficiency'])),
+	        ('memory per worker with per-rank insertion [MB]', '%.0f' % p['memoryPerWorkerMB']),
+	        ("memory per rank when every rank holds the whole scene once (mpy's default split) [MB]", '%.0f' % p['memoryWholeSceneMB'])]
+	return '\n'.join(['| %.0e blocks on %d cores | |' % (p['blocks'], p['cores']), '|---|---|'] + ['| %s | %s |' % r for r in rows])
+
+
 def driver():
 	os.makedirs(args.out, exist_ok=True)
 	resultsPath = os.path.join(args.out, 'results.json')
@@ -250,7 +308,7 @@ def driver():
 		runs = []
 		for p in args.big_ranks:
 			print('mpi_scaling: the %.0f-block wall on %d process(es) ...' % (args.big, p), flush=True)
-			r = launch(p, args.big, args.big_steps, 1, 2, 'big')
+			r = launch(p, args.big, args.big_steps, 2, 2, 'big')
 			print('mpi_scaling:   %.3f µs per block-step, peak RSS per rank %s MB (%.0f s)' % (r['usPerBlockStep'], [round(x['peakMB']) for x in r['ranks']], r['seconds']),
 			      flush=True)
 			runs.append(r)
@@ -281,6 +339,12 @@ def driver():
 		if args.doc:
 			writeDoc(args.doc, 'mpi_scaling tables', text)
 	print(text)
+	if 'timed' in results:
+		results['projection'] = projection(results['timed'], results.get('big'))
+		text = projectionTable(results['projection'])
+		print(text)
+		if args.doc:
+			writeDoc(args.doc, 'mpi_scaling projection', text)
 	with open(resultsPath, 'w') as f:
 		json.dump(results, f, indent=1)
 	print('mpi_scaling: written %s' % resultsPath)
