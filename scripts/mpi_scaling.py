@@ -156,9 +156,15 @@ def child():
 		ranks = [mine]
 	if rank == 0:
 		walls.sort()
+		stepper = [next((e for e in r.get('engines', []) if e[0] == 'rdemStepper'), None) for r in ranks]
+		stepper = [e for e in stepper if e]
 		res = dict(blocks=nBlocks, layout=layout, processes=len(ranks), steps=n, windows=args.windows, warmup=args.warmup, dt=O.dt, setupSeconds=setup,
 		           splitSeconds=split, windowSeconds=walls, usPerBlockStep=walls[len(walls) // 2] / n / nBlocks * 1e6,
 		           usPerBlockStepFastest=walls[0] / n / nBlocks * 1e6, breaks=breaks, ranks=ranks)
+		if args.profile:  # RdemTimeStepper's new estimates (Lanczos) in the timed steps: their share, and the step without them
+			res['stepperRuns'] = max([e[2] for e in stepper] + [0])
+			res['stepperMsPerStep'] = max([e[1] for e in stepper] + [0.0])
+			res['usPerBlockStepWithoutStepper'] = res['usPerBlockStep'] - res['stepperMsPerStep'] * 1e3 / nBlocks
 		with open(args.result, 'w') as f:
 			json.dump(res, f, indent=1)
 		print('mpi_scaling: %d processes, %d blocks, %.3f µs per block-step (median of %d windows of %d steps)' % (len(ranks), nBlocks, res['usPerBlockStep'], len(walls), n))
@@ -308,18 +314,20 @@ def driver():
 		runs = []
 		for p in args.big_ranks:
 			print('mpi_scaling: the %.0f-block wall on %d process(es) ...' % (args.big, p), flush=True)
-			r = launch(p, args.big, args.big_steps, 2, 2, 'big')
+			r = launch(p, args.big, args.big_steps, 2, args.warmup, 'big')
 			print('mpi_scaling:   %.3f µs per block-step, peak RSS per rank %s MB (%.0f s)' % (r['usPerBlockStep'], [round(x['peakMB']) for x in r['ranks']], r['seconds']),
 			      flush=True)
 			runs.append(r)
 		results['big'] = dict(input=vars(args), runs=runs)
-		lines = ['| run | blocks | steps timed | µs per block-step | s per step | set-up [s] | split + 2 steps [s] | rank | own blocks | ghosts | peak RSS [MB] | RSS after [MB] |',
-		         '|---|---|---|---|---|---|---|---|---|---|---|---|']
+		lines = ['| run | blocks | steps timed | µs per block-step | of which RdemTimeStepper (its runs) | s per step | set-up [s] | split + warm-up [s] | rank | own blocks | ghosts | '
+		         'CPU ms per step | peak RSS [MB] | RSS after [MB] |', '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
 		for r in runs:
 			for k, x in enumerate(r['ranks']):
-				head = ('%s | %d | %d | %.3f | %.3f | %.1f | %.1f' % (label(r['processes']), r['blocks'], r['steps'], r['usPerBlockStep'], r['usPerBlockStep'] * r['blocks'] * 1e-6,
-				                                                      r['setupSeconds'], r['splitSeconds'])) if k == 0 else ' | | | | | |'
-				lines.append('| %s | %d | %s | %s | %.0f | %.0f |' % (head, x['rank'], x.get('ownBlocks', r['blocks']), x.get('ghosts', 0), x['peakMB'], x['rssMB']))
+				st = '%.3f (%d)' % (r['stepperMsPerStep'] * 1e3 / r['blocks'], r['stepperRuns']) if 'stepperRuns' in r else '–'
+				head = ('%s | %d | %d | %.3f | %s | %.3f | %.1f | %.1f' % (label(r['processes']), r['blocks'], r['steps'] * r['windows'], r['usPerBlockStep'], st,
+				                                                           r['usPerBlockStep'] * r['blocks'] * 1e-6, r['setupSeconds'], r['splitSeconds'])) if k == 0 else ' | | | | | | |'
+				lines.append('| %s | %d | %s | %s | %.0f | %.0f | %.0f |' % (head, x['rank'], x.get('ownBlocks', r['blocks']), x.get('ghosts', 0), x['cpuMsPerStep'], x['peakMB'],
+				                                                              x['rssMB']))
 		text = '\n'.join(lines)
 		if args.doc:
 			writeDoc(args.doc, 'mpi_scaling big', text)
