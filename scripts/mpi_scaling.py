@@ -39,10 +39,12 @@ parser.add_argument('--rounds', type=int, default=5, help='rounds of each config
 parser.add_argument('--steps', type=int, default=200, help='timed steps per round (default 200)')
 parser.add_argument('--windows', type=int, default=5, help='timed windows per round (default 5; a round gives the median window)')
 parser.add_argument('--warmup', type=int, default=20, help='steps before timing (default 20; the MPI runs split the scene in them)')
-parser.add_argument('--ranks', type=int, nargs='+', default=[1, 2, 3], help='process counts (1: serial without mpy; default 1 2 3)')
+parser.add_argument('--ranks', nargs='+', default=['1', '1a', '2', '3'],
+                    help="configurations: process counts, 1 serial without mpy, with RdemContactGate as rdem.engines sets it; 1a serial with contact "
+                    "detection from the first step (the gate open), as mpy's workers run (doc/mpi.md); default 1 1a 2 3")
 parser.add_argument('--big', type=float, default=0, help='instead: one wall of about this many blocks (e.g. 1e5) on --big-ranks processes')
 parser.add_argument('--big-steps', type=int, default=20, help='timed steps of the --big wall (default 20)')
-parser.add_argument('--big-ranks', type=int, nargs='+', default=[3], help='process counts of the --big wall (default 3)')
+parser.add_argument('--big-ranks', nargs='+', default=['3'], help='configurations of the --big wall, as --ranks (default 3)')
 parser.add_argument('--yield-when-idle', action='store_true',
                     help="mpiexec --mca mpi_yield_when_idle 1 (a rank waiting in MPI gives its core away instead of polling; Open MPI does so by itself when oversubscribed)")
 parser.add_argument('--profile', action='store_true', help="O.timingEnabled in the timed windows: each rank's time per engine and step (slows the step a little)")
@@ -55,6 +57,7 @@ parser.add_argument('--out', default=os.path.join(ROOT, 'output', 'mpi-scaling')
 parser.add_argument('--doc', default='', help='markdown file whose generated tables to rewrite (e.g. doc/scaling-mpi.md)')
 parser.add_argument('--child', action='store_true', help=argparse.SUPPRESS)
 parser.add_argument('--mpi', action='store_true', help=argparse.SUPPRESS)
+parser.add_argument('--contacts-always', action='store_true', help=argparse.SUPPRESS)
 parser.add_argument('--result', default='', help=argparse.SUPPRESS)
 args = parser.parse_args(sys.argv[1:])
 
@@ -99,6 +102,9 @@ def child():
 	t0 = time.time()
 	layout = buildWall(args.blocks)
 	nBlocks = len(O.bodies)
+	if args.contacts_always:
+		from yade import rdem
+		rdem.contactGate().open = True
 	base = layout.pop('base')
 	layout['baseBlocks'] = len(base)
 	setup = time.time() - t0
@@ -134,7 +140,8 @@ def child():
 		walls.append(time.perf_counter() - t)
 	cpu = (time.process_time() - cpu0) / (n * args.windows)
 	peak, current = rssMB()
-	mine = dict(rank=rank, peakMB=peak, rssMB=current, cpuMsPerStep=cpu * 1e3)
+	mine = dict(rank=rank, peakMB=peak, rssMB=current, cpuMsPerStep=cpu * 1e3, realInteractions=sum(1 for I in O.interactions if I.isReal),
+	            interactions=len(O.interactions.all()))
 	if args.profile:  # ms per timed step of each engine (execTime is in ns), and how often it ran
 		mine['engines'] = [[e.label or type(e).__name__, e.execTime * 1e-6 / (n * args.windows), e.execCount] for e in O.engines if e.execCount]
 	if args.mpi:
@@ -145,8 +152,7 @@ def child():
 		if rank > 0:  # 13 reals (position, velocity, angular velocity, orientation) per boundary body and neighbouring worker
 			states = sum(13 * 8 * len(sd.intersections[k]) for k in sd.intersections[rank] if k not in (0, rank))
 		ghostBytes = next((e.bytesSent for e in O.engines if type(e).__name__ == 'RdemGhostExchange'), 0)
-		mine.update(ownBlocks=own, ghosts=ghosts, mpyStateBytes=states, ghostExchangeBytes=ghostBytes,
-		            interactions=sum(1 for I in O.interactions if I.isReal))
+		mine.update(ownBlocks=own, ghosts=ghosts, mpyStateBytes=states, ghostExchangeBytes=ghostBytes)
 		from yade.rdem import distributed
 		breaks = list(distributed.breakCounts())
 		ranks = comm.gather(mine, root=0)
@@ -171,13 +177,14 @@ def child():
 
 
 # ------------------------------------------------------------------------------------------------- driver (python3)
-def launch(processes, blocks, steps, windows, warmup, tag):
+def launch(config, blocks, steps, windows, warmup, tag):
+	processes = int(config.rstrip('a'))
 	os.makedirs(args.out, exist_ok=True)
-	result = os.path.join(args.out, 'run-%s-%d.json' % (tag, processes))
+	result = os.path.join(args.out, 'run-%s-%s.json' % (tag, config))
 	if os.path.exists(result):
 		os.remove(result)
 	cmd = [args.launcher, '-n', '-x', os.path.abspath(__file__), '--child'] + (['--profile'] if args.profile else []) + [ '--blocks', str(blocks), '--steps', str(steps), '--windows', str(windows), '--warmup',
-	       str(warmup), '--result', result]
+	       str(warmup), '--result', result] + (['--contacts-always'] if config.endswith('a') else [])
 	env = dict(os.environ, OMP_NUM_THREADS='1')
 	if processes > 1:
 		cmd = ['mpiexec', '--allow-run-as-root', '--oversubscribe'] + (['--mca', 'mpi_yield_when_idle', '1'] if args.yield_when_idle else []) + ['-n', str(processes)
@@ -190,6 +197,7 @@ def launch(processes, blocks, steps, windows, warmup, tag):
 	with open(result) as f:
 		res = json.load(f)
 	res['command'] = ' '.join(cmd)
+	res['config'] = config
 	res['seconds'] = time.time() - t
 	return res
 
@@ -200,17 +208,21 @@ def median(xs):
 	return s[m] if len(s) % 2 else 0.5 * (s[m - 1] + s[m])
 
 
-def label(p):
-	return 'serial (no mpy)' if p == 1 else 'mpy, %d worker%s' % (p - 1, '' if p == 2 else 's')
+def label(config):
+	p = int(config.rstrip('a'))
+	if p == 1:
+		return 'serial, contacts always' if config.endswith('a') else 'serial (contact gate)'
+	return 'mpy, %d worker%s' % (p - 1, '' if p == 2 else 's')
 
 
 def summarize(runs):
 	"""Per process count: median and range over rounds, and the per-rank figures of the first round."""
 	out = []
-	for p in sorted({r['processes'] for r in runs}):
-		rs = [r for r in runs if r['processes'] == p]
+	for cf in args.ranks:
+		rs = [r for r in runs if r['config'] == cf]
+		p = rs[0]['processes']
 		us = [r['usPerBlockStep'] for r in rs]
-		out.append(dict(processes=p, label=label(p), rounds=len(rs), blocks=rs[0]['blocks'], usMedian=median(us), usMin=min(us), usMax=max(us), dt=rs[0]['dt'],
+		out.append(dict(config=cf, processes=p, label=label(cf), rounds=len(rs), blocks=rs[0]['blocks'], usMedian=median(us), usMin=min(us), usMax=max(us), dt=rs[0]['dt'],
 		                ranks=rs[0]['ranks'], peakMB=[median([r['ranks'][k]['peakMB'] for r in rs]) for k in range(p)],
 		                rssMB=[median([r['ranks'][k]['rssMB'] for r in rs]) for k in range(p)], setupSeconds=median([r['setupSeconds'] for r in rs]),
 		                splitSeconds=median([r['splitSeconds'] for r in rs]), breaks=rs[-1]['breaks']))
@@ -218,18 +230,19 @@ def summarize(runs):
 
 
 def tables(summary):
-	serial = next((s for s in summary if s['processes'] == 1), None)
+	serial = next((s for s in summary if s['config'] == '1'), None)
 	lines = ['| run | processes | blocks | µs per block-step, median (range) of %d rounds | speed-up (medians) | ms per step |' % summary[0]['rounds'],
 	         '|---|---|---|---|---|---|']
 	for s in summary:
 		sp = '%.2f×' % (serial['usMedian'] / s['usMedian']) if serial else '–'
 		lines.append('| %s | %d | %d | %.3f (%.3f – %.3f) | %s | %.2f |' % (s['label'], s['processes'], s['blocks'], s['usMedian'], s['usMin'], s['usMax'], sp,
 		                                                                    s['usMedian'] * s['blocks'] * 1e-3))
-	lines += ['', '| run | rank | own blocks | ghosts | mpy states [bytes/step] | RdemGhostExchange [bytes/step] | peak RSS [MB] | RSS after the run [MB] |',
-	          '|---|---|---|---|---|---|---|---|']
+	lines += ['', '| run | rank | own blocks | ghosts | interactions, real / all | mpy states [bytes/step] | RdemGhostExchange [bytes/step] | peak RSS [MB] | RSS after the run [MB] |',
+	          '|---|---|---|---|---|---|---|---|---|']
 	for s in summary:
 		for k, r in enumerate(s['ranks']):
-			lines.append('| %s | %d | %s | %s | %s | %s | %.0f | %.0f |' % (s['label'], r['rank'], r.get('ownBlocks', s['blocks']), r.get('ghosts', 0),
+			lines.append('| %s | %d | %s | %s | %s / %s | %s | %s | %.0f | %.0f |' % (s['label'], r['rank'], r.get('ownBlocks', s['blocks']), r.get('ghosts', 0),
+			                                                                r['realInteractions'], r['interactions'],
 			                                                                r.get('mpyStateBytes', 0), r.get('ghostExchangeBytes', 0), s['peakMB'][k], s['rssMB'][k]))
 	return '\n'.join(lines)
 
@@ -239,7 +252,7 @@ def plot(summary, path):
 	matplotlib.use('Agg')
 	import matplotlib.pyplot as plt
 	fig, ax = plt.subplots(figsize=(6, 4))
-	x = [s['processes'] for s in summary]
+	x = list(range(len(summary)))
 	y = [s['usMedian'] for s in summary]
 	err = [[s['usMedian'] - s['usMin'] for s in summary], [s['usMax'] - s['usMedian'] for s in summary]]
 	ax.errorbar(x, y, yerr=err, fmt='o-', capsize=4)
@@ -269,10 +282,11 @@ def projection(timed, big):
 	workers), from the measured figures (see doc/scaling-mpi.md for the model)."""
 	N, cores = args.target
 	P = int(cores) - 1
-	S = {s['processes']: s for s in timed['summary']}
-	c = S[1]['usMedian']  # serial µs per block-step (this machine)
-	overhead = max(0.0, (S[2]['usMedian'] - S[1]['usMedian']) * S[2]['blocks'] * 1e-3) if 2 in S else 0.0  # mpy's fixed cost per step [ms]
-	w = next(r for r in S[3]['ranks'] if r['rank'] == 1) if 3 in S else None
+	S = {s['config']: s for s in timed['summary']}
+	ref = S['1a'] if '1a' in S else S['1']  # the serial run as mpy's workers run it: contacts detected from the first step
+	c = ref['usMedian']  # serial µs per block-step (this machine)
+	overhead = max(0.0, (S['2']['usMedian'] - ref['usMedian']) * S['2']['blocks'] * 1e-3) if '2' in S else 0.0  # mpy's fixed cost per step [ms]
+	w = next(r for r in S['3']['ranks'] if r['rank'] == 1) if '3' in S else None
 	perBoundary = (w['mpyStateBytes'] + w['ghostExchangeBytes']) / (w['mpyStateBytes'] / 104.0) if w and w['mpyStateBytes'] else 184.0
 	n = N / P
 	bw, bh = 0.13, 0.065  # a block's pitch in the wall's plane [m] (half a 250 mm brick + joint; a 55 mm course + joint)
@@ -285,7 +299,7 @@ def projection(timed, big):
 	comm = (messages + collectives) * args.latency_us * 1e-3 + boundary * perBoundary / (args.bandwidth * 1e9) * 1e3
 	step = compute + comm + overhead
 	serial = N * c * 1e-3
-	base = S[1]['rssMB'][0] - S[1]['blocks'] * args.kb_per_block / 1024 if 1 in S else 200.0
+	base = ref['rssMB'][0] - ref['blocks'] * args.kb_per_block / 1024
 	return dict(blocks=N, cores=cores, workers=P, blocksPerWorker=n, boundaryPerWorker=boundary, bytesPerBoundaryBlock=perBoundary,
 	            bytesPerWorkerStep=boundary * perBoundary, usPerBlockStepSerial=c, computeMs=compute, commMs=comm, overheadMs=overhead, stepMs=step, serialStepMs=serial,
 	            speedup=serial / step, efficiency=serial / step / P, baseMB=base, memoryPerWorkerMB=base + (n + boundary) * args.kb_per_block / 1024,
@@ -324,7 +338,7 @@ def driver():
 		for r in runs:
 			for k, x in enumerate(r['ranks']):
 				st = '%.3f (%d)' % (r['stepperMsPerStep'] * 1e3 / r['blocks'], r['stepperRuns']) if 'stepperRuns' in r else '–'
-				head = ('%s | %d | %d | %.3f | %s | %.3f | %.1f | %.1f' % (label(r['processes']), r['blocks'], r['steps'] * r['windows'], r['usPerBlockStep'], st,
+				head = ('%s | %d | %d | %.3f | %s | %.3f | %.1f | %.1f' % (label(r['config']), r['blocks'], r['steps'] * r['windows'], r['usPerBlockStep'], st,
 				                                                           r['usPerBlockStep'] * r['blocks'] * 1e-6, r['setupSeconds'], r['splitSeconds'])) if k == 0 else ' | | | | | | |'
 				lines.append('| %s | %d | %s | %s | %.0f | %.0f | %.0f |' % (head, x['rank'], x.get('ownBlocks', r['blocks']), x.get('ghosts', 0), x['cpuMsPerStep'], x['peakMB'],
 				                                                              x['rssMB']))
