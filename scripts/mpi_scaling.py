@@ -54,6 +54,7 @@ parser.add_argument('--bandwidth', type=float, default=1.25, help='projection: a
 parser.add_argument('--kb-per-block', type=float, default=7.7, help='projection: memory per block [kB] (default 7.7: doc/performance.md, serial, 10^3-10^5 blocks)')
 parser.add_argument('--launcher', default=os.path.join(ROOT, 'build-mpi', 'bin', 'yade'), help='YADE with MPI and the plugin (default build-mpi/bin/yade)')
 parser.add_argument('--out', default=os.path.join(ROOT, 'output', 'mpi-scaling'), help='output directory (default output/mpi-scaling)')
+parser.add_argument('--tables-only', action='store_true', help="write the tables, figure and projection again from OUT/results.json, without running")
 parser.add_argument('--doc', default='', help='markdown file whose generated tables to rewrite (e.g. doc/scaling-mpi.md)')
 parser.add_argument('--child', action='store_true', help=argparse.SUPPRESS)
 parser.add_argument('--mpi', action='store_true', help=argparse.SUPPRESS)
@@ -224,19 +225,20 @@ def summarize(runs):
 		us = [r['usPerBlockStep'] for r in rs]
 		out.append(dict(config=cf, processes=p, label=label(cf), rounds=len(rs), blocks=rs[0]['blocks'], usMedian=median(us), usMin=min(us), usMax=max(us), dt=rs[0]['dt'],
 		                ranks=rs[0]['ranks'], peakMB=[median([r['ranks'][k]['peakMB'] for r in rs]) for k in range(p)],
-		                rssMB=[median([r['ranks'][k]['rssMB'] for r in rs]) for k in range(p)], setupSeconds=median([r['setupSeconds'] for r in rs]),
+		                rssMB=[median([r['ranks'][k]['rssMB'] for r in rs]) for k in range(p)],
+		                cpuMs=[median([r['ranks'][k]['cpuMsPerStep'] for r in rs]) for k in range(p)], setupSeconds=median([r['setupSeconds'] for r in rs]),
 		                splitSeconds=median([r['splitSeconds'] for r in rs]), breaks=rs[-1]['breaks']))
 	return out
 
 
 def tables(summary):
 	serial = next((s for s in summary if s['config'] == '1'), None)
-	lines = ['| run | processes | blocks | µs per block-step, median (range) of %d rounds | speed-up (medians) | ms per step |' % summary[0]['rounds'],
-	         '|---|---|---|---|---|---|']
+	lines = ['| run | processes | blocks | µs per block-step, median (range) of %d rounds | speed-up (medians) | ms per step | CPU ms per step of the busiest rank |' %
+	         summary[0]['rounds'], '|---|---|---|---|---|---|---|']
 	for s in summary:
 		sp = '%.2f×' % (serial['usMedian'] / s['usMedian']) if serial else '–'
-		lines.append('| %s | %d | %d | %.3f (%.3f – %.3f) | %s | %.2f |' % (s['label'], s['processes'], s['blocks'], s['usMedian'], s['usMin'], s['usMax'], sp,
-		                                                                    s['usMedian'] * s['blocks'] * 1e-3))
+		lines.append('| %s | %d | %d | %.3f (%.3f – %.3f) | %s | %.2f | %.1f |' % (s['label'], s['processes'], s['blocks'], s['usMedian'], s['usMin'], s['usMax'], sp,
+		                                                                           s['usMedian'] * s['blocks'] * 1e-3, max(s['cpuMs'])))
 	lines += ['', '| run | rank | own blocks | ghosts | interactions, real / all | mpy states [bytes/step] | RdemGhostExchange [bytes/step] | peak RSS [MB] | RSS after the run [MB] |',
 	          '|---|---|---|---|---|---|---|---|---|']
 	for s in summary:
@@ -324,7 +326,16 @@ def driver():
 	os.makedirs(args.out, exist_ok=True)
 	resultsPath = os.path.join(args.out, 'results.json')
 	results = json.load(open(resultsPath)) if os.path.exists(resultsPath) else {}
-	if args.big:
+	if args.tables_only:
+		summary = summarize(results['timed']['runs'])
+		results['timed']['summary'] = summary
+		plot(summary, os.path.join(args.out, 'scaling-mpi.png'))
+		if args.doc:
+			plot(summary, os.path.join(os.path.dirname(os.path.abspath(args.doc)), 'figures', 'scaling-mpi.png'))
+		text = tables(summary)
+		if args.doc:
+			writeDoc(args.doc, 'mpi_scaling tables', text)
+	elif args.big:
 		runs = []
 		for p in args.big_ranks:
 			print('mpi_scaling: the %.0f-block wall on %d process(es) ...' % (args.big, p), flush=True)
