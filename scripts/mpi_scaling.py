@@ -54,6 +54,8 @@ parser.add_argument('--bandwidth', type=float, default=1.25, help='projection: a
 parser.add_argument('--kb-per-block', type=float, default=7.7, help='projection: memory per block [kB] (default 7.7: doc/performance.md, serial, 10^3-10^5 blocks)')
 parser.add_argument('--launcher', default=os.path.join(ROOT, 'build-mpi', 'bin', 'yade'), help='YADE with MPI and the plugin (default build-mpi/bin/yade)')
 parser.add_argument('--out', default=os.path.join(ROOT, 'output', 'mpi-scaling'), help='output directory (default output/mpi-scaling)')
+parser.add_argument('--master-builds', action='store_true',
+                    help="only the master builds the scene, the workers receive it from mpy's split (default: every rank builds it, as scripts/mpi_compare.py does)")
 parser.add_argument('--tables-only', action='store_true', help="write the tables, figure and projection again from OUT/results.json, without running")
 parser.add_argument('--doc', default='', help='markdown file whose generated tables to rewrite (e.g. doc/scaling-mpi.md)')
 parser.add_argument('--child', action='store_true', help=argparse.SUPPRESS)
@@ -101,6 +103,15 @@ def buildWall(blocks):
 def child():
 	from yade import O
 	t0 = time.time()
+	if args.mpi and args.master_builds:
+		from yade import mpy
+		mpy.configure()
+		if mpy.rank > 0:  # the scene (blocks, engines, RdemBondKeeper's records) arrives with mpy's split; mpy's parallel
+			# collision detection needs the module's collider, which rdem.distributed.prepare sets on the ranks that call it
+			from yade.rdem import distributed
+			mpy.VERBOSE_OUTPUT = False
+			mpy.collider = distributed._SceneCollider()
+			return worker()
 	layout = buildWall(args.blocks)
 	nBlocks = len(O.bodies)
 	if args.contacts_always:
@@ -108,13 +119,23 @@ def child():
 		rdem.contactGate().open = True
 	base = layout.pop('base')
 	layout['baseBlocks'] = len(base)
-	setup = time.time() - t0
+	return timedRun(nBlocks, layout, base, setup=time.time() - t0)
+
+
+def worker():
+	"""A worker that did not build the scene (--master-builds)."""
+	return timedRun(0, {}, None, setup=0.0)
+
+
+def timedRun(nBlocks, layout, base, setup):
+	from yade import O
 	rank, comm = 0, None
 	if args.mpi:
 		from yade import mpy
 		from yade.rdem import distributed
 		mpy.VERBOSE_OUTPUT = False
-		distributed.prepare(master=base)  # the fixed base beam on the master: a beam as long as the wall would make its
+		if base is not None:
+			distributed.prepare(master=base)  # the fixed base beam on the master: a beam as long as the wall would make its
 		# worker's subdomain box span the whole wall, and every block of the other worker its ghost
 		rank, comm = mpy.rank, mpy.comm
 		t1 = time.time()
@@ -189,7 +210,7 @@ def launch(config, blocks, steps, windows, warmup, tag):
 	env = dict(os.environ, OMP_NUM_THREADS='1')
 	if processes > 1:
 		cmd = ['mpiexec', '--allow-run-as-root', '--oversubscribe'] + (['--mca', 'mpi_yield_when_idle', '1'] if args.yield_when_idle else []) + ['-n', str(processes)
-		                                                                                                                                   ] + cmd + ['--mpi']
+		                                                                                                                                   ] + cmd + ['--mpi'] + (['--master-builds'] if args.master_builds else [])
 		env = {k: v for k, v in env.items() if not k.startswith(('OMPI_', 'PMIX_'))}
 	t = time.time()
 	r = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
@@ -199,6 +220,7 @@ def launch(config, blocks, steps, windows, warmup, tag):
 		res = json.load(f)
 	res['command'] = ' '.join(cmd)
 	res['config'] = config
+	res['masterBuilds'] = bool(args.master_builds and processes > 1)
 	res['seconds'] = time.time() - t
 	return res
 
@@ -344,18 +366,20 @@ def driver():
 	elif args.big:
 		runs = []
 		for p in args.big_ranks:
-			print('mpi_scaling: the %.0f-block wall on %d process(es) ...' % (args.big, p), flush=True)
+			print('mpi_scaling: the %.0f-block wall, %s ...' % (args.big, label(p)), flush=True)
 			r = launch(p, args.big, args.big_steps, 2, args.warmup, 'big')
 			print('mpi_scaling:   %.3f µs per block-step, peak RSS per rank %s MB (%.0f s)' % (r['usPerBlockStep'], [round(x['peakMB']) for x in r['ranks']], r['seconds']),
 			      flush=True)
 			runs.append(r)
+		old = [r for r in results.get('big', {}).get('runs', []) if r.get('masterBuilds', False) != bool(args.master_builds) and r['blocks'] == runs[0]['blocks']]
+		runs = old + runs  # the other way of building the same wall, if measured before
 		results['big'] = dict(input=vars(args), runs=runs)
 		lines = ['| run | blocks | steps timed | µs per block-step | of which RdemTimeStepper (its runs) | s per step | set-up [s] | split + warm-up [s] | rank | own blocks | ghosts | '
 		         'CPU ms per step | peak RSS [MB] | RSS after [MB] |', '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
 		for r in runs:
 			for k, x in enumerate(r['ranks']):
 				st = '%.3f (%d)' % (r['stepperMsPerStep'] * 1e3 / r['blocks'], r['stepperRuns']) if 'stepperRuns' in r else '–'
-				head = ('%s | %d | %d | %.3f | %s | %.3f | %.1f | %.1f' % (label(r['config']), r['blocks'], r['steps'] * r['windows'], r['usPerBlockStep'], st,
+				head = ('%s | %d | %d | %.3f | %s | %.3f | %.1f | %.1f' % (label(r['config']) + (', built on the master' if r.get('masterBuilds') else ', built on every rank'), r['blocks'], r['steps'] * r['windows'], r['usPerBlockStep'], st,
 				                                                           r['usPerBlockStep'] * r['blocks'] * 1e-6, r['setupSeconds'], r['splitSeconds'])) if k == 0 else ' | | | | | | |'
 				lines.append('| %s | %d | %s | %s | %.0f | %.0f | %.0f |' % (head, x['rank'], x.get('ownBlocks', r['blocks']), x.get('ghosts', 0), x['cpuMsPerStep'], x['peakMB'],
 				                                                              x['rssMB']))
