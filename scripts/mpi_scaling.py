@@ -350,10 +350,27 @@ def projectionTable(p):
 	return '\n'.join(['| %.0e blocks on %d cores | |' % (p['blocks'], p['cores']), '|---|---|'] + ['| %s | %s |' % r for r in rows])
 
 
+def bigTable(runs):
+	lines = ['| run | blocks | steps timed | µs per block-step | of which RdemTimeStepper (its runs) | s per step | set-up [s] | split + warm-up [s] | rank | own blocks | ghosts | '
+	         'CPU ms per step | peak RSS [MB] | RSS after [MB] |', '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
+	for r in runs:
+		for k, x in enumerate(r['ranks']):
+			st = '%.3f (%d)' % (r['stepperMsPerStep'] * 1e3 / r['blocks'], r['stepperRuns']) if 'stepperRuns' in r else '–'
+			head = ('%s | %d | %d | %.3f | %s | %.3f | %.1f | %.1f' % (label(r['config']) + (', built on the master' if r.get('masterBuilds') else ', built on every rank'), r['blocks'], r['steps'] * r['windows'], r['usPerBlockStep'], st,
+			                                                           r['usPerBlockStep'] * r['blocks'] * 1e-6, r['setupSeconds'], r['splitSeconds'])) if k == 0 else ' | | | | | | |'
+			lines.append('| %s | %d | %s | %s | %.0f | %.0f | %.0f |' % (head, x['rank'], x.get('ownBlocks', r['blocks']), x.get('ghosts', 0), x['cpuMsPerStep'], x['peakMB'],
+			                                                              x['rssMB']))
+	return '\n'.join(lines)
+
+
 def driver():
 	os.makedirs(args.out, exist_ok=True)
 	resultsPath = os.path.join(args.out, 'results.json')
 	results = json.load(open(resultsPath)) if os.path.exists(resultsPath) else {}
+	if args.tables_only and 'big' in results:
+		text = bigTable(results['big']['runs'])
+		if args.doc:
+			writeDoc(args.doc, 'mpi_scaling big', text)
 	if args.tables_only:
 		summary = summarize(results['timed']['runs'])
 		results['timed']['summary'] = summary
@@ -374,16 +391,7 @@ def driver():
 		old = [r for r in results.get('big', {}).get('runs', []) if r.get('masterBuilds', False) != bool(args.master_builds) and r['blocks'] == runs[0]['blocks']]
 		runs = old + runs  # the other way of building the same wall, if measured before
 		results['big'] = dict(input=vars(args), runs=runs)
-		lines = ['| run | blocks | steps timed | µs per block-step | of which RdemTimeStepper (its runs) | s per step | set-up [s] | split + warm-up [s] | rank | own blocks | ghosts | '
-		         'CPU ms per step | peak RSS [MB] | RSS after [MB] |', '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
-		for r in runs:
-			for k, x in enumerate(r['ranks']):
-				st = '%.3f (%d)' % (r['stepperMsPerStep'] * 1e3 / r['blocks'], r['stepperRuns']) if 'stepperRuns' in r else '–'
-				head = ('%s | %d | %d | %.3f | %s | %.3f | %.1f | %.1f' % (label(r['config']) + (', built on the master' if r.get('masterBuilds') else ', built on every rank'), r['blocks'], r['steps'] * r['windows'], r['usPerBlockStep'], st,
-				                                                           r['usPerBlockStep'] * r['blocks'] * 1e-6, r['setupSeconds'], r['splitSeconds'])) if k == 0 else ' | | | | | | |'
-				lines.append('| %s | %d | %s | %s | %.0f | %.0f | %.0f |' % (head, x['rank'], x.get('ownBlocks', r['blocks']), x.get('ghosts', 0), x['cpuMsPerStep'], x['peakMB'],
-				                                                              x['rssMB']))
-		text = '\n'.join(lines)
+		text = bigTable(runs)
 		if args.doc:
 			writeDoc(args.doc, 'mpi_scaling big', text)
 	else:
@@ -403,6 +411,7 @@ def driver():
 			writeDoc(args.doc, 'mpi_scaling tables', text)
 	print(text)
 	if 'timed' in results:
+		results['timed']['summary'] = summarize(results['timed']['runs'])
 		results['projection'] = projection(results['timed'], results.get('big'))
 		text = projectionTable(results['projection'])
 		print(text)
