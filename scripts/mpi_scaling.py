@@ -352,13 +352,14 @@ def projectionTable(p):
 
 def bigTable(runs):
 	lines = ['| run | blocks | steps timed | µs per block-step | of which RdemTimeStepper (its runs) | s per step | set-up [s] | split + warm-up [s] | rank | own blocks | ghosts | '
-	         'CPU ms per step | peak RSS [MB] | RSS after [MB] |', '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
+	         'bytes sent per step (mpy + RdemGhostExchange) | CPU ms per step | peak RSS [MB] | RSS after [MB] |', '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
 	for r in runs:
 		for k, x in enumerate(r['ranks']):
 			st = '%.3f (%d)' % (r['stepperMsPerStep'] * 1e3 / r['blocks'], r['stepperRuns']) if 'stepperRuns' in r else '–'
 			head = ('%s | %d | %d | %.3f | %s | %.3f | %.1f | %.1f' % (label(r['config']) + (', built on the master' if r.get('masterBuilds') else ', built on every rank'), r['blocks'], r['steps'] * r['windows'], r['usPerBlockStep'], st,
 			                                                           r['usPerBlockStep'] * r['blocks'] * 1e-6, r['setupSeconds'], r['splitSeconds'])) if k == 0 else ' | | | | | | |'
-			lines.append('| %s | %d | %s | %s | %.0f | %.0f | %.0f |' % (head, x['rank'], x.get('ownBlocks', r['blocks']), x.get('ghosts', 0), x['cpuMsPerStep'], x['peakMB'],
+			lines.append('| %s | %d | %s | %s | %s + %s | %.0f | %.0f | %.0f |' % (head, x['rank'], x.get('ownBlocks', r['blocks']), x.get('ghosts', 0), x.get('mpyStateBytes', 0),
+		                                                                       x.get('ghostExchangeBytes', 0), x['cpuMsPerStep'], x['peakMB'],
 			                                                              x['rssMB']))
 	return '\n'.join(lines)
 
