@@ -180,7 +180,11 @@ def timedRun(nBlocks, layout, base, setup):
 		ranks = comm.gather(mine, root=0)
 	else:
 		from yade import rdem
-		breaks = list(rdem.breakCounts())
+		from yade.wrapper import RdemPhys
+		# as rdem.distributed.breakCounts counts (the springs' states, released bonds included), and the law's counters
+		seg = [I.phys.segState for I in O.interactions if I.isReal and isinstance(I.phys, RdemPhys)] + [r.segState for r in rdem.law().releasedBonds]
+		breaks = [sum(1 for g in seg for x in g if x == 1), sum(1 for g in seg for x in g if x == 2)]
+		mine['lawBreaks'] = list(rdem.breakCounts())
 		ranks = [mine]
 	if rank == 0:
 		walls.sort()
