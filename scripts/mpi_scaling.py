@@ -56,6 +56,7 @@ parser.add_argument('--launcher', default=os.path.join(ROOT, 'build-mpi', 'bin',
 parser.add_argument('--out', default=os.path.join(ROOT, 'output', 'mpi-scaling'), help='output directory (default output/mpi-scaling)')
 parser.add_argument('--master-builds', action='store_true',
                     help="only the master builds the scene, the workers receive it from mpy's split (default: every rank builds it, as scripts/mpi_compare.py does)")
+parser.add_argument('--dt', type=float, default=-1, help="O.dt [s] (default -1: RdemTimeStepper's, the minimum over the ranks on mpy)")
 parser.add_argument('--tables-only', action='store_true', help="write the tables, figure and projection again from OUT/results.json, without running")
 parser.add_argument('--doc', default='', help='markdown file whose generated tables to rewrite (e.g. doc/scaling-mpi.md)')
 parser.add_argument('--child', action='store_true', help=argparse.SUPPRESS)
@@ -90,13 +91,13 @@ def buildWall(blocks):
 	joint = RdemJoint(young=2.991e9, poisson=0.25, tensileStrength=0.15e6, cohesion=0.21e6, frictionAngle=math.atan(0.81), fractureEnergy=18,
 	                  shearFractureEnergy=125, compressiveStrength=7.92e6, compressiveFractureEnergy=5000)
 	O.engines = rdem.engines(segmentsPerEdge=2, contactSamples=2, formulation='consistent', failureStress='total', softening=True, gravity=(0, 0, -9.81),
-	                         damping=0.2, verletDist=0.003)
+	                         damping=0.2, verletDist=0.003, dt=args.dt if args.dt > 0 else None)
 	w = rdem.masonry.wall(perCourse * 0.26 - 0.01, courses * 0.065 - 0.01, 0.12, blocksPerBrick=(2, 1, 1), baseBeam=0.1, brickMaterial=brick, jointMaterial=joint)
 	rdem.poissonEngine().elements = 'cells'
 	rdem.poissonEngine().build(w.ids)
 	for i in w.beams['base']:
 		O.bodies[i].state.blockedDOFs = 'xyzXYZ'
-	O.dt = -1
+	O.dt = args.dt
 	return dict(perCourse=perCourse, courses=courses, base=list(w.beams['base']))
 
 
@@ -209,7 +210,7 @@ def launch(config, blocks, steps, windows, warmup, tag):
 	result = os.path.join(args.out, 'run-%s-%s.json' % (tag, config))
 	if os.path.exists(result):
 		os.remove(result)
-	cmd = [args.launcher, '-n', '-x', os.path.abspath(__file__), '--child'] + (['--profile'] if args.profile else []) + [ '--blocks', str(blocks), '--steps', str(steps), '--windows', str(windows), '--warmup',
+	cmd = [args.launcher, '-n', '-x', os.path.abspath(__file__), '--child', '--dt', repr(args.dt)] + (['--profile'] if args.profile else []) + [ '--blocks', str(blocks), '--steps', str(steps), '--windows', str(windows), '--warmup',
 	       str(warmup), '--result', result] + (['--contacts-always'] if config.endswith('a') else [])
 	env = dict(os.environ, OMP_NUM_THREADS='1')
 	if processes > 1:
