@@ -284,10 +284,12 @@ def plot(summary, path):
 	x = list(range(len(summary)))
 	y = [s['usMedian'] for s in summary]
 	err = [[s['usMedian'] - s['usMin'] for s in summary], [s['usMax'] - s['usMedian'] for s in summary]]
-	ax.errorbar(x, y, yerr=err, fmt='o-', capsize=4)
+	ax.errorbar(x, y, yerr=err, fmt='o-', capsize=4, label='wall clock (median, range of rounds)')
+	ax.plot(x, [max(s['cpuMs']) * 1e3 / s['blocks'] for s in summary], 's--', label='CPU time of the busiest rank')
 	ax.set_xticks(x)
-	ax.set_xticklabels([s['label'] for s in summary])
-	ax.set_ylabel('µs per block-step (median, range of rounds)')
+	ax.set_xticklabels([s['label'].replace(', ', ',\n').replace(' (', '\n(') for s in summary], fontsize=8)
+	ax.set_ylabel('µs per block-step')
+	ax.legend(fontsize=8)
 	ax.set_title('%d-block running-bond wall, 2-core machine, 1 thread per process' % summary[0]['blocks'], fontsize=9)
 	ax.set_ylim(bottom=0)
 	fig.tight_layout()
