@@ -396,8 +396,9 @@ def driver():
 			print('mpi_scaling:   %.3f µs per block-step, peak RSS per rank %s MB (%.0f s)' % (r['usPerBlockStep'], [round(x['peakMB']) for x in r['ranks']], r['seconds']),
 			      flush=True)
 			runs.append(r)
-		old = [r for r in results.get('big', {}).get('runs', []) if r.get('masterBuilds', False) != bool(args.master_builds) and r['blocks'] == runs[0]['blocks']]
-		runs = old + runs  # the other way of building the same wall, if measured before
+		new = {(r['config'], r['masterBuilds']) for r in runs}
+		old = [r for r in results.get('big', {}).get('runs', []) if (r['config'], r.get('masterBuilds', False)) not in new and r['blocks'] == runs[0]['blocks']]
+		runs = old + runs  # other configurations or ways of building the same wall, measured before
 		results['big'] = dict(input=vars(args), runs=runs)
 		text = bigTable(runs)
 		if args.doc:
