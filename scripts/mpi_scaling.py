@@ -335,11 +335,15 @@ def projection(timed, big):
 	comm = (messages + collectives) * args.latency_us * 1e-3 + boundary * perBoundary / (args.bandwidth * 1e9) * 1e3
 	step = compute + comm + overhead
 	serial = N * c * 1e-3
-	base = ref['rssMB'][0] - ref['blocks'] * args.kb_per_block / 1024
+	kb = args.kb_per_block
+	bigSerial = next((r for r in (big or {}).get('runs', []) if r['config'] == ref['config']), None)
+	if bigSerial:  # measured: the marginal peak memory per block between the timed wall and the big one, run serially
+		kb = (bigSerial['ranks'][0]['peakMB'] - ref['peakMB'][0]) * 1024 / (bigSerial['blocks'] - ref['blocks'])
+	base = ref['peakMB'][0] - ref['blocks'] * kb / 1024
 	return dict(blocks=N, cores=cores, workers=P, blocksPerWorker=n, boundaryPerWorker=boundary, bytesPerBoundaryBlock=perBoundary, measuredBoundary=w['mpyStateBytes'] / 104,
 	            bytesPerWorkerStep=boundary * perBoundary, usPerBlockStepSerial=c, computeMs=compute, commMs=comm, overheadMs=overhead, stepMs=step, serialStepMs=serial,
-	            speedup=serial / step, efficiency=serial / step / P, baseMB=base, memoryPerWorkerMB=base + (n + boundary) * args.kb_per_block / 1024,
-	            memoryWholeSceneMB=base + N * args.kb_per_block / 1024, latencyUs=args.latency_us, bandwidthGBs=args.bandwidth)
+	            speedup=serial / step, efficiency=serial / step / P, baseMB=base, kbPerBlock=kb, kbMeasured=bigSerial is not None,
+	            memoryPerWorkerMB=base + (n + boundary) * kb / 1024, memoryWholeSceneMB=base + N * kb / 1024, latencyUs=args.latency_us, bandwidthGBs=args.bandwidth)
 
 
 def projectionTable(p):
@@ -352,8 +356,10 @@ def projectionTable(p):
 	        ("mpy's own cost per worker and step (measured: a worker's CPU time less its blocks' and ghosts' serial cost) [ms]", '%.1f' % p['overheadMs']),
 	        ('step [ms]', '%.1f' % p['stepMs']),
 	        ('serial step of the same wall [ms]', '%.0f' % p['serialStepMs']), ('speed-up, parallel efficiency', '%.0f×, %.0f %%' % (p['speedup'], 100 * p['efficiency'])),
-	        ('memory per worker with per-rank insertion [MB]', '%.0f' % p['memoryPerWorkerMB']),
-	        ("memory per rank when every rank holds the whole scene once (mpy's default split) [MB]", '%.0f' % p['memoryWholeSceneMB'])]
+	        ('memory per block: %s [kB]' % ('measured, the serial 10^5 wall\'s peak less the 4000-block wall\'s over the blocks between' if p['kbMeasured'] else
+	                                          'assumed (--kb-per-block)'), '%.1f' % p['kbPerBlock']), ('a rank\'s base (the 4000-block wall\'s peak less its blocks) [MB]', '%.0f' % p['baseMB']),
+	        ('peak memory per worker with per-rank insertion [MB]', '%.0f' % p['memoryPerWorkerMB']),
+	        ("peak memory per rank when every rank holds the whole scene once (mpy's default split) [MB]", '%.0f' % p['memoryWholeSceneMB'])]
 	return '\n'.join(['| %.0e blocks on %d cores | |' % (p['blocks'], p['cores']), '|---|---|'] + ['| %s | %s |' % r for r in rows])
 
 
@@ -363,7 +369,7 @@ def bigTable(runs):
 	for r in runs:
 		for k, x in enumerate(r['ranks']):
 			st = '%.3f (%d)' % (r['stepperMsPerStep'] * 1e3 / r['blocks'], r['stepperRuns']) if 'stepperRuns' in r else '–'
-			head = ('%s | %d | %d | %.3f | %s | %.3f | %.1f | %.1f' % (label(r['config']) + (', built on the master' if r.get('masterBuilds') else ', built on every rank'), r['blocks'], r['steps'] * r['windows'], r['usPerBlockStep'], st,
+			head = ('%s | %d | %d | %.3f | %s | %.3f | %.1f | %.1f' % (label(r['config']) + (', built on the master' if r.get('masterBuilds') else ', built on every rank' if r['processes'] > 1 else ''), r['blocks'], r['steps'] * r['windows'], r['usPerBlockStep'], st,
 			                                                           r['usPerBlockStep'] * r['blocks'] * 1e-6, r['setupSeconds'], r['splitSeconds'])) if k == 0 else ' | | | | | | |'
 			lines.append('| %s | %d | %s | %s | %s + %s | %.0f | %.0f | %.0f |' % (head, x['rank'], x.get('ownBlocks', r['blocks']), x.get('ghosts', 0), x.get('mpyStateBytes', 0),
 		                                                                       x.get('ghostExchangeBytes', 0), x['cpuMsPerStep'], x['peakMB'],
