@@ -372,32 +372,15 @@ def runHeavySave(spec):
 
 
 def runBigWall(spec):
-	"""A running-bond wall of about spec['blocks'] blocks (two per brick, courses : bricks per course = 5 : 4) with MI1's
-	materials (the rule set's values), Poisson cells, softening and total-stress failure, on a fixed base beam under
-	gravity applied at once; timed as the steady-state cases. A few joints break in the first steps under that shock
-	(column "breaks"); the rest of the wall stays intact."""
+	"""The running-bond wall of about spec['blocks'] blocks (rdem.scenes.runningBondWall: MI1's materials, Poisson cells,
+	softening and total-stress failure, on a fixed base beam under gravity applied at once); timed as the steady-state
+	cases. A few joints break in the first steps under that shock (column "breaks"); the rest of the wall stays intact."""
 	from yade import O
 	from yade import rdem
-	from yade.wrapper import RdemJoint
+	from yade.rdem import scenes
 	O.reset()
 	t0 = time.time()
-	bricks = spec['blocks'] / 2
-	perCourse = max(2, int(round(math.sqrt(bricks * 4 / 5))))
-	courses = max(2, int(round(bricks / perCourse)))
-	# MI1's values by the rule set (rdem.wall_database.materials; head joints bonded here): E 2.991 GPa, nu 0.25, 1800 kg/m3
-	brick = O.materials.append(
-	        RdemMat(young=2.991e9, poisson=0.25, density=1800, tensileStrength=1.2818e6, cohesion=1.7945e6, frictionAngle=math.atan(0.81), fractureEnergy=80,
-	                shearFractureEnergy=800, compressiveStrength=19.72e6, compressiveFractureEnergy=5000))
-	joint = RdemJoint(young=2.991e9, poisson=0.25, tensileStrength=0.15e6, cohesion=0.21e6, frictionAngle=math.atan(0.81), fractureEnergy=18,
-	                  shearFractureEnergy=125, compressiveStrength=7.92e6, compressiveFractureEnergy=5000)
-	O.engines = rdem.engines(segmentsPerEdge=2, contactSamples=2, formulation='consistent', failureStress='total', softening=True, gravity=(0, 0, -9.81),
-	                         damping=0.2, verletDist=0.003)  # Cundall's 0.2 as the validated quasi-static scheme
-	w = rdem.masonry.wall(perCourse * 0.26 - 0.01, courses * 0.065 - 0.01, 0.12, blocksPerBrick=(2, 1, 1), baseBeam=0.1, brickMaterial=brick, jointMaterial=joint)
-	rdem.poissonEngine().elements = 'cells'
-	rdem.poissonEngine().build(w.ids)
-	for i in w.beams['base']:
-		O.bodies[i].state.blockedDOFs = 'xyzXYZ'
-	O.dt = -1
+	scenes.runningBondWall(spec['blocks'])
 	n = len(O.bodies)
 	out = dict(bodies=n, setupSeconds=time.time() - t0, memoryKBPerBody=peakMemoryMB() * 1024 / n)
 	out.update(timed(n, spec['steps'], spec['warmup']))

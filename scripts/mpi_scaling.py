@@ -79,26 +79,9 @@ def rssMB():
 
 # --------------------------------------------------------------------------------------------------- one run (in YADE)
 def buildWall(blocks):
-	"""The bigwall case of scripts/benchmark.py (runBigWall), same materials and engines; returns the block ids."""
-	from yade import O, rdem
-	from yade.wrapper import RdemMat, RdemJoint
-	bricks = blocks / 2
-	perCourse = max(2, int(round(math.sqrt(bricks * 4 / 5))))
-	courses = max(2, int(round(bricks / perCourse)))
-	brick = O.materials.append(
-	        RdemMat(young=2.991e9, poisson=0.25, density=1800, tensileStrength=1.2818e6, cohesion=1.7945e6, frictionAngle=math.atan(0.81), fractureEnergy=80,
-	                shearFractureEnergy=800, compressiveStrength=19.72e6, compressiveFractureEnergy=5000))
-	joint = RdemJoint(young=2.991e9, poisson=0.25, tensileStrength=0.15e6, cohesion=0.21e6, frictionAngle=math.atan(0.81), fractureEnergy=18,
-	                  shearFractureEnergy=125, compressiveStrength=7.92e6, compressiveFractureEnergy=5000)
-	O.engines = rdem.engines(segmentsPerEdge=2, contactSamples=2, formulation='consistent', failureStress='total', softening=True, gravity=(0, 0, -9.81),
-	                         damping=0.2, verletDist=0.003, dt=args.dt if args.dt > 0 else None)
-	w = rdem.masonry.wall(perCourse * 0.26 - 0.01, courses * 0.065 - 0.01, 0.12, blocksPerBrick=(2, 1, 1), baseBeam=0.1, brickMaterial=brick, jointMaterial=joint)
-	rdem.poissonEngine().elements = 'cells'
-	rdem.poissonEngine().build(w.ids)
-	for i in w.beams['base']:
-		O.bodies[i].state.blockedDOFs = 'xyzXYZ'
-	O.dt = args.dt
-	return dict(perCourse=perCourse, courses=courses, base=list(w.beams['base']))
+	"""The bigwall case of scripts/benchmark.py (rdem.scenes.runningBondWall), at the fixed --dt if one is given."""
+	from yade.rdem import scenes
+	return scenes.runningBondWall(blocks, dt=args.dt if args.dt > 0 else None)
 
 
 def child():

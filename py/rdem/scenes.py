@@ -360,3 +360,39 @@ class RockingBlock:
 				return t + dt * th / (th - thNew)
 			th, om, t = thNew, omNew, t + dt
 		return t
+
+
+def runningBondWall(blocks, dt=None):
+	"""A running-bond brick wall of about ``blocks`` blocks standing on a fixed base beam under gravity: the large wall
+	of the benchmarks (``scripts/benchmark.py --cases bigwall``, ``scripts/mpi_scaling.py``).
+
+	Two blocks per 250 × 120 × 55 mm brick with 10 mm joints, courses : bricks per course = 5 : 4; MI1's materials by
+	the rule set of :ref:`rdem-validation` (:func:`rdem.wall_database.materials`; head joints bonded here: E 2.991 GPa,
+	ν 0.25, 1800 kg/m³), Poisson cells, softening, total-stress failure, Cundall's damping 0.2 (the validated
+	quasi-static scheme). Gravity acts at once, so a few joints break in the first steps.
+
+	:param blocks: about how many blocks (> 0).
+	:param dt: a fixed time step [s], or None for :yref:`RdemTimeStepper`'s.
+	:return: dict ``perCourse``, ``courses`` (bricks), ``ids`` (the wall's blocks), ``base`` (the fixed beam's blocks).
+	"""
+	from yade.wrapper import RdemJoint
+	from . import masonry
+	if not blocks > 0:
+		raise ValueError('blocks = %r: must be > 0' % blocks)
+	bricks = blocks / 2
+	perCourse = max(2, int(round(math.sqrt(bricks * 4 / 5))))
+	courses = max(2, int(round(bricks / perCourse)))
+	brick = O.materials.append(
+	        RdemMat(young=2.991e9, poisson=0.25, density=1800, tensileStrength=1.2818e6, cohesion=1.7945e6, frictionAngle=math.atan(0.81), fractureEnergy=80,
+	                shearFractureEnergy=800, compressiveStrength=19.72e6, compressiveFractureEnergy=5000))
+	joint = RdemJoint(young=2.991e9, poisson=0.25, tensileStrength=0.15e6, cohesion=0.21e6, frictionAngle=math.atan(0.81), fractureEnergy=18,
+	                  shearFractureEnergy=125, compressiveStrength=7.92e6, compressiveFractureEnergy=5000)
+	O.engines = build.engines(segmentsPerEdge=2, contactSamples=2, formulation='consistent', failureStress='total', softening=True, gravity=(0, 0, -9.81),
+	                          damping=0.2, verletDist=0.003, dt=dt)
+	w = masonry.wall(perCourse * 0.26 - 0.01, courses * 0.065 - 0.01, 0.12, blocksPerBrick=(2, 1, 1), baseBeam=0.1, brickMaterial=brick, jointMaterial=joint)
+	build.poissonEngine().elements = 'cells'
+	build.poissonEngine().build(w.ids)
+	for i in w.beams['base']:
+		O.bodies[i].state.blockedDOFs = 'xyzXYZ'
+	O.dt = dt if dt else -1
+	return dict(perCourse=perCourse, courses=courses, ids=list(w.ids), base=list(w.beams['base']))
