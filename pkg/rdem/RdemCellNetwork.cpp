@@ -14,6 +14,7 @@
 #include <pkg/rdem/math/BlockCells.hpp>
 #include <pkg/rdem/math/GroupByKey.hpp>
 #include <algorithm>
+#include <optional>
 #include <unordered_map>
 
 namespace yade {
@@ -28,14 +29,10 @@ namespace {
 		// through boost.python's deleter), and releasing that needs the GIL, which this thread does not hold.
 		const bool last = std::any_of(intr.begin(), intr.end(), [](const shared_ptr<Interaction>& I) { return I.use_count() == 1; })
 		        || std::any_of(phys.begin(), phys.end(), [](const shared_ptr<IPhys>& P) { return P.use_count() == 1; });
-		if (last) {
-			gilLock lock;
-			intr.clear();
-			phys.clear();
-		} else {
-			intr.clear();
-			phys.clear();
-		}
+		std::optional<gilLock> lock;
+		if (last) lock.emplace();
+		intr.clear();
+		phys.clear();
 	}
 }
 

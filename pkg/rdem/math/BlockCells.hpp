@@ -147,10 +147,12 @@ namespace rdem {
 			sides[size_t(b.axis)] |= (b.side > 0 ? 2 : 1);
 			bonded[size_t(b.axis)] += b.area;
 		}
+		std::array<S, 3> face {}; // area of one face across each axis [m²]
+		for (size_t d = 0; d < 3; ++d)
+			face[d] = 4 * in.half[long((d + 1) % 3)] * in.half[long((d + 2) % 3)];
 		std::array<S, 3> frac {};
 		for (size_t d = 0; d < 3; ++d) {
-			const S face = 4 * in.half[long((d + 1) % 3)] * in.half[long((d + 2) % 3)];
-			if (sides[d] == 0 || bonded[d] < S(cellMinBondedFraction) * face) c.axes[d] = CellAxis::Condensed;
+			if (sides[d] == 0 || bonded[d] < S(cellMinBondedFraction) * face[d]) c.axes[d] = CellAxis::Condensed;
 			else
 				c.axes[d] = (in.prescribed[d] && sides[d] != 3) ? CellAxis::Half : CellAxis::Resolved;
 			frac[d] = c.axes[d] == CellAxis::Half ? S(0.5) : S(1);
@@ -164,14 +166,13 @@ namespace rdem {
 		c.volume = 8 * in.half.prod() * frac[0] * frac[1] * frac[2];
 		c.stiffness = c.volume * cellElasticity<S>(in.young, in.poisson, c.axes, c.condensation);
 		for (size_t q = 0; q < in.bonds.size(); ++q) {
-			const auto&  b    = in.bonds[q];
-			const size_t d    = size_t(b.axis);
-			const S      lat  = c.lateral[d];
-			const S      face = 4 * in.half[long((d + 1) % 3)] * in.half[long((d + 2) % 3)];
+			const auto&  b   = in.bonds[q];
+			const size_t d   = size_t(b.axis);
+			const S      lat = c.lateral[d];
 			if (c.axes[d] == CellAxis::Condensed) continue; // a sliver: a plain spring, no part of the cell's strain
 			S coef = b.area * b.share;
 			if (c.axes[d] == CellAxis::Resolved) {
-				const S free = face * 2 > bonded[d] ? face * 2 - bonded[d] : S(0); // of both ±d faces [m²]
+				const S free = face[d] * 2 > bonded[d] ? face[d] * 2 - bonded[d] : S(0); // of both ±d faces [m²]
 				coef += in.half[long(d)] * free * b.area / (bonded[d] * b.distance);
 				c.extraWeight[q] = lat * in.half[long(d)] * free / (b.distance * bonded[d]);
 			}
