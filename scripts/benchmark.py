@@ -62,6 +62,7 @@ import json
 import math
 import os
 import resource
+import statistics
 import sys
 import time
 from yade import rdem
@@ -565,9 +566,8 @@ lines = [
 ]
 def rounds(r):
 	"""The rounds column: the median of the rounds' fastest windows, their range, then each round's [µs per body-step]."""
-	x = sorted(r['rounds'])
-	median = x[len(x) // 2] if len(x) % 2 else (x[len(x) // 2 - 1] + x[len(x) // 2]) / 2
-	return '**%.3f** (%.3f–%.3f): %s' % (median, x[0], x[-1], ' '.join('%.3f' % v for v in r['rounds']))
+	x = r['rounds']
+	return '**%.3f** (%.3f–%.3f): %s' % (statistics.median(x), min(x), max(x), ' '.join('%.3f' % v for v in x))
 
 paper = [r for r in results if r['section'] == 'paper']
 if paper:

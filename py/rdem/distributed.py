@@ -17,7 +17,7 @@ from yade import O, Body
 from yade.wrapper import RdemBlock, RdemMat, RdemPoissonEngine, RdemCellStrainUpdater, InsertionSortCollider, InteractionLoop, Bo1_Box_Aabb
 from .partition import bisect, counts, refusals
 
-__all__ = ['assign', 'features', 'check', 'prepare', 'breakCounts', 'energies']
+__all__ = ['assign', 'features', 'check', 'prepare', 'localBreakCounts', 'breakCounts', 'energies']
 
 
 def _fixed(b):
@@ -142,24 +142,28 @@ def prepare(workers=None, master=(), exchange=True):
 	return perWorker
 
 
+def localBreakCounts(counted=lambda id1, id2: True):
+	"""(tension, shear): restoring springs broken so far in this process's scene, read from the springs' states
+	(:yref:`RdemPhys.segState`, and the release records of bonds broken through), of the bonds for which
+	``counted(id1, id2)`` is true. Serial runs count every bond; :func:`breakCounts` counts each bond on one rank."""
+	from yade.wrapper import RdemPhys
+	from . import build
+	states = [I.phys.segState for I in O.interactions if I.isReal and isinstance(I.phys, RdemPhys) and counted(I.id1, I.id2)]
+	states += [r.segState for r in build.law().releasedBonds if counted(r.id1, r.id2)]
+	return sum(1 for seg in states for x in seg if x == 1), sum(1 for seg in states for x in seg if x == 2)
+
+
 def breakCounts():
 	"""(tension, shear): restoring springs broken so far over all ranks, each bond counted once, on the rank that owns its
 	body of lower id (a bond across a subdomain boundary exists on two ranks, and each rank's
 	:yref:`Law2_RdemGeom_RdemPhys_FaceSprings.tensionBreaks` counts it). Collective: call it on every rank."""
 	from yade import mpy
-	from yade.wrapper import RdemPhys
-	from . import build
 
 	def mine(id1, id2):
 		b = O.bodies[min(id1, id2)]
 		return b is not None and b.subdomain == mpy.rank
 
-	tension = shear = 0
-	states = [I.phys.segState for I in O.interactions if I.isReal and isinstance(I.phys, RdemPhys) and mine(I.id1, I.id2)]
-	states += [r.segState for r in build.law().releasedBonds if mine(r.id1, r.id2)]
-	for seg in states:
-		tension += sum(1 for x in seg if x == 1)
-		shear += sum(1 for x in seg if x == 2)
+	tension, shear = localBreakCounts(mine)
 	return mpy.comm.allreduce(tension), mpy.comm.allreduce(shear)
 
 
