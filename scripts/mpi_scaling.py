@@ -65,6 +65,17 @@ parser.add_argument('--mpi', action='store_true', help=argparse.SUPPRESS)
 parser.add_argument('--contacts-always', action='store_true', help=argparse.SUPPRESS)
 parser.add_argument('--result', default='', help=argparse.SUPPRESS)
 args = parser.parse_args(sys.argv[1:])
+for name in ('rounds', 'steps', 'windows'):
+	if getattr(args, name) < 1:
+		parser.error('--%s %d: must be >= 1' % (name, getattr(args, name)))
+for name in ('blocks', 'latency_us', 'bandwidth', 'kb_per_block'):
+	if not getattr(args, name) > 0:
+		parser.error('--%s %g: must be > 0' % (name.replace('_', '-'), getattr(args, name)))
+if args.warmup < 0 or args.big < 0:
+	parser.error('--warmup and --big must be >= 0')
+for config in args.ranks + args.big_ranks:
+	if config not in ('1', '1a') and not (config.isdigit() and int(config) >= 2):
+		parser.error("--ranks/--big-ranks %s: each must be 1, 1a (serial) or a process count >= 2" % config)
 
 
 def rssMB():
