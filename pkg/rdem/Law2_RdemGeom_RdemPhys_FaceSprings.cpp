@@ -81,16 +81,22 @@ namespace {
 		}
 	};
 
-	/* Offset correction of a bond's intact shear springs (rdem::offsetSlip, doc/sphinx/rdemTheory.rst §5.4): the slip ½(E₁ + E₂)δ
+	/* Offset correction of a bond's intact shear springs (rdem::offsetSlip, doc/sphinx/rdemTheory.rst §5.4): the slip E₁a₁ - E₂a₂
 	   that the blocks' cell strains (RdemState::strain, scaled by RdemState::cellScale, from RdemCellStrainUpdater) give
-	   two blocks whose centroids are offset by δ along the face, in global coordinates and in the tangent plane of n [m]. */
-	Vector3r
-	cellOffsetSlip(const State& s1, const State& s2, const Matrix3r& R1, const Matrix3r& R12, const RdemGeom& g, const RdemPhys& p, const Vector3r& n)
+	   at the bonded face's centre, a_b its offset from block b's centroid along the face, in global coordinates and in
+	   the tangent plane of n [m]. */
+	Vector3r cellOffsetSlip(const State& s1, const State& s2, const Matrix3r& R1, const Matrix3r& R12, const RdemGeom& g, const Vector3r& n)
 	{
 		const auto&    a     = static_cast<const RdemState&>(s1);
 		const auto&    b     = static_cast<const RdemState&>(s2);
-		const Vector3r local = rdem::offsetSlip<Real>(a.cellScale * a.strain, R12, b.cellScale * b.strain, p.centroidOffset, g.segNormal1);
-		const Vector3r slip  = R1 * local;
+		const Vector3r local = rdem::offsetSlip<Real>(
+		        a.cellScale * a.strain,
+		        rdem::alongFace<Real>(g.faceCentre1, g.segNormal1),
+		        R12,
+		        b.cellScale * b.strain,
+		        rdem::alongFace<Real>(g.faceCentre2, g.segNormal2),
+		        g.segNormal1);
+		const Vector3r slip = R1 * local;
 		return slip - slip.dot(n) * n;
 	}
 
@@ -145,7 +151,7 @@ namespace {
 		BondStep(const Pair& pr, RdemGeom& geom, const RdemPhys& p)
 		        : pair(pr)
 		        , g(geom)
-		        , R1(p.softening || p.centroidOffset != Vector3r::Zero() ? pr.s1.ori.toRotationMatrix() : Matrix3r::Identity())
+		        , R1(p.softening || p.offsetCorrection ? pr.s1.ori.toRotationMatrix() : Matrix3r::Identity())
 		        , n(geom.normal)
 		        , kin(geom.kin)
 		        , A(geom.segmentArea())
@@ -340,9 +346,9 @@ namespace {
 		BondStep b(pair, g, p);
 		b.contactArea = b.brokenContactArea(p);
 		// Bonds whose centroids are offset along the face (cells only): the intact shear springs measure d_t - slip.
-		const bool     offset = p.centroidOffset != Vector3r::Zero();
+		const bool     offset = p.offsetCorrection;
 		const Matrix3r R12    = offset ? Matrix3r(b.R1.transpose() * pair.s2.ori.toRotationMatrix()) : Matrix3r::Identity();
-		b.slip                = offset ? cellOffsetSlip(pair.s1, pair.s2, b.R1, R12, g, p, b.n) : Vector3r::Zero();
+		b.slip                = offset ? cellOffsetSlip(pair.s1, pair.s2, b.R1, R12, g, b.n) : Vector3r::Zero();
 		b.sigmaCells          = totalStress ? cellNormalStress(pair.s1, pair.s2, g, p) : Real(0);
 		const bool withCells  = offset || totalStress;
 		if (p.softening) {
@@ -356,7 +362,13 @@ namespace {
 		out.f += b.fSum;
 		out.t += b.kin.r0.cross(b.fSum) + b.kin.ra.cross(b.fs) + b.kin.rb.cross(b.fr);
 		if (offset) {
-			rdem::offsetSlipGradient<Real>(b.R1.transpose() * b.tSum, R12, p.centroidOffset, p.offsetGrad1, p.offsetGrad2);
+			rdem::offsetSlipGradient<Real>(
+			        b.R1.transpose() * b.tSum,
+			        R12,
+			        rdem::alongFace<Real>(g.faceCentre1, g.segNormal1),
+			        rdem::alongFace<Real>(g.faceCentre2, g.segNormal2),
+			        p.offsetGrad1,
+			        p.offsetGrad2);
 			p.offsetGrad1 *= static_cast<const RdemState&>(pair.s1).cellScale;
 			p.offsetGrad2 *= static_cast<const RdemState&>(pair.s2).cellScale;
 		}

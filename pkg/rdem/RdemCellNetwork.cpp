@@ -12,6 +12,7 @@
 #include <pkg/rdem/RdemPhys.hpp>
 #include <pkg/rdem/RdemRanks.hpp>
 #include <pkg/rdem/math/BlockCells.hpp>
+#include <pkg/rdem/math/ContactBound.hpp>
 #include <pkg/rdem/math/GroupByKey.hpp>
 #include <algorithm>
 #include <optional>
@@ -100,7 +101,7 @@ void RdemCellNetwork::rebuild(Scene* scene)
 	for (size_t k = 0; k < order.size(); ++k) {
 		sideBond[k]   = order[k] / 2;
 		sideSecond[k] = order[k] % 2;
-		sideOffset[k] = static_cast<const RdemPhys*>(intr[sideBond[k]]->phys.get())->centroidOffset != Vector3r::Zero();
+		sideOffset[k] = static_cast<const RdemPhys*>(intr[sideBond[k]]->phys.get())->offsetCorrection;
 	}
 	nCellBlocks = size_t(std::count(hasCell.begin(), hasCell.end(), char(1)));
 	opening.assign(bond.size(), 0);
@@ -259,6 +260,14 @@ void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energ
 	}
 }
 
+Real RdemCellNetwork::offsetShearStiffness(size_t k) const
+{
+	const auto& p = *static_cast<const RdemPhys*>(phys[k].get());
+	if (!p.offsetCorrection || intact[k] == 0 || !intr[k]->isReal()) return 0;
+	const auto& g = *static_cast<const RdemGeom*>(intr[k]->geom.get());
+	return intact[k] * Real(g.nSegments()) * p.weightShear * p.ks * g.segmentArea();
+}
+
 vector<Real> RdemCellNetwork::omega2Bound(Scene* scene)
 {
 	/* The cells' stiffness on the bond openings is K_qr = Σ_b s_b c_bq K_b(d_q, d_r) c_br over the cells b the two bonds
@@ -279,6 +288,31 @@ vector<Real> RdemCellNetwork::omega2Bound(Scene* scene)
 		}
 		row[i] *= st.cellScale;
 	}
+	/* The offset correction of the intact shear springs (addStiffness), bounded by -k(Pd)·(Pc) + ½k|Pc|² ≤ ½k|Pd|² + k|Pc|²
+	   and |Pc|² ≤ 2|s₁a₁∘ε₁|² + 2|s₂a₂∘ε₂|²: a shear spring k at the face centre, and on each cell the diagonal stiffness
+	   4k s²(a∘a) on its strains. */
+	vector<Vector3r> offsetDiag(body.size(), Vector3r::Zero());
+	for (size_t k = 0; k < bond.size(); ++k) {
+		const Real kShear = offsetShearStiffness(k);
+		if (kShear == 0) continue;
+		const Bond& b = bond[k];
+		for (int side = 0; side < 2; ++side) {
+			const size_t i = side ? b.i2 : b.i1;
+			const Real   s = state[i]->cellScale;
+			offsetDiag[i] += 4 * kShear * s * s * rdem::alongFace<Real>(side ? b.fc2 : b.fc1, side ? b.n2 : b.n1).cwiseAbs2();
+			const State& st = *state[i];
+			if (st.blockedDOFs == State::DOF_ALL) continue;
+			w2[size_t(body[i])] += rdem::pointSpringOmega2<Real>(
+			        st.ori * (side ? b.fc2 : b.fc1), st.ori * (side ? b.n2 : b.n1), 1, 0, kShear, st.mass, st.inertia.minCoeff());
+		}
+	}
+	for (size_t i = 0; i < body.size(); ++i)
+		if (hasCell[i])
+			for (size_t j = first[i]; j < first[i + 1]; ++j) {
+				const Bond& b = bond[sideBond[j]];
+				const int   a = sideSecond[j] ? b.ax2 : b.ax1;
+				row[i][a] += offsetDiag[i][a] * math::abs(sideSecond[j] ? b.c2 : b.c1);
+			}
 	for (size_t k = 0; k < bond.size(); ++k) {
 		const Bond& b     = bond[k];
 		const Real  kappa = math::abs(b.c1) * row[b.i1][b.ax1] + math::abs(b.c2) * row[b.i2][b.ax2];
@@ -305,6 +339,7 @@ void RdemCellNetwork::addStiffness(Scene* scene, bool releaseOnCrack, long broke
 		const Vector3r n = R1 * b.n1;
 		openingOf[k]     = K.addOpening(body[b.i1], body[b.i2], n, (R1 * b.fc1).cross(n), (R2 * b.fc2).cross(n));
 	}
+	vector<long> cellOf(body.size(), -1);
 	for (size_t i = 0; i < body.size(); ++i) {
 		const Real s = releaseOnCrack ? state[i]->cellScale : Real(1);
 		if (!hasCell[i] || !(s > 0)) continue;
@@ -314,7 +349,31 @@ void RdemCellNetwork::addStiffness(Scene* scene, bool releaseOnCrack, long broke
 			terms.emplace_back(openingOf[sideBond[j]], sideSecond[j] ? b.ax2 : b.ax1, sideSecond[j] ? b.c2 : b.c1);
 		}
 		// W = ½ s strainᵀ K strain with strain = C ε (the condensation), so ½ εᵀ (s CᵀKC) ε
-		K.addCell(s * condensation[i].transpose() * stiffness[i] * condensation[i], terms);
+		cellOf[i] = long(K.addCell(s * condensation[i].transpose() * stiffness[i] * condensation[i], terms));
+	}
+	/* The offset correction of the intact shear springs (rdem::offsetSlip, as the law applies it): the slip
+	   c = s₁R₁diag(a₁)C₁ε₁ - s₂R₂diag(a₂)C₂ε₂ at the face centre, a_b its offset from block b's centroid along the face,
+	   s_b the crack scale and C_b the condensation. Its lever is a block's length; for a course bonded to a long beam, the
+	   beam's, which can set the step. */
+	for (size_t k = 0; k < bond.size(); ++k) {
+		const Real kShear = offsetShearStiffness(k);
+		if (kShear == 0) continue;
+		const Bond&    b  = bond[k];
+		const Matrix3r R1 = state[b.i1]->ori.toRotationMatrix(), R2 = state[b.i2]->ori.toRotationMatrix();
+		const auto     lever = [&](size_t i, const Matrix3r& R, const Vector3r& fc, const Vector3r& n) -> Matrix3r {
+                        return state[i]->cellScale * R * rdem::alongFace<Real>(fc, n).asDiagonal() * condensation[i];
+		};
+		K.addOffsetShear(
+		        body[b.i1],
+		        body[b.i2],
+		        R1 * b.fc1,
+		        R2 * b.fc2,
+		        R1 * b.n1,
+		        kShear,
+		        cellOf[b.i1],
+		        lever(b.i1, R1, b.fc1, b.n1),
+		        cellOf[b.i2],
+		        lever(b.i2, R2, b.fc2, b.n2));
 	}
 }
 

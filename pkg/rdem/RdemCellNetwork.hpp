@@ -37,8 +37,8 @@ public:
 	void applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released, int threads, const StressSync& sync = StressSync());
 	/// Per body id, the Gershgorin bound of the squared eigenfrequency the cells add [1/s²] (see the definition).
 	vector<Real> omega2Bound(Scene* scene);
-	/// Adds the cells' linear stiffness ½ s εᵀ CᵀKC ε on the bond openings at the current poses to K (RdemTimeStepper);
-	/// the offset correction of running bond is left out (it acts through the shear springs, of lower stiffness).
+	/// Adds the cells' linear stiffness ½ s εᵀ CᵀKC ε on the bond openings at the current poses to K (RdemTimeStepper),
+	/// and the coupling of the offset correction of the bonds' intact shear springs to the cells' strains.
 	void addStiffness(Scene* scene, bool releaseOnCrack, long brokenSprings, rdem::BlockStiffness<Real>& K);
 	/// Number of blocks with a cell.
 	size_t nCells() const { return nCellBlocks; }
@@ -47,34 +47,36 @@ public:
 
 private:
 	struct Bond {                      // constant between rebuilds
-		size_t   i1, i2;                 // compact indices of the two blocks
-		int      ax1, ax2;               // the bond's axis in each block's frame
-		Real     c1, c2;                 // cell coefficients ∂ε/∂u_n of the two blocks [1/m] (RdemPhys::cellCoef1, 2)
-		Vector3r n1, n2, fc1, fc2;       // face normal and face centre in each block's frame
+		size_t   i1, i2;           // compact indices of the two blocks
+		int      ax1, ax2;         // the bond's axis in each block's frame
+		Real     c1, c2;           // cell coefficients ∂ε/∂u_n of the two blocks [1/m] (RdemPhys::cellCoef1, 2)
+		Vector3r n1, n2, fc1, fc2; // face normal and face centre in each block's frame
 	};
 	vector<Bond>                    bond;
-	vector<shared_ptr<Interaction>> intr;       // per bond, to see it released and read its intact fraction
-	vector<shared_ptr<IPhys>>       phys;       // per bond, held directly (one pointer less to follow, alive after a release)
-	vector<Real>                    opening;    // per bond, this step [m]
-	vector<Vector3r>                normal;     // per bond, this step: body 1's rotated face normal
-	vector<Vector3r>                arm1, arm2; // per bond, this step: moment about each block's centroid of a unit force along normal at the face centre [m]
-	vector<Real>                    intact;     // per bond, fraction of intact restoring springs (0 once released)
-	vector<Body::id_t>              body;       // per compact block: its id
-	vector<RdemState*>              state;      // per compact block
-	vector<char>                    hasCell;    // per compact block: whether it has a cell (else it only moves bonds)
-	vector<size_t>                  first;      // compact block i: sides first[i] … first[i+1]-1
-	vector<size_t>                  sideBond;   // the bond of each side
-	vector<char>                    sideSecond; // whether the block is the bond's second block
-	vector<char>                    sideOffset; // whether the bond has a centroid offset (its law writes RdemPhys::offsetGrad)
-	vector<Matrix3r>                rot;        // per compact block, this step
-	vector<Vector3r>                pos;
-	vector<Matrix3r>                stiffness;    // per compact block: RdemState::cellStiffness (constant between builds)
-	vector<Matrix3r>                condensation; // per compact block: RdemState::cellCondensation
-	vector<Vector3r>                stress;     // per compact block: ∂W/∂ε this step [N·m]
-	vector<Real>                    scalePrev;  // per compact block: cell scale of the last step
-	size_t                          nCellBlocks = 0;
-	long builtGeneration = -1, builtInteractions = -1, builtBodies = -1, brokenSeen = -1;
-	void rebuild(Scene* scene);
+	vector<shared_ptr<Interaction>> intr;    // per bond, to see it released and read its intact fraction
+	vector<shared_ptr<IPhys>>       phys;    // per bond, held directly (one pointer less to follow, alive after a release)
+	vector<Real>                    opening; // per bond, this step [m]
+	vector<Vector3r>                normal;  // per bond, this step: body 1's rotated face normal
+	vector<Vector3r>   arm1, arm2;           // per bond, this step: moment about each block's centroid of a unit force along normal at the face centre [m]
+	vector<Real>       intact;               // per bond, fraction of intact restoring springs (0 once released)
+	vector<Body::id_t> body;                 // per compact block: its id
+	vector<RdemState*> state;                // per compact block
+	vector<char>       hasCell;              // per compact block: whether it has a cell (else it only moves bonds)
+	vector<size_t>     first;                // compact block i: sides first[i] … first[i+1]-1
+	vector<size_t>     sideBond;             // the bond of each side
+	vector<char>       sideSecond;           // whether the block is the bond's second block
+	vector<char>       sideOffset;           // whether the bond has a centroid offset (its law writes RdemPhys::offsetGrad)
+	vector<Matrix3r>   rot;                  // per compact block, this step
+	vector<Vector3r>   pos;
+	vector<Matrix3r>   stiffness;    // per compact block: RdemState::cellStiffness (constant between builds)
+	vector<Matrix3r>   condensation; // per compact block: RdemState::cellCondensation
+	vector<Vector3r>   stress;       // per compact block: ∂W/∂ε this step [N·m]
+	vector<Real>       scalePrev;    // per compact block: cell scale of the last step
+	size_t             nCellBlocks     = 0;
+	long               builtGeneration = -1, builtInteractions = -1, builtBodies = -1, brokenSeen = -1;
+	void               rebuild(Scene* scene);
+	/// Total shear stiffness k_s w_s A of bond k's intact springs when they carry the offset correction [N/m]; else 0.
+	Real offsetShearStiffness(size_t k) const;
 	void updateIntact(long brokenSprings);
 };
 

@@ -374,7 +374,7 @@ void RdemPoissonEngine::clearCells(const std::set<Body::id_t>& ids)
 		}
 	forEachBond(scene, ids, [](const Interaction&, const RdemGeom&, RdemPhys& p) {
 		p.cellCoef1 = p.cellCoef2 = 0;
-		p.centroidOffset.setZero();
+		p.offsetCorrection        = false;
 		p.weightNormal = p.weightShear = 1;
 	});
 }
@@ -412,11 +412,10 @@ void RdemPoissonEngine::buildCells(const std::set<Body::id_t>& ids)
 			in.bonds.push_back({ axis, normal[axis] > 0 ? 1 : -1, area, C[k] / C.sum(), g.ell1 + g.ell2 });
 			sides.push_back({ &p, id, in.bonds.size() - 1 });
 		}
-		// The centroid offset along the face, in body 1's frame: nonzero where the shear springs need the correction.
+		// The shear springs need the offset correction where the centroids are offset along the face (body 1's frame).
 		const State& s1    = *Body::byId(I.getId1(), scene)->state;
-		Vector3r     delta = s1.ori.conjugate() * (Body::byId(I.getId2(), scene)->state->pos - s1.pos);
-		delta -= delta.dot(g.segNormal1) * g.segNormal1;
-		p.centroidOffset = delta.norm() > 1e-9 * math::min(g.ell1, g.ell2) ? delta : Vector3r::Zero();
+		const auto   delta = rdem::alongFace<Real>(s1.ori.conjugate() * (Body::byId(I.getId2(), scene)->state->pos - s1.pos), g.segNormal1);
+		p.offsetCorrection = delta.norm() > 1e-9 * math::min(g.ell1, g.ell2);
 	});
 	std::map<Body::id_t, rdem::Cell<Real>> cell;
 	for (auto& in : input) {

@@ -43,8 +43,8 @@ Vec3 cellStrainOfUniform(const rdem::CellInput<Scalar>& in, const rdem::Cell<Sca
 rdem::CellInput<Scalar> block(Scalar hx, Scalar hy, Scalar hz)
 {
 	rdem::CellInput<Scalar> in;
-	in.half  = Vec3(hx, hy, hz);
-	in.young = E;
+	in.half    = Vec3(hx, hy, hz);
+	in.young   = E;
 	in.poisson = nu;
 	return in;
 }
@@ -66,8 +66,8 @@ TEST(BlockCells, OneCondensedAxisIsPlaneStress)
 {
 	// No bond along y (a one-wythe wall): σ_yy = 0 condenses D to plane stress, D11 = E/(1-ν²), D13 = νE/(1-ν²); the
 	// cell holds it minus M on the diagonal; ε_yy = -λ/M (ε_xx + ε_zz).
-	Mat3       C;
-	const Mat3 D    = rdem::cellElasticity<Scalar>(E, nu, { rdem::CellAxis::Resolved, rdem::CellAxis::Condensed, rdem::CellAxis::Resolved }, C);
+	Mat3         C;
+	const Mat3   D  = rdem::cellElasticity<Scalar>(E, nu, { rdem::CellAxis::Resolved, rdem::CellAxis::Condensed, rdem::CellAxis::Resolved }, C);
 	const Scalar ps = E / (1 - nu * nu), tol = 1e-14 * M();
 	EXPECT_NEAR(D(0, 0), ps - M(), tol);
 	EXPECT_NEAR(D(2, 2), ps - M(), tol);
@@ -249,40 +249,57 @@ TEST(BlockCells, BlockWithoutBondsHasNoCell)
 
 TEST(BlockCells, OffsetSlipOfRunningBond)
 {
-	// Bed joint (n = z) between bricks offset by half a brick along x: a uniform strain makes them translate apart by
-	// ε_xx δ_x along the face, which the correction takes out; the normal part is dropped. Exact arithmetic: 1e-20 m.
+	// Bed joint (n = z) between bricks offset by half a brick along x, the face centre midway: a uniform strain makes
+	// them translate apart by ε_xx δ_x along the face, which the correction takes out; the normal part is dropped.
+	// Exact arithmetic: 1e-20 m.
 	const Vec3 delta(0.13, 0.0, 0.0), n(0, 0, 1), eps(2e-4, -1e-4, -1e-3);
-	const Vec3 slip = rdem::offsetSlip<Scalar>(eps, Mat3::Identity(), eps, delta, n);
+	const Vec3 slip = rdem::offsetSlip<Scalar>(eps, Vec3(delta / 2), Mat3::Identity(), eps, Vec3(-delta / 2), n);
 	EXPECT_NEAR((slip - Vec3(2e-4 * 0.13, 0, 0)).norm(), 0.0, 1e-20);
 	// No offset (a grid): no correction.
-	EXPECT_EQ(rdem::offsetSlip<Scalar>(eps, Mat3::Identity(), eps, Vec3::Zero(), n).norm(), 0.0);
+	EXPECT_EQ(rdem::offsetSlip<Scalar>(eps, Vec3::Zero(), Mat3::Identity(), eps, Vec3::Zero(), n).norm(), 0.0);
+}
+
+TEST(BlockCells, OffsetSlipOfABrickOnABeam)
+{
+	// A brick (half-length 0.125 m) bonded to a beam of 1.55 m whose centroid is 0.6 m away along x: the face centre is
+	// the brick's, a₁ = 0, and a₂ = (-0.6, 0, 0) from the beam's centroid. A uniform strain gives ε_xx (x₂ - x₁), the
+	// face-centre choice does not matter; a strain of the brick alone gives no slip at all (its material at the face
+	// centre is its centroid's), whereas half the centroid offset would give ε_xx · 0.3 m. Exact arithmetic: 1e-20 m.
+	const Vec3 a1(0, 0.04, 0), a2(-0.6, 0.04, 0), n(0, 0, 1), eps(2e-4, -1e-4, -1e-3), zero = Vec3::Zero();
+	const Vec3 uniform = rdem::offsetSlip<Scalar>(eps, a1, Mat3::Identity(), eps, a2, n);
+	EXPECT_NEAR((uniform - Vec3(2e-4 * 0.6, 0, 0)).norm(), 0.0, 1e-20);
+	const Vec3 brickOnly = rdem::offsetSlip<Scalar>(Vec3(2e-4, 0, 0), a1, Mat3::Identity(), zero, a2, n);
+	EXPECT_EQ(brickOnly.norm(), 0.0);
+	const Vec3 beamOnly = rdem::offsetSlip<Scalar>(zero, a1, Mat3::Identity(), Vec3(2e-4, 0, 0), a2, n);
+	EXPECT_NEAR((beamOnly - Vec3(2e-4 * 0.6, 0, 0)).norm(), 0.0, 1e-20);
 }
 
 TEST(BlockCells, OffsetSlipHonoursTheBlocksFrames)
 {
 	// Body 2 turned by 90° about z (a header next to a stretcher): its x axis is body 1's y. Its strains along its own
-	// axes (ε_y, ε_x, ε_z) are body 1's (ε_x, ε_y, ε_z), so the slip equals that of two blocks with equal frames.
+	// axes (ε_y, ε_x, ε_z) are body 1's (ε_x, ε_y, ε_z), and its offset in its own frame is R12ᵀ of body 1's, so the
+	// slip equals that of two blocks with equal frames.
 	Mat3 R12;
 	R12 << 0, -1, 0, 1, 0, 0, 0, 0, 1;
-	const Vec3 eps1(2e-4, -5e-5, -1e-3), eps2(-5e-5, 2e-4, -1e-3), delta(0.05, 0.03, 0), n(0, 0, 1);
-	const Vec3 a = rdem::offsetSlip<Scalar>(eps1, R12, eps2, delta, n);
-	const Vec3 b = rdem::offsetSlip<Scalar>(eps1, Mat3::Identity(), eps1, delta, n);
+	const Vec3 eps1(2e-4, -5e-5, -1e-3), eps2(-5e-5, 2e-4, -1e-3), a1(0.05, 0.03, 0), a2(-0.02, 0.01, 0), n(0, 0, 1);
+	const Vec3 a = rdem::offsetSlip<Scalar>(eps1, a1, R12, eps2, Vec3(R12.transpose() * a2), n);
+	const Vec3 b = rdem::offsetSlip<Scalar>(eps1, a1, Mat3::Identity(), eps1, a2, n);
 	EXPECT_NEAR((a - b).norm(), 0.0, 1e-20);
 }
 
 TEST(BlockCells, OffsetSlipGradientIsTheEnergyDerivative)
 {
 	// W(ε₁, ε₂) = ½ k |d_t - slip(ε₁, ε₂)|² for a fixed tangential elongation d_t; T = k (d_t - slip). The analytic
-	// gradient must match central differences (W is quadratic: exact up to round-off; step 1e-6 of the strain scale).
+	// gradient must match central differences (W is quadratic: exact up to round-off; step 1e-9 of the strain).
 	Mat3 R12;
 	R12 << 0, -1, 0, 1, 0, 0, 0, 0, 1;
-	const Vec3   delta(0.05, 0.03, 0), n(0, 0, 1), dt(3e-6, -1e-6, 0);
+	const Vec3   a1(0.05, 0.03, 0), a2(-0.6, 0.02, 0), n(0, 0, 1), dt(3e-6, -1e-6, 0);
 	const Scalar k = 7e9;
 	const Vec3   eps1(2e-4, -5e-5, -1e-3), eps2(-6e-5, 1e-4, -8e-4);
-	auto         W = [&](const Vec3& e1, const Vec3& e2) { return 0.5 * k * (dt - rdem::offsetSlip<Scalar>(e1, R12, e2, delta, n)).squaredNorm(); };
-	const Vec3   T = k * (dt - rdem::offsetSlip<Scalar>(eps1, R12, eps2, delta, n));
+	auto         W = [&](const Vec3& e1, const Vec3& e2) { return 0.5 * k * (dt - rdem::offsetSlip<Scalar>(e1, a1, R12, e2, a2, n)).squaredNorm(); };
+	const Vec3   T = k * (dt - rdem::offsetSlip<Scalar>(eps1, a1, R12, eps2, a2, n));
 	Vec3         g1, g2;
-	rdem::offsetSlipGradient<Scalar>(T, R12, delta, g1, g2);
+	rdem::offsetSlipGradient<Scalar>(T, R12, a1, a2, g1, g2);
 	const Scalar step = 1e-9;
 	for (int d = 0; d < 3; ++d) {
 		Vec3 e = Vec3::Zero();
@@ -291,6 +308,13 @@ TEST(BlockCells, OffsetSlipGradientIsTheEnergyDerivative)
 		EXPECT_NEAR(g2[d], (W(eps1, eps2 + e) - W(eps1, eps2 - e)) / (2 * step), 1e-6 * k * 1e-6) << d;
 	}
 	EXPECT_NE(g1.norm(), 0.0);
+	EXPECT_NE(g2.norm(), 0.0);
+}
+
+TEST(BlockCells, AlongFaceDropsTheNormalPart)
+{
+	const Vec3 n(0, 0, 1), c(0.1, -0.2, 0.06);
+	EXPECT_EQ(rdem::alongFace<Scalar>(c, n), Vec3(0.1, -0.2, 0));
 }
 
 } // namespace

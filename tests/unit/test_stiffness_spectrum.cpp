@@ -181,6 +181,52 @@ TEST(StiffnessSpectrum, CellIsItsDefinition)
 	EXPECT_LT((K.dense() - G.transpose() * Kc * G).norm(), 1e-12 * Kc.norm());
 }
 
+TEST(StiffnessSpectrum, OffsetShearCompletesTheShearSpringsEnergy)
+{
+	// Two cells (body 0: openings q0 along x and q1 along z; body 1: q0) and a bond 0-1 whose shear springs k measure
+	// P(d - c), c = A₁ε₀ - A₂ε₁: its point spring plus addOffsetShear must be the Hessian of
+	// E = ½ε₀ᵀK₀ε₀ + ½ε₁ᵀK₁ε₁ + ½k|P(d - c)|², written here from its definition. E is quadratic, so its Hessian by
+	// polarisation, H_ij = (E(e_i + e_j) - E(e_i - e_j) - E(-e_i + e_j) + E(-e_i - e_j))/4, is exact up to round-off.
+	rdem::BlockStiffness<double> K(3);
+	const V3                     n0 = V3::UnitX(), n1 = V3::UnitZ(), a01(0, 0.2, -0.1), a02(0.3, 0, 0.1), a11(0.05, 0.1, 0), a12(0, -0.2, 0.4);
+	const V3                     r1(0.1, -0.05, 0.2), r2(-0.6, 0.02, -0.2), n = V3(0.1, 0.2, 1).normalized();
+	const double                 k = 3.0, c00 = 2.0, c01 = -1.5, c10 = 0.7;
+	M3                           K0, K1, A1, A2;
+	K0 << 4, 1, 0.5, 1, 3, 0.2, 0.5, 0.2, 2;
+	K1 << 2, 0.3, 0, 0.3, 5, 0.1, 0, 0.1, 1;
+	A1 << 0.1, 0, 0.02, 0, 0.05, 0, 0.01, 0, 0.2;
+	A2 << 0.6, 0.01, 0, 0, 0.03, 0, 0, 0.02, 0.1;
+	const size_t q0 = K.addOpening(0, 1, n0, a01, a02), q1 = K.addOpening(0, 2, n1, a11, a12);
+	const size_t cell0 = K.addCell(K0, { { q0, 0, c00 }, { q1, 2, c01 } }), cell1 = K.addCell(K1, { { q0, 0, c10 } });
+	K.beginPair(0, 1);
+	K.addPointSpring(0, 1, r1, r2, n, 0, k);
+	K.addOffsetShear(0, 1, r1, r2, n, k, long(cell0), A1, long(cell1), A2);
+	const auto at = [](const VX& x, long b, const V3& r) -> V3 { return x.segment<3>(6 * b) + V3(x.segment<3>(6 * b + 3)).cross(r); };
+	const auto E  = [&](const VX& x) {
+                const double u0 = n0.dot(V3(x.segment<3>(6) - x.segment<3>(0))) + a02.dot(V3(x.segment<3>(9))) - a01.dot(V3(x.segment<3>(3)));
+                const double u1 = n1.dot(V3(x.segment<3>(12) - x.segment<3>(0))) + a12.dot(V3(x.segment<3>(15))) - a11.dot(V3(x.segment<3>(3)));
+                const V3     e0(c00 * u0, 0, c01 * u1), e1(c10 * u0, 0, 0);
+                const M3     P = M3::Identity() - n * n.transpose();
+                const V3     s = P * (at(x, 1, r2) - at(x, 0, r1) - (A1 * e0 - A2 * e1));
+                return 0.5 * e0.dot(K0 * e0) + 0.5 * e1.dot(K1 * e1) + 0.5 * k * s.squaredNorm();
+	};
+	MX H(18, 18);
+	for (long i = 0; i < 18; ++i)
+		for (long j = 0; j < 18; ++j) {
+			const VX ei = VX::Unit(18, i), ej = VX::Unit(18, j);
+			H(i, j) = (E(ei + ej) - E(ei - ej) - E(-ei + ej) + E(-ei - ej)) / 4;
+		}
+	EXPECT_LT((K.dense() - H).norm(), 1e-12 * H.norm());
+	// Without the offset term K is that of the cells and the spring alone: the term is not zero.
+	rdem::BlockStiffness<double> plain(3);
+	const size_t                 p0 = plain.addOpening(0, 1, n0, a01, a02), p1 = plain.addOpening(0, 2, n1, a11, a12);
+	plain.addCell(K0, { { p0, 0, c00 }, { p1, 2, c01 } });
+	plain.addCell(K1, { { p0, 0, c10 } });
+	plain.beginPair(0, 1);
+	plain.addPointSpring(0, 1, r1, r2, n, 0, k);
+	EXPECT_GT((K.dense() - plain.dense()).norm(), 1e-3 * H.norm());
+}
+
 TEST(StiffnessSpectrum, ElementAddsItsMatrixOnTranslations)
 {
 	// A random symmetric K_p on 8 bodies, scale ½: the dense K is ½ K_p on the translation rows and columns, 0 elsewhere.

@@ -5,9 +5,9 @@ from yade import O, Matrix3, Vector3
 from yade import rdem
 
 
-def run(testCase):
-	"""Run one TestCase class inside YADE and exit with 0 if it passed, 1 otherwise (CTest reads the status)."""
-	suite = unittest.defaultTestLoader.loadTestsFromTestCase(testCase)
+def run(*testCases):
+	"""Run TestCase classes inside YADE and exit with 0 if all passed, 1 otherwise (CTest reads the status)."""
+	suite = unittest.TestSuite(unittest.defaultTestLoader.loadTestsFromTestCase(t) for t in testCases)
 	result = unittest.TextTestRunner(verbosity=2, stream=sys.stdout).run(suite)
 	sys.exit(0 if result.wasSuccessful() else 1)
 

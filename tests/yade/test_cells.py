@@ -59,11 +59,11 @@ class CellsAreExact(unittest.TestCase):
 		self.check('running', 2, (3, 1, 1), (0, 1, 2))
 
 	def testWithoutTheOffsetCorrectionItIsNot(self):
-		# The same running-bond wall with the shear springs' offset correction switched off (centroid offsets cleared):
+		# The same running-bond wall with the shear springs' offset correction switched off:
 		# the bed joints' shear springs resist the lateral expansion, and the uniform state is far from equilibrium.
 		wall, plates = wc.homogeneousWall('running', 2, (1, 1, 1), 0.3, 2)
 		for I in O.interactions:
-			I.phys.centroidOffset = I.phys.centroidOffset * 0
+			I.phys.offsetCorrection = False
 		force, torque, eRatio = wc.uniformResidual(wall, plates, 0.3, 2, eps=EPS)
 		self.assertGreater(force, 1e-2)
 

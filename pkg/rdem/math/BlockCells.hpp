@@ -80,9 +80,9 @@ namespace rdem {
 
 	/// A block and its bonds: what its cell is made of.
 	template <class S> struct CellInput {
-		Eigen::Matrix<S, 3, 1> half;            ///< half-extents of the block [m]
-		S                      young, poisson;  ///< of the block's material [Pa], [-]
-		std::array<bool, 3>    prescribed {};   ///< whether the block's translation along each of its axes is prescribed
+		Eigen::Matrix<S, 3, 1>   half;           ///< half-extents of the block [m]
+		S                        young, poisson; ///< of the block's material [Pa], [-]
+		std::array<bool, 3>      prescribed {};  ///< whether the block's translation along each of its axes is prescribed
 		std::vector<CellBond<S>> bonds;
 	};
 
@@ -90,10 +90,10 @@ namespace rdem {
 	template <class S> struct Cell {
 		using Mat3 = Eigen::Matrix<S, 3, 3>;
 		std::array<CellAxis, 3> axes {};
-		S                       volume = 0;                 ///< V [m³]; 0: no cell (the block has no bond)
-		Mat3                    stiffness = Mat3::Zero();   ///< V (D_cond - M I) on the normal strains [N·m]
+		S                       volume       = 0;            ///< V [m³]; 0: no cell (the block has no bond)
+		Mat3                    stiffness    = Mat3::Zero(); ///< V (D_cond - M I) on the normal strains [N·m]
 		Mat3                    condensation = Mat3::Zero(); ///< ε_all = condensation · ε (condensed axes from the others)
-		std::array<S, 3>        lateral {};                 ///< per axis d: the cell's extent fraction across d (½ per half axis; 1 without a cell)
+		std::array<S, 3>        lateral {};                  ///< per axis d: the cell's extent fraction across d (½ per half axis; 1 without a cell)
 		std::vector<S>          coef;                        ///< per bond: ∂ε_axis/∂u_n [1/m]
 		std::vector<S>          extraWeight;                 ///< per bond: this block's addition to the bond's w_n
 	};
@@ -101,12 +101,11 @@ namespace rdem {
 	/// Normal block of the isotropic elasticity tensor (eq. 18 [P]) condensed over the Condensed axes (σ = 0 there),
 	/// minus the springs' modulus M = λ+2μ on the other axes; rows and columns of Condensed axes are zero [Pa]. Also
 	/// returns the condensation ε_all = C ε (identity on the other axes).
-	template <class S>
-	Eigen::Matrix<S, 3, 3> cellElasticity(S young, S poisson, const std::array<CellAxis, 3>& axes, Eigen::Matrix<S, 3, 3>& condensation)
+	template <class S> Eigen::Matrix<S, 3, 3> cellElasticity(S young, S poisson, const std::array<CellAxis, 3>& axes, Eigen::Matrix<S, 3, 3>& condensation)
 	{
-		using Mat3     = Eigen::Matrix<S, 3, 3>;
-		const S lambda = young * poisson / ((1 + poisson) * (1 - 2 * poisson)), mu = young / (2 * (1 + poisson));
-		Mat3    D      = Mat3::Constant(lambda) + 2 * mu * Mat3::Identity();
+		using Mat3              = Eigen::Matrix<S, 3, 3>;
+		const S          lambda = young * poisson / ((1 + poisson) * (1 - 2 * poisson)), mu = young / (2 * (1 + poisson));
+		Mat3             D = Mat3::Constant(lambda) + 2 * mu * Mat3::Identity();
 		std::vector<int> R, U;
 		for (int d = 0; d < 3; ++d)
 			(axes[size_t(d)] == CellAxis::Condensed ? U : R).push_back(d);
@@ -120,8 +119,8 @@ namespace rdem {
 			for (size_t j = 0; j < R.size(); ++j)
 				DUR(long(i), long(j)) = D(U[i], R[j]);
 		}
-		const Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> CUR
-		        = U.empty() ? Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>(0, long(R.size())) : Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>(-DUU.lu().solve(DUR));
+		const Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> CUR = U.empty() ? Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>(0, long(R.size()))
+		                                                                       : Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>(-DUU.lu().solve(DUR));
 		for (size_t i = 0; i < R.size(); ++i) {
 			condensation(R[i], R[i]) = 1;
 			for (size_t j = 0; j < R.size(); ++j) {
@@ -163,7 +162,7 @@ namespace rdem {
 			c.lateral[d] = frac[(d + 1) % 3] * frac[(d + 2) % 3];
 		// no cell (no bond, or slivers only): its bonds are plain springs of weight 1
 		if (c.axes[0] == CellAxis::Condensed && c.axes[1] == CellAxis::Condensed && c.axes[2] == CellAxis::Condensed) return c;
-		c.volume = 8 * in.half.prod() * frac[0] * frac[1] * frac[2];
+		c.volume    = 8 * in.half.prod() * frac[0] * frac[1] * frac[2];
 		c.stiffness = c.volume * cellElasticity<S>(in.young, in.poisson, c.axes, c.condensation);
 		for (size_t q = 0; q < in.bonds.size(); ++q) {
 			const auto&  b   = in.bonds[q];
@@ -183,40 +182,55 @@ namespace rdem {
 
 	/// Normal weight w_n of a bond from the cells of its two blocks: the smaller of their lateral fractions (½ across a
 	/// platen's half cell) plus each block's extraWeight. The shear weight w_s is that lateral fraction alone.
-	template <class S> S cellBondWeightNormal(S lateral1, S lateral2, S extra1, S extra2) { return (lateral1 < lateral2 ? lateral1 : lateral2) + extra1 + extra2; }
+	template <class S> S cellBondWeightNormal(S lateral1, S lateral2, S extra1, S extra2)
+	{
+		return (lateral1 < lateral2 ? lateral1 : lateral2) + extra1 + extra2;
+	}
 
-	/* Offset correction of the shear springs (doc/sphinx/rdemTheory.rst §5.4). Two bonded blocks whose centroids are offset by δ
-	   along their face (running bond: half a brick) translate apart by εδ under a uniform strain ε, which their rigid
-	   shapes turn into a slip of the face that a continuum does not have. The intact shear springs therefore measure the
-	   slip from the blocks' mean cell strain, d_t - P_t(½(E₁ + E₂)δ), E_b = diag(ε_b) in block b's frame. Everything in
-	   body 1's frame: eps1 and eps2 the normal strains of the blocks along their own axes, R12 = R₁ᵀR₂, delta the
-	   centroid offset and n the face normal. Returns the tangential slip to subtract [m]. Zero for δ = 0 (a grid). */
+	/* Offset correction of the shear springs (doc/sphinx/rdemTheory.rst §5.4). Under the cells' strains each block deforms
+	   as E_b = diag(ε_b) in its own frame, so the material of block b at the bonded face's centre p moves by E_b a_b
+	   relative to its centroid, a_b = p - x_b. The rigid blocks' shear springs see only the centroids' motion, and two
+	   blocks whose centroids are offset along the face (running bond, a course bonded to a beam) slip by the difference
+	   even under a uniform strain, which a continuum does not do. The intact shear springs therefore measure
+	   d_t - P_t(E₁a₁ - E₂a₂). Under a uniform strain E₁a₁ - E₂a₂ = E(x₂ - x₁) whatever p is; between blocks of unequal
+	   length (a brick and a beam) only the face centre gives each block its own share. Arguments: eps1, eps2 the normal
+	   strains of the blocks along their own axes; a1 the face centre's offset from body 1's centroid along the face, in
+	   body 1's frame, a2 that from body 2's centroid in body 2's frame [m]; R12 = R₁ᵀR₂; n the face normal in body 1's
+	   frame. Returns the tangential slip to subtract, in body 1's frame [m]. Zero when a₁ = a₂ = 0 (a grid). */
 	template <class S>
 	Eigen::Matrix<S, 3, 1> offsetSlip(
 	        const Eigen::Matrix<S, 3, 1>& eps1,
+	        const Eigen::Matrix<S, 3, 1>& a1,
 	        const Eigen::Matrix<S, 3, 3>& R12,
 	        const Eigen::Matrix<S, 3, 1>& eps2,
-	        const Eigen::Matrix<S, 3, 1>& delta,
+	        const Eigen::Matrix<S, 3, 1>& a2,
 	        const Eigen::Matrix<S, 3, 1>& n)
 	{
-		const Eigen::Matrix<S, 3, 1> c = (eps1.cwiseProduct(delta) + R12 * eps2.cwiseProduct(R12.transpose() * delta)) / 2;
+		const Eigen::Matrix<S, 3, 1> c = eps1.cwiseProduct(a1) - R12 * eps2.cwiseProduct(a2);
 		return c - c.dot(n) * n;
 	}
 
 	/* Gradient of the shear springs' energy ½ Σ k_s w_s A |d_t - c_t|² with respect to the cell strains of the two
-	   blocks, given T = Σ k_s w_s A (d_t - c_t) over the intact segments (body-1 frame) [N]: ∂W/∂ε₁ = -½ T∘δ and
-	   ∂W/∂ε₂ = -½ (R12ᵀT)∘(R12ᵀδ) [N·m]. Added to the cells' stresses, they give the reaction of the correction on the
-	   bonds that made the strains, so that the correction is conservative. */
+	   blocks, given T = Σ k_s w_s A (d_t - c_t) over the intact segments (body-1 frame) [N]: ∂W/∂ε₁ = -T∘a₁ and
+	   ∂W/∂ε₂ = (R12ᵀT)∘a₂ [N·m], a₁ and a₂ as in offsetSlip. Added to the cells' stresses, they give the reaction of the
+	   correction on the bonds that made the strains, so that the correction is conservative. */
 	template <class S>
 	void offsetSlipGradient(
 	        const Eigen::Matrix<S, 3, 1>& T,
 	        const Eigen::Matrix<S, 3, 3>& R12,
-	        const Eigen::Matrix<S, 3, 1>& delta,
+	        const Eigen::Matrix<S, 3, 1>& a1,
+	        const Eigen::Matrix<S, 3, 1>& a2,
 	        Eigen::Matrix<S, 3, 1>&       grad1,
 	        Eigen::Matrix<S, 3, 1>&       grad2)
 	{
-		grad1 = -T.cwiseProduct(delta) / 2;
-		grad2 = -(R12.transpose() * T).cwiseProduct(R12.transpose() * delta) / 2;
+		grad1 = -T.cwiseProduct(a1);
+		grad2 = (R12.transpose() * T).cwiseProduct(a2);
+	}
+
+	/// The in-plane part of a face centre's offset from a centroid, c - (c·n)n, for offsetSlip's a₁ and a₂ [m].
+	template <class S> Eigen::Matrix<S, 3, 1> alongFace(const Eigen::Matrix<S, 3, 1>& centre, const Eigen::Matrix<S, 3, 1>& n)
+	{
+		return centre - centre.dot(n) * n;
 	}
 
 } // namespace rdem

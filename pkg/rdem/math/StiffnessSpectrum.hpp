@@ -25,6 +25,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -113,10 +114,24 @@ namespace rdem {
 			return openings.size() - 1;
 		}
 
-		/// A Poisson cell: ½ εᵀK ε [J] (K [N·m]), ε_d = Σ c u_n over its terms (opening index, axis d, c [1/m]).
-		void addCell(const M3& K, const std::vector<std::tuple<size_t, int, S>>& terms)
+		/// A Poisson cell: ½ εᵀK ε [J] (K [N·m]), ε_d = Σ c u_n over its terms (opening index, axis d, c [1/m]); returns
+		/// its index (for addOffsetShear).
+		size_t addCell(const M3& K, const std::vector<std::tuple<size_t, int, S>>& terms)
 		{
 			cells.push_back({ K, terms });
+			anyTerm = true;
+			return cells.size() - 1;
+		}
+
+		/* The offset correction of a bond's intact shear springs (rdem::offsetSlip): springs of total shear stiffness
+		   k [N/m] at the face centre (arms r1, r2 [m]) measure P(d - c), P = I - nnᵀ, d = P₂ - P₁ the relative
+		   displacement of the face centre, c = A₁ε₁ - A₂ε₂ the slip of the two cells' strains ε (as addCell's terms
+		   give them; cell < 0: a block without a cell) [m]. addPointSpring holds the springs' ½k|Pd|²; this adds the
+		   rest of ½k|P(d - c)|², that is -k(Pd)·(Pc) + ½k|Pc|². */
+		void addOffsetShear(long b1, long b2, const V3& r1, const V3& r2, const V3& n, S k, long cell1, const M3& A1, long cell2, const M3& A2)
+		{
+			if (k == 0 || (cell1 < 0 && cell2 < 0)) return;
+			offsets.push_back({ b1, b2, r1, r2, n, k, cell1, cell2, A1, A2 });
 			anyTerm = true;
 		}
 
@@ -144,14 +159,26 @@ namespace rdem {
 			std::vector<S> un(openings.size());
 			for (size_t q = 0; q < openings.size(); ++q)
 				un[q] = openingOf(openings[q], x);
-			for (const auto& c : cells) {
-				V3 eps = V3::Zero();
-				for (const auto& t : c.terms)
-					eps[std::get<1>(t)] += std::get<2>(t) * un[std::get<0>(t)];
-				const V3 sigma = c.K * eps;
-				for (const auto& t : c.terms)
-					addOpeningForce(openings[std::get<0>(t)], std::get<2>(t) * sigma[std::get<1>(t)], y);
+			std::vector<V3> eps(cells.size(), V3::Zero()), sigma(cells.size()); // per cell: ε and ∂W/∂ε
+			for (size_t i = 0; i < cells.size(); ++i) {
+				for (const auto& t : cells[i].terms)
+					eps[i][std::get<1>(t)] += std::get<2>(t) * un[std::get<0>(t)];
+				sigma[i] = cells[i].K * eps[i];
 			}
+			for (const auto& o : offsets) {
+				const M3 P = M3::Identity() - o.n * o.n.transpose();
+				V3       c = V3::Zero();
+				if (o.cell1 >= 0) c += o.A1 * eps[size_t(o.cell1)];
+				if (o.cell2 >= 0) c -= o.A2 * eps[size_t(o.cell2)];
+				const V3 Pc = P * c, e = P * (pointDisplacement(x, o.b2, o.r2) - pointDisplacement(x, o.b1, o.r1)) - Pc;
+				addPointForce(o.b2, o.r2, -o.k * Pc, y); // ∂/∂d of -k(Pd)·(Pc)
+				addPointForce(o.b1, o.r1, o.k * Pc, y);
+				if (o.cell1 >= 0) sigma[size_t(o.cell1)] -= o.k * (o.A1.transpose() * e); // ∂/∂c = -k P(d - c)
+				if (o.cell2 >= 0) sigma[size_t(o.cell2)] += o.k * (o.A2.transpose() * e);
+			}
+			for (size_t i = 0; i < cells.size(); ++i)
+				for (const auto& t : cells[i].terms)
+					addOpeningForce(openings[std::get<0>(t)], std::get<2>(t) * sigma[i][std::get<1>(t)], y);
 		}
 
 		/// K as a dense matrix (for tests on small systems).
@@ -182,13 +209,21 @@ namespace rdem {
 			M3                                      K;
 			std::vector<std::tuple<size_t, int, S>> terms;
 		};
-		std::vector<M6>      diag;
-		std::vector<Link>    pairs;
-		std::vector<M6>      offDiag;
-		std::vector<Element> elements;
-		std::vector<Opening> openings;
-		std::vector<Cell>    cells;
-		bool                 anyTerm = false;
+		struct OffsetShear {
+			long b1, b2;
+			V3   r1, r2, n;
+			S    k;
+			long cell1, cell2;
+			M3   A1, A2;
+		};
+		std::vector<M6>          diag;
+		std::vector<Link>        pairs;
+		std::vector<M6>          offDiag;
+		std::vector<Element>     elements;
+		std::vector<Opening>     openings;
+		std::vector<Cell>        cells;
+		std::vector<OffsetShear> offsets;
+		bool                     anyTerm = false;
 
 		/// J_aᵀ K_s J_b, J = [I, -[r]×] the map from a body's (u, θ) to the displacement of the material point at arm r.
 		static M6 jtkj(const M3& Ks, const V3& ra, const V3& rb)
@@ -211,6 +246,19 @@ namespace rdem {
 		{
 			using CV3 = Eigen::Map<const V3>;
 			return o.n.dot(CV3(x + 6 * o.b2) - CV3(x + 6 * o.b1)) + o.a2.dot(CV3(x + 6 * o.b2 + 3)) - o.a1.dot(CV3(x + 6 * o.b1 + 3));
+		}
+		/// The displacement u + θ×r of body b's material point at arm r, linearised.
+		static V3 pointDisplacement(const S* x, long b, const V3& r)
+		{
+			using CV3 = Eigen::Map<const V3>;
+			return CV3(x + 6 * b) + CV3(x + 6 * b + 3).cross(r);
+		}
+		/// Adds the generalised forces (F, r×F) of a force F at body b's material point at arm r to y.
+		static void addPointForce(long b, const V3& r, const V3& F, S* y)
+		{
+			using MV3 = Eigen::Map<V3>;
+			MV3(y + 6 * b) += F;
+			MV3(y + 6 * b + 3) += r.cross(F);
 		}
 		/// Adds the generalised forces of a normal force F along the opening's gradient (∂u_n/∂x · F) to y.
 		static void addOpeningForce(const Opening& o, S F, S* y)
