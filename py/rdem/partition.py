@@ -22,7 +22,7 @@ Typical use::
     parts = bisect([(0.1, 0, 0), (0.3, 0, 0), (0.5, 0, 0), (0.7, 0, 0)], 2)   # [0, 0, 1, 1]
 """
 
-__all__ = ['bisect', 'counts', 'refusals']
+__all__ = ['bisect', 'counts', 'neighbourhood', 'refusals']
 
 
 def _cut(order, coord, wanted, tol):
@@ -91,6 +91,36 @@ def counts(parts, n):
 	for p in parts:
 		c[p] += 1
 	return c
+
+
+def neighbourhood(parts, pairs, part, layers=2):
+	"""Indices of the blocks of subdomain ``part`` and of every block within ``layers`` bonds of them, sorted: what a rank
+	makes in a distributed set-up (mpy's ``DISTRIBUTED_INSERT``, :class:`rdem.distributed.PerRank`). One layer gives the
+	rank's blocks all their bonds; the second gives each block of the first layer (a ghost after mpy's split) all of its
+	bonds as well, so that the Poisson cells built on the rank (:yref:`RdemPoissonEngine` ``.build``), which take every
+	bond of a block, are the serial ones for the rank's blocks and its ghosts, and with them the cell coefficients of the
+	bonds between the two.
+
+	:param parts: subdomain of each block (a list indexed by block).
+	:param pairs: bonded pairs ``(i, j)`` of block indices.
+	:param part: the subdomain whose neighbourhood to take.
+	:param layers: bonds to go out from the subdomain's blocks (an integer >= 0).
+	:raises ValueError: ``layers`` not an integer >= 0, or a pair naming a block outside ``parts``."""
+	if not (isinstance(layers, int) and layers >= 0):
+		raise ValueError('layers = %r: must be an integer >= 0' % (layers, ))
+	n = len(parts)
+	near = [[] for _ in range(n)]
+	for i, j in pairs:
+		if not (0 <= i < n and 0 <= j < n):
+			raise ValueError('pairs: (%r, %r) names a block outside the %d of parts' % (i, j, n))
+		near[i].append(j)
+		near[j].append(i)
+	chosen = set(k for k in range(n) if parts[k] == part)
+	front = chosen
+	for _ in range(layers):
+		front = set(j for i in front for j in near[i]) - chosen
+		chosen |= front
+	return sorted(chosen)
 
 
 def refusals(f):
