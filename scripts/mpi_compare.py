@@ -22,8 +22,10 @@ import os
 import sys
 
 parser = argparse.ArgumentParser(prog='yade scripts/mpi_compare.py', description=__doc__.split('\n\n')[0])
-parser.add_argument('--scene', choices=['cube', 'wall'], default='cube',
-                    help="cube: the paper's compression cube (default); wall: a running-bond wall, cells, total-stress failure")
+parser.add_argument('--scene', choices=['cube', 'wall', 'bigwall'], default='cube',
+                    help="cube: the paper's compression cube (default); wall: a running-bond wall, cells, total-stress failure; bigwall: the "
+                    "benchmarks' wall (rdem.scenes.runningBondWall: under gravity on a fixed base beam, which stays on the master under --mpi)")
+parser.add_argument('--wall-blocks', type=float, default=1000, help='bigwall: about how many blocks (default 1000)')
 parser.add_argument('--blocks', type=int, default=10, help='cube: blocks per edge (default 10, as in the paper)')
 parser.add_argument('--poisson', choices=['off', 'hex8', 'cells'], default='cells',
                     help="Poisson effect: off (springs only), hex8 (the paper's elements), cells (consistent formulation; default)")
@@ -48,8 +50,10 @@ parser.add_argument('--no-exchange', action='store_true', help='RdemGhostExchang
 parser.add_argument('--out', default='output/mpi/result.json', help='result file (default output/mpi/result.json)')
 parser.add_argument('--compare', nargs=2, metavar=('A', 'B'), help='compare two result files (plain python3, no YADE)')
 args = parser.parse_args(sys.argv[1:])
-if args.per_rank and not (args.mpi and args.scene == 'wall'):
-	parser.error('--per-rank: only the wall (--scene wall) is made per rank, and only on mpy (--mpi)')
+if args.per_rank and not (args.mpi and args.scene != 'cube'):
+	parser.error('--per-rank: only the walls (--scene wall, bigwall) are made per rank, and only on mpy (--mpi)')
+if args.scene == 'bigwall' and not args.dt > 0:
+	parser.error('--scene bigwall needs --dt (a fixed step: RdemTimeStepper\'s automatic step is not the same on mpy, doc/mpi.md)')
 if args.per_rank and not args.dt > 0:
 	parser.error("--per-rank needs --dt: RdemTimeStepper's estimate at set-up is of the whole scene, which no rank holds (take the serial run's dt)")
 if min(args.wall) < 2:
@@ -147,11 +151,32 @@ def wall():
 	return w.ids, w.made
 
 
-perRank = None
+def bigwall():
+	"""rdem.scenes.runningBondWall of about ``--wall-blocks`` blocks at the fixed step ``--dt``; its base beam stays on the
+	master under --mpi (as scripts/mpi_scaling.py runs it); contact detection from the first step (``--contacts``
+	applies to the serial run: mpy detects contacts from its split)."""
+	from yade.rdem import scenes
+	global perRank, master
+	if args.per_rank:
+		from yade.rdem import distributed
+		perRank = distributed.PerRank(master=lambda layout: [b for u in layout.beams() if layout.units[u].piece == 'base' for b in layout.units[u].blocks],
+		                              layers=args.layers)
+	w = scenes.runningBondWall(args.wall_blocks, dt=args.dt, only=perRank)
+	if perRank is not None:
+		perRank.assign(w['ids'])
+	if args.contacts == 'always':
+		build.contactGate().open = True
+	master = w['base']
+	return w['ids'], w['made']
+
+
+perRank, master = None, ()
 if args.scene == 'cube':
 	ids = made = cube()
-else:
+elif args.scene == 'wall':
 	ids, made = wall()
+else:
+	ids, made = bigwall()
 O.trackEnergy = args.energy
 start = {i: O.bodies[i].state.pos for i in made}
 
@@ -160,7 +185,7 @@ if args.mpi:
 	from yade import mpy
 	from yade.rdem import distributed
 	mpy.VERBOSE_OUTPUT = False
-	perWorker = distributed.prepare(exchange=not args.no_exchange, perRank=perRank)
+	perWorker = distributed.prepare(exchange=not args.no_exchange, perRank=perRank, master=master)
 	rank = mpy.rank
 
 
@@ -198,8 +223,8 @@ def record(ids):
 
 
 def setUp(ids):
-	"""The Poisson cells of the blocks ``ids`` and the bonds of which they hold the body of lower id (each bond once over
-	the ranks), as the set-up made them (float.hex): a cell's volume, stiffness and condensation, a bond's cell
+	"""The Poisson cells of the blocks ``ids`` and the bonds of which they hold the body of higher id (each bond once over
+	the ranks, on a worker: the master keeps only fixed bodies, and no bonds after mpy's split), as the set-up made them (float.hex): a cell's volume, stiffness and condensation, a bond's cell
 	coefficients, spring weights and centroid offset."""
 	from yade.wrapper import RdemPhys
 	hexes = lambda v: [float(x).hex() for x in v]
@@ -209,7 +234,7 @@ def setUp(ids):
 		st = O.bodies[i].state
 		cells[str(i)] = [float(st.cellVolume).hex()] + matrix(st.cellStiffness) + matrix(st.cellCondensation)
 		for I in O.interactions.withBody(i):
-			if I.isReal and isinstance(I.phys, RdemPhys) and min(I.id1, I.id2) == i:
+			if I.isReal and isinstance(I.phys, RdemPhys) and max(I.id1, I.id2) == i:
 				p = I.phys
 				bonds['%d-%d' % (I.id1, I.id2)] = hexes([p.cellCoef1, p.cellCoef2, p.weightNormal, p.weightShear]) + hexes(p.centroidOffset)
 	return cells, bonds
@@ -237,10 +262,10 @@ if args.mpi:
 	traffic = mpy.comm.gather(bytesPerStep(), root=0)
 	mine = [i for i in ids if i < len(O.bodies) and O.bodies[i] is not None and O.bodies[i].subdomain == rank]
 	parts = mpy.comm.gather(record(mine), root=0)
-	setUps = mpy.comm.gather(setUp(mine) if args.scene == 'wall' else ({}, {}), root=0)
+	setUps = mpy.comm.gather(setUp(mine) if args.scene != 'cube' else ({}, {}), root=0)
 else:
 	parts = [record(ids)]
-	setUps = [setUp(ids) if args.scene == 'wall' else ({}, {})]
+	setUps = [setUp(ids) if args.scene != 'cube' else ({}, {})]
 if rank == 0:
 	blocks, cells, bonds = {}, {}, {}
 	for p, (c, b) in zip(parts, setUps):
@@ -250,7 +275,7 @@ if rank == 0:
 	if len(blocks) != len(ids):
 		raise RuntimeError('mpi_compare: %d of %d blocks gathered' % (len(blocks), len(ids)))
 	res = dict(input=vars(args), dt=O.dt, steps=args.steps, ranks=len(parts), blocks=blocks, breaks=finalBreaks, history=history, energy=energy)
-	if args.scene == 'wall':
+	if args.scene != 'cube':
 		res.update(cells=cells, bonds=bonds)
 	if args.mpi:
 		res['blocksPerWorker'] = perWorker
