@@ -18,8 +18,10 @@ rdem.distributed.prepare (coordinate bisection; a wall taller than long is cut b
 loop of O.step() on every rank between two barriers (O.step runs mpy's engines: the states' exchange, the ghost
 exchange, the collision check; O.run would add up to 40 ms of polling per window), after mpy.mpirun(warm-up), which
 splits the scene. Every rank builds the whole scene and mpy then replaces the workers' scenes by the master's (mpy's
-default; not its DISTRIBUTED_INSERT): the peak resident set of a rank holds the whole scene at least once, the
-resident set after the run only what the rank keeps.
+default): the peak resident set of a rank holds the whole scene at least once, the resident set after the run only
+what the rank keeps. With --master-builds only the master builds it; with --per-rank each rank makes only its own
+blocks and those within two bonds of them (rdem.distributed.PerRank, mpy's DISTRIBUTED_INSERT): no rank holds the
+whole wall.
 
 Writes OUT/results.json (every round's figures), OUT/scaling-mpi.png and, with --doc, the markdown tables of
 doc/scaling-mpi.md between the markers it finds there (the prose around them is kept).
