@@ -233,13 +233,16 @@ def localBreakCounts(counted=lambda id1, id2: True):
 
 def breakCounts():
 	"""(tension, shear): restoring springs broken so far over all ranks, each bond counted once, on the rank that owns its
-	body of lower id (a bond across a subdomain boundary exists on two ranks, and each rank's
-	:yref:`Law2_RdemGeom_RdemPhys_FaceSprings.tensionBreaks` counts it). Collective: call it on every rank."""
+	body of lower id, or the other body's if the master owns that one (a bond across a subdomain boundary exists on two
+	ranks, and each rank's :yref:`Law2_RdemGeom_RdemPhys_FaceSprings.tensionBreaks` counts it; the master keeps its fixed
+	bodies but none of their bonds). Collective: call it on every rank."""
 	from yade import mpy
 
 	def mine(id1, id2):
-		b = O.bodies[min(id1, id2)]
-		return b is not None and b.subdomain == mpy.rank
+		a, b = O.bodies[min(id1, id2)], O.bodies[max(id1, id2)]
+		if a is None or b is None:
+			return False
+		return (a.subdomain if a.subdomain != 0 else b.subdomain) == mpy.rank
 
 	tension, shear = localBreakCounts(mine)
 	return mpy.comm.allreduce(tension), mpy.comm.allreduce(shear)
