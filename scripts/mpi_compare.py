@@ -153,7 +153,8 @@ def wall():
 
 def bigwall():
 	"""rdem.scenes.runningBondWall of about ``--wall-blocks`` blocks at the fixed step ``--dt``; its base beam stays on the
-	master under --mpi (as scripts/mpi_scaling.py runs it); contact detection from the first step (``--contacts``
+	master under --mpi (as scripts/mpi_scaling.py runs it), without a Poisson cell (which rdem.distributed.check refuses
+	on the master), serially too; contact detection from the first step (``--contacts``
 	applies to the serial run: mpy detects contacts from its split)."""
 	from yade.rdem import scenes
 	global perRank, master
@@ -161,7 +162,7 @@ def bigwall():
 		from yade.rdem import distributed
 		perRank = distributed.PerRank(master=lambda layout: [b for u in layout.beams() if layout.units[u].piece == 'base' for b in layout.units[u].blocks],
 		                              layers=args.layers)
-	w = scenes.runningBondWall(args.wall_blocks, dt=args.dt, only=perRank)
+	w = scenes.runningBondWall(args.wall_blocks, dt=args.dt, only=perRank, beamCell=False)
 	if perRank is not None:
 		perRank.assign(w['ids'])
 	if args.contacts == 'always':

@@ -98,10 +98,12 @@ def rssMB():
 
 # --------------------------------------------------------------------------------------------------- one run (in YADE)
 def buildWall(blocks, only=None):
-	"""The bigwall case of scripts/benchmark.py (rdem.scenes.runningBondWall), at the fixed --dt if one is given; with
+	"""The bigwall case of scripts/benchmark.py (rdem.scenes.runningBondWall, its base beam without a Poisson cell), at the fixed --dt if one is given; with
 	``only`` (an rdem.distributed.PerRank), the blocks it chooses."""
 	from yade.rdem import scenes
-	return scenes.runningBondWall(blocks, dt=args.dt if args.dt > 0 else None, only=only)
+	# the base beam stays on the master (rdem.distributed.prepare(master=)), which must hold no Poisson cell: without one
+	# in every run, serial ones too, so that all run the same scene
+	return scenes.runningBondWall(blocks, dt=args.dt if args.dt > 0 else None, only=only, beamCell=False)
 
 
 def child():

@@ -120,14 +120,17 @@ class PerRank:
 
 def features():
 	"""What the scene has that matters for a distributed run (the keys of :func:`rdem.partition.refusals`)."""
-	f = dict(others=[], masterMoving=[], hex8=0, cells=0, exchange=False, breakable=False)
+	f = dict(others=[], masterMoving=[], masterCells=[], hex8=0, cells=0, exchange=False, breakable=False)
 	for b in O.bodies:
 		if b is None or getattr(b, 'isSubdomain', False):  # (a YADE without MPI has neither attribute: all on the master)
 			continue
 		if not isinstance(b.shape, RdemBlock):
 			f['others'].append(b.id)
-		elif getattr(b, 'subdomain', 0) == 0 and not _fixed(b):
-			f['masterMoving'].append(b.id)
+		elif getattr(b, 'subdomain', 0) == 0:
+			if not _fixed(b):
+				f['masterMoving'].append(b.id)
+			if getattr(b.state, 'cellVolume', 0) > 0:
+				f['masterCells'].append(b.id)
 	for e in O.engines:
 		if isinstance(e, RdemPoissonEngine) and not e.dead:
 			f['hex8'] += e.nElements

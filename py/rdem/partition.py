@@ -127,7 +127,8 @@ def refusals(f):
 	"""What keeps a scene from running on mpy identical to the serial run, as a list of messages (empty: it can run).
 
 	``f`` is a dict of what the scene has (read by :func:`rdem.distributed.features`): ``others`` (ids of bodies that are
-	not blocks), ``masterMoving`` (ids on the master that are not fixed), ``hex8`` (the paper's hexahedra),
+	not blocks), ``masterMoving`` (ids on the master that are not fixed), ``masterCells`` (ids on the master with a
+	Poisson cell), ``hex8`` (the paper's hexahedra),
 	``cells`` (blocks with a Poisson cell), ``exchange`` (an :yref:`RdemGhostExchange` in the engines), ``breakable`` (springs that can break). Missing keys count as absent."""
 	out = []
 	if f.get('others'):
@@ -135,6 +136,11 @@ def refusals(f):
 	if f.get('masterMoving'):
 		out.append('bodies on the master (subdomain 0) that move (ids %s...): mpy sends the master\'s states to no worker, so only fixed '
 		           'bodies (all DOFs blocked, at rest) may stay there' % (sorted(f['masterMoving'])[:5], ))
+	if f.get('masterCells'):
+		out.append('bodies on the master (subdomain 0) with a Poisson cell (ids %s...): a cell\'s strain sums all its bonds, which mpy leaves '
+		           'on the workers of the blocks they join, and RdemGhostExchange does not gather them (each worker would take the strain '
+		           'of its own part); build the cells without them (RdemPoissonEngine.build(ids) without the master\'s) or give them to a '
+		           'worker' % (sorted(f['masterCells'])[:5], ))
 	if f.get('cells') and not f.get('exchange'):
 		out.append('%d Poisson cells without an RdemGhostExchange: the strains of ghost blocks would come from the bonds the rank has, '
 		           'not from all of theirs (rdem.distributed.prepare inserts it)' % f['cells'])

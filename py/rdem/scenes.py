@@ -362,7 +362,7 @@ class RockingBlock:
 		return t
 
 
-def runningBondWall(blocks, dt=None, only=None):
+def runningBondWall(blocks, dt=None, only=None, beamCell=True):
 	"""A running-bond brick wall of about ``blocks`` blocks standing on a fixed base beam under gravity: the large wall
 	of the benchmarks (``scripts/benchmark.py --cases bigwall``, ``scripts/mpi_scaling.py``).
 
@@ -375,6 +375,8 @@ def runningBondWall(blocks, dt=None, only=None):
 	:param dt: a fixed time step [s], or None for :yref:`RdemTimeStepper`'s.
 	:param only: make only some blocks (:func:`rdem.masonry.wall`'s ``only``: a set-up per rank on YADE's MPI,
 	    :class:`rdem.distributed.PerRank`); the Poisson cells are built on the blocks made.
+	:param beamCell: give the base beam a Poisson cell too (default, the benchmarks' scene); ``False`` on YADE's MPI when
+	    the beam stays on the master, whose cells :func:`rdem.distributed.check` refuses.
 	:return: dict ``perCourse``, ``courses`` (bricks), ``ids`` (the wall's blocks), ``base`` (the fixed beam's blocks),
 	    ``made`` (the blocks made in this scene: ``ids``, or those ``only`` chose).
 	"""
@@ -395,7 +397,8 @@ def runningBondWall(blocks, dt=None, only=None):
 	w = masonry.wall(perCourse * 0.26 - 0.01, courses * 0.065 - 0.01, 0.12, blocksPerBrick=(2, 1, 1), baseBeam=0.1, brickMaterial=brick, jointMaterial=joint,
 	                 only=only)
 	build.poissonEngine().elements = 'cells'
-	build.poissonEngine().build(w.made)
+	base = set(w.beams['base'])
+	build.poissonEngine().build(w.made if beamCell else [i for i in w.made if i not in base])
 	for i in w.beams['base']:
 		if i < len(O.bodies) and O.bodies[i] is not None:
 			O.bodies[i].state.blockedDOFs = 'xyzXYZ'

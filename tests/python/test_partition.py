@@ -149,6 +149,7 @@ class Refusals(unittest.TestCase):
 
 	def test_each_refusal_names_what(self):
 		for f, what in ((dict(others=[7]), 'not RdemBlock'), (dict(masterMoving=[3]), 'only fixed'), (dict(cells=10), 'RdemGhostExchange'),
+		                (dict(masterCells=[0], cells=10, exchange=True), 'with a Poisson cell'),
 		                (dict(hex8=5), 'hexahedral')):
 			r = refusals(f)
 			self.assertEqual(len(r), 1, f)
