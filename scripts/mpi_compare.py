@@ -1,7 +1,10 @@
 # -*- coding: utf-8 -*-
 """A scene serially or on YADE's MPI (yade.mpy): block positions and break counts after a number of steps, for the
-comparison of doc/mpi.md. Scenes: the paper's compression cube (rdem.scenes.CompressionTest), or a running-bond wall
-with Poisson cells and springs that break on the total stress of their face, compressed between two beams.
+comparison of doc/mpi.md. Scenes: the paper's compression cube (rdem.scenes.CompressionTest), a running-bond wall
+with Poisson cells and springs that break on the total stress of their face, compressed between its fixed bottom and
+moving top courses (--per-rank: each rank makes only its part, rdem.distributed.PerRank), or the benchmarks' wall under
+gravity on a base beam (--scene bigwall, rdem.scenes.runningBondWall). A scene that cannot run on mpy yet (the paper's
+hexahedra: --poisson hex8) is refused by rdem.distributed.check with the reason.
 
     build-mpi/bin/yade -n -x scripts/mpi_compare.py --poisson cells --contacts always --steps 200 --out output/mpi/serial.json
     mpiexec --allow-run-as-root --oversubscribe -n 3 build-mpi/bin/yade -n -x scripts/mpi_compare.py --poisson cells --steps 200 --mpi --out output/mpi/mpi.json
@@ -11,9 +14,11 @@ Needs the plugin built against YADE with MPI (tools/setup.sh --mpi); the serial 
 Writes a JSON file: input, steps, O.dt, break counts (tension, shear; with --every N also their history), with --mpi
 the blocks, ghosts, bytes sent per step (mpy's states and RdemGhostExchange's) and bonds across the cut put back
 (RdemBondKeeper) of each rank, and per block
-id its position and orientation (exact: float.hex) and its displacement from the start. --compare prints the largest
-position difference of two such files, absolute and over the largest displacement, whether they are identical bit for
-bit and their break counts (exit status 1 unless identical with the same break counts).
+id its position and orientation (exact: float.hex) and its displacement from the start; for the walls, the set-up's
+Poisson cells and bonds (float.hex). Written once, on rank 0; so is --vtk (the blocks at the end, one ParaView file
+gathered from every rank). --compare prints the largest position difference of two such files, absolute and over the
+largest displacement, whether they are identical bit for bit, their break counts and, for the walls, how many cells
+and bonds differ (exit status 1 unless identical with the same break counts, cells and bonds).
 """
 import argparse
 import json
@@ -48,6 +53,7 @@ parser.add_argument('--layers', type=int, default=2,
 parser.add_argument('--energy', action='store_true', help='track the energies (O.trackEnergy) and record them, summed over ranks under --mpi')
 parser.add_argument('--no-exchange', action='store_true', help='RdemGhostExchange off (wrong at the subdomain boundary: for the test)')
 parser.add_argument('--out', default='output/mpi/result.json', help='result file (default output/mpi/result.json)')
+parser.add_argument('--vtk', default='', help='also write the blocks at the end to this ParaView file (.vtu), once (on rank 0, gathered under --mpi)')
 parser.add_argument('--compare', nargs=2, metavar=('A', 'B'), help='compare two result files (plain python3, no YADE)')
 args = parser.parse_args(sys.argv[1:])
 if args.per_rank and not (args.mpi and args.scene != 'cube'):
@@ -259,6 +265,13 @@ def bytesPerStep():
 energy = None
 if args.energy:
 	energy = distributed.energies() if args.mpi else dict(O.energy.items())
+if args.vtk:  # the blocks of every rank in one file, written once
+	from yade.rdem import export
+	mine = [i for i in ids if i < len(O.bodies) and O.bodies[i] is not None and (not args.mpi or O.bodies[i].subdomain == rank)]
+	part = [(i, rank, export.blockCorners(O.bodies[i])) for i in mine]
+	parts = mpy.comm.gather(part, root=0) if args.mpi else [part]
+	if rank == 0:
+		export.writeBlocks(args.vtk, [b for p in parts for b in p])
 if args.mpi:
 	traffic = mpy.comm.gather(bytesPerStep(), root=0)
 	mine = [i for i in ids if i < len(O.bodies) and O.bodies[i] is not None and O.bodies[i].subdomain == rank]
