@@ -231,11 +231,19 @@ def record(ids):
 
 def setUp(ids):
 	"""The Poisson cells of the blocks ``ids`` and the bonds of which they hold the body of higher id (each bond once over
-	the ranks, on a worker: the master keeps only fixed bodies, and no bonds after mpy's split), as the set-up made them (float.hex): a cell's volume, stiffness and condensation, a bond's cell
-	coefficients, spring weights and centroid offset."""
+	the ranks, on a worker: the master keeps only fixed bodies, and no bonds after mpy's split), as the set-up made them
+	(float.hex): a cell's volume, stiffness and condensation, a bond's cell coefficients, spring weights and whichever of
+	its offset correction's inputs the plugin has (the centroid offset, or the flag and the face centres)."""
 	from yade.wrapper import RdemPhys
-	hexes = lambda v: [float(x).hex() for x in v]
 	matrix = lambda m: [float(m[i, j]).hex() for i in range(3) for j in range(3)]
+
+	def hexes(obj, names):
+		out = []
+		for name in names:
+			if hasattr(obj, name):
+				v = getattr(obj, name)
+				out += [float(x).hex() for x in v] if hasattr(v, '__len__') else [float(v).hex()]
+		return out
 	cells, bonds = {}, {}
 	for i in ids:
 		st = O.bodies[i].state
@@ -243,7 +251,8 @@ def setUp(ids):
 		for I in O.interactions.withBody(i):
 			if I.isReal and isinstance(I.phys, RdemPhys) and max(I.id1, I.id2) == i:
 				p = I.phys
-				bonds['%d-%d' % (I.id1, I.id2)] = hexes([p.cellCoef1, p.cellCoef2, p.weightNormal, p.weightShear]) + hexes(p.centroidOffset)
+				bonds['%d-%d' % (I.id1, I.id2)] = (hexes(p, ('cellCoef1', 'cellCoef2', 'weightNormal', 'weightShear', 'centroidOffset', 'offsetCorrection')) +
+				                                   hexes(I.geom, ('faceCentre1', 'faceCentre2')))
 	return cells, bonds
 
 

@@ -114,7 +114,7 @@ class Cube(unittest.TestCase):
 		# about 4000 blocks (50 bricks by 80 courses, one block per brick), each rank making only its bricks and those
 		# within two bonds of them (rdem.distributed.PerRank, mpy's DISTRIBUTED_INSERT): the same cells and bonds as the
 		# serial set-up (every cell's volume, stiffness and condensation, every bond's cell coefficients, spring weights
-		# and centroid offset, bit for bit), and the same run bit for bit, cracks included, at the serial run's step
+		# and offset correction's inputs, bit for bit), and the same run bit for bit, cracks included, at the serial run's step
 		size = ['--wall', '50', '80']
 		serial = run(os.path.join(self.tmp, 'big-serial.json'), 'cells', mpi=False, scene='wall', steps=150, every=50, rate=2, extra=size)
 		dt = ['--dt', repr(serial['dt'])]
