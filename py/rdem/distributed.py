@@ -14,7 +14,7 @@ A large scene need not exist on one rank: with :class:`PerRank` each rank makes 
 neighbours (mpy's distributed insertion, ``DISTRIBUTED_INSERT``)::
 
     part = distributed.PerRank(master=lambda layout: [b for u in layout.beams() for b in layout.units[u].blocks])
-    wall = scenes.runningBondWall(1e5, only=part)   # or rdem.masonry.wall(..., only=part)
+    wall = scenes.runningBondWall(1e5, only=part, beamCell=False)   # or rdem.masonry.wall(..., only=part)
     part.assign(wall['ids'])
     distributed.prepare(perRank=part)
     mpy.mpirun(1000)
