@@ -18,8 +18,10 @@ rdem.distributed.prepare (coordinate bisection; a wall taller than long is cut b
 loop of O.step() on every rank between two barriers (O.step runs mpy's engines: the states' exchange, the ghost
 exchange, the collision check; O.run would add up to 40 ms of polling per window), after mpy.mpirun(warm-up), which
 splits the scene. Every rank builds the whole scene and mpy then replaces the workers' scenes by the master's (mpy's
-default; not its DISTRIBUTED_INSERT): the peak resident set of a rank holds the whole scene at least once, the
-resident set after the run only what the rank keeps.
+default): the peak resident set of a rank holds the whole scene at least once, the resident set after the run only
+what the rank keeps. With --master-builds only the master builds it; with --per-rank each rank makes only its own
+blocks and those within two bonds of them (rdem.distributed.PerRank, mpy's DISTRIBUTED_INSERT): no rank holds the
+whole wall.
 
 Writes OUT/results.json (every round's figures), OUT/scaling-mpi.png and, with --doc, the markdown tables of
 doc/scaling-mpi.md between the markers it finds there (the prose around them is kept).
@@ -57,6 +59,9 @@ parser.add_argument('--launcher', default=os.path.join(ROOT, 'build-mpi', 'bin',
 parser.add_argument('--out', default=os.path.join(ROOT, 'output', 'mpi-scaling'), help='output directory (default output/mpi-scaling)')
 parser.add_argument('--master-builds', action='store_true',
                     help="only the master builds the scene, the workers receive it from mpy's split (default: every rank builds it, as scripts/mpi_compare.py does)")
+parser.add_argument('--per-rank', action='store_true',
+                    help="each rank makes only its own blocks and those within two bonds of them (rdem.distributed.PerRank, mpy's DISTRIBUTED_INSERT): "
+                    "no rank holds the whole wall")
 parser.add_argument('--dt', type=float, default=-1, help="O.dt [s] (default -1: RdemTimeStepper's, the minimum over the ranks on mpy)")
 parser.add_argument('--tables-only', action='store_true', help="write the tables, figure and projection again from OUT/results.json, without running")
 parser.add_argument('--doc', default='', help='markdown file whose generated tables to rewrite (e.g. doc/scaling-mpi.md)')
@@ -65,6 +70,8 @@ parser.add_argument('--mpi', action='store_true', help=argparse.SUPPRESS)
 parser.add_argument('--contacts-always', action='store_true', help=argparse.SUPPRESS)
 parser.add_argument('--result', default='', help=argparse.SUPPRESS)
 args = parser.parse_args(sys.argv[1:])
+if args.master_builds and args.per_rank:
+	parser.error('--master-builds and --per-rank: one way of building the scene at a time')
 for name in ('rounds', 'steps', 'windows'):
 	if getattr(args, name) < 1:
 		parser.error('--%s %d: must be >= 1' % (name, getattr(args, name)))
@@ -90,10 +97,13 @@ def rssMB():
 
 
 # --------------------------------------------------------------------------------------------------- one run (in YADE)
-def buildWall(blocks):
-	"""The bigwall case of scripts/benchmark.py (rdem.scenes.runningBondWall), at the fixed --dt if one is given."""
+def buildWall(blocks, only=None):
+	"""The bigwall case of scripts/benchmark.py (rdem.scenes.runningBondWall, its base beam without a Poisson cell), at the fixed --dt if one is given; with
+	``only`` (an rdem.distributed.PerRank), the blocks it chooses."""
 	from yade.rdem import scenes
-	return scenes.runningBondWall(blocks, dt=args.dt if args.dt > 0 else None)
+	# the base beam stays on the master (rdem.distributed.prepare(master=)), which must hold no Poisson cell: without one
+	# in every run, serial ones too, so that all run the same scene
+	return scenes.runningBondWall(blocks, dt=args.dt if args.dt > 0 else None, only=only, beamCell=False)
 
 
 def child():
@@ -108,14 +118,22 @@ def child():
 			mpy.VERBOSE_OUTPUT = False
 			mpy.collider = distributed._SceneCollider()
 			return worker()
-	layout = buildWall(args.blocks)
-	nBlocks = len(O.bodies)
+	perRank = None
+	if args.mpi and args.per_rank:  # the base beam stays on the master, as with prepare(master=base)
+		from yade.rdem import distributed
+		perRank = distributed.PerRank(master=lambda layout: [b for u in layout.beams() if layout.units[u].piece == 'base' for b in layout.units[u].blocks])
+	layout = buildWall(args.blocks, perRank)
+	nBlocks = len(layout['ids'])
+	if perRank is not None:
+		perRank.assign(layout['ids'])
 	if args.contacts_always:
 		from yade import rdem
 		rdem.contactGate().open = True
 	base = layout.pop('base')
 	layout['baseBlocks'] = len(base)
-	return timedRun(nBlocks, layout, base, setup=time.time() - t0)
+	made = len(layout.pop('made'))
+	del layout['ids']
+	return timedRun(nBlocks, layout, base, setup=time.time() - t0, perRank=perRank, made=made)
 
 
 def worker():
@@ -123,14 +141,17 @@ def worker():
 	return timedRun(0, {}, None, setup=0.0)
 
 
-def timedRun(nBlocks, layout, base, setup):
+def timedRun(nBlocks, layout, base, setup, perRank=None, made=0):
 	from yade import O
 	rank, comm = 0, None
+	setupPeak = rssMB()[0]  # the set-up's (before mpy's split)
 	if args.mpi:
 		from yade import mpy
 		from yade.rdem import distributed
 		mpy.VERBOSE_OUTPUT = False
-		if base is not None:
+		if perRank is not None:
+			distributed.prepare(perRank=perRank)
+		elif base is not None:
 			distributed.prepare(master=base)  # the fixed base beam on the master: a beam as long as the wall would make its
 		# worker's subdomain box span the whole wall, and every block of the other worker its ghost
 		rank, comm = mpy.rank, mpy.comm
@@ -158,7 +179,7 @@ def timedRun(nBlocks, layout, base, setup):
 		walls.append(time.perf_counter() - t)
 	cpu = (time.process_time() - cpu0) / (n * args.windows)
 	peak, current = rssMB()
-	mine = dict(rank=rank, peakMB=peak, rssMB=current, cpuMsPerStep=cpu * 1e3, realInteractions=sum(1 for I in O.interactions if I.isReal),
+	mine = dict(rank=rank, peakMB=peak, rssMB=current, setupPeakMB=setupPeak, madeBlocks=made, setupSeconds=setup, cpuMsPerStep=cpu * 1e3, realInteractions=sum(1 for I in O.interactions if I.isReal),
 	            interactions=len(O.interactions.all()))
 	if args.profile:  # ms per timed step of each engine (execTime is in ns), and how often it ran
 		mine['engines'] = [[e.label or type(e).__name__, e.execTime * 1e-6 / (n * args.windows), e.execCount] for e in O.engines if e.execCount]
@@ -185,7 +206,7 @@ def timedRun(nBlocks, layout, base, setup):
 		stepper = [next((e for e in r.get('engines', []) if e[0] == 'rdemStepper'), None) for r in ranks]
 		stepper = [e for e in stepper if e]
 		res = dict(blocks=nBlocks, layout=layout, processes=len(ranks), steps=n, windows=args.windows, warmup=args.warmup, dt=O.dt, setupSeconds=setup,
-		           splitSeconds=split, windowSeconds=walls, usPerBlockStep=walls[len(walls) // 2] / n / nBlocks * 1e6,
+		           splitSeconds=split, perRank=perRank is not None, windowSeconds=walls, usPerBlockStep=walls[len(walls) // 2] / n / nBlocks * 1e6,
 		           usPerBlockStepFastest=walls[0] / n / nBlocks * 1e6, breaks=breaks, ranks=ranks)
 		if args.profile:  # RdemTimeStepper's new estimates (Lanczos) in the timed steps: their share, and the step without them
 			res['stepperRuns'] = max([e[2] for e in stepper] + [0])
@@ -208,7 +229,7 @@ def launch(config, blocks, steps, windows, warmup, tag):
 	env = dict(os.environ, OMP_NUM_THREADS='1')
 	if processes > 1:
 		cmd = ['mpiexec', '--allow-run-as-root', '--oversubscribe'] + (['--mca', 'mpi_yield_when_idle', '1'] if args.yield_when_idle else []) + ['-n', str(processes)
-		                                                                                                                                   ] + cmd + ['--mpi'] + (['--master-builds'] if args.master_builds else [])
+		                                                                                                                                   ] + cmd + ['--mpi'] + (['--master-builds'] if args.master_builds else []) + (['--per-rank'] if args.per_rank else [])
 		env = {k: v for k, v in env.items() if not k.startswith(('OMPI_', 'PMIX_'))}
 	t = time.time()
 	r = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
@@ -219,6 +240,7 @@ def launch(config, blocks, steps, windows, warmup, tag):
 	res['command'] = ' '.join(cmd)
 	res['config'] = config
 	res['masterBuilds'] = bool(args.master_builds and processes > 1)
+	res['perRank'] = bool(args.per_rank and processes > 1)
 	res['seconds'] = time.time() - t
 	return res
 
@@ -350,13 +372,20 @@ def projectionTable(p):
 	return '\n'.join(['| %.0e blocks on %d cores | |' % (p['blocks'], p['cores']), '|---|---|'] + ['| %s | %s |' % r for r in rows])
 
 
+def built(r):
+	"""How a run's scene was made, for the tables."""
+	if r['processes'] == 1:
+		return ''
+	return ', made per rank' if r.get('perRank') else ', built on the master' if r.get('masterBuilds') else ', built on every rank'
+
+
 def bigTable(runs):
 	lines = ['| run | blocks | steps timed | µs per block-step | of which RdemTimeStepper (its runs) | s per step | set-up [s] | split + warm-up [s] | rank | own blocks | ghosts | '
 	         'bytes sent per step (mpy + RdemGhostExchange) | CPU ms per step | peak RSS [MB] | RSS after [MB] |', '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
 	for r in runs:
 		for k, x in enumerate(r['ranks']):
 			st = '%.3f (%d)' % (r['stepperMsPerStep'] * 1e3 / r['blocks'], r['stepperRuns']) if 'stepperRuns' in r else '–'
-			head = ('%s | %d | %d | %.3f | %s | %.3f | %.1f | %.1f' % (label(r['config']) + (', built on the master' if r.get('masterBuilds') else ', built on every rank' if r['processes'] > 1 else ''), r['blocks'], r['steps'] * r['windows'], r['usPerBlockStep'], st,
+			head = ('%s | %d | %d | %.3f | %s | %.3f | %.1f | %.1f' % (label(r['config']) + built(r), r['blocks'], r['steps'] * r['windows'], r['usPerBlockStep'], st,
 			                                                           r['usPerBlockStep'] * r['blocks'] * 1e-6, r['setupSeconds'], r['splitSeconds'])) if k == 0 else ' | | | | | | |'
 			lines.append('| %s | %d | %s | %s | %s + %s | %.0f | %.0f | %.0f |' % (head, x['rank'], x.get('ownBlocks', r['blocks']), x.get('ghosts', 0), x.get('mpyStateBytes', 0),
 		                                                                       x.get('ghostExchangeBytes', 0), x['cpuMsPerStep'], x['peakMB'],
@@ -395,8 +424,9 @@ def driver():
 			print('mpi_scaling:   %.3f µs per block-step, peak RSS per rank %s MB (%.0f s)' % (r['usPerBlockStep'], [round(x['peakMB']) for x in r['ranks']], r['seconds']),
 			      flush=True)
 			runs.append(r)
-		new = {(r['config'], r['masterBuilds']) for r in runs}
-		old = [r for r in results.get('big', {}).get('runs', []) if (r['config'], r.get('masterBuilds', False)) not in new and r['blocks'] == runs[0]['blocks']]
+		key = lambda r: (r['config'], r.get('masterBuilds', False), r.get('perRank', False))
+		new = {key(r) for r in runs}
+		old = [r for r in results.get('big', {}).get('runs', []) if key(r) not in new and r['blocks'] == runs[0]['blocks']]
 		runs = old + runs  # other configurations or ways of building the same wall, measured before
 		results['big'] = dict(input=vars(args), runs=runs)
 		text = bigTable(runs)

@@ -10,14 +10,23 @@ each builds the scene, mpy then replaces the workers' scenes by the master's whe
     distributed.prepare()              # subdomains by bisection, bonds across the cuts kept, collider, checks
     mpy.mpirun(1000, withMerge=True)    # the master's O.bodies hold every block afterwards
 
+A large scene need not exist on one rank: with :class:`PerRank` each rank makes only its own blocks and their
+neighbours (mpy's distributed insertion, ``DISTRIBUTED_INSERT``)::
+
+    part = distributed.PerRank(master=lambda layout: [b for u in layout.beams() for b in layout.units[u].blocks])
+    wall = scenes.runningBondWall(1e5, only=part, beamCell=False)   # or rdem.masonry.wall(..., only=part)
+    part.assign(wall['ids'])
+    distributed.prepare(perRank=part)
+    mpy.mpirun(1000)
+
 Needs YADE built with MPI (``tools/setup.sh --mpi``): the plain YADE has no :yref:`Body.subdomain`.
 """
 import math
 from yade import O, Body
 from yade.wrapper import RdemBlock, RdemMat, RdemPoissonEngine, RdemCellStrainUpdater, InsertionSortCollider, InteractionLoop, Bo1_Box_Aabb
-from .partition import bisect, counts, refusals
+from .partition import bisect, counts, neighbourhood, refusals
 
-__all__ = ['assign', 'features', 'check', 'prepare', 'localBreakCounts', 'breakCounts', 'energies']
+__all__ = ['assign', 'PerRank', 'features', 'check', 'prepare', 'localBreakCounts', 'breakCounts', 'energies']
 
 
 def _fixed(b):
@@ -52,16 +61,76 @@ def assign(workers, master=()):
 	return counts(parts, workers)
 
 
+class PerRank:
+	"""Which blocks of a layout this rank makes, for a set-up on mpy in which no rank holds the whole scene (mpy's
+	``DISTRIBUTED_INSERT``; YADE's user manual, *MPI parallelization*, "Centralized versus distributed scene
+	construction"). Every rank lays out the whole scene (the boxes and their touching pairs: geometry only, no bodies),
+	cuts it into subdomains as :func:`assign` would (:func:`rdem.partition.bisect` of the block centroids, ``master``
+	blocks on rank 0), and makes only its own blocks and those within two bonds of them
+	(:func:`rdem.partition.neighbourhood`), each with the id the whole scene gives it. A bond across a cut is thus made on
+	both of its ranks from the same two blocks, as the serial set-up makes it, and :func:`prepare` keeps it through mpy's
+	split (:yref:`RdemBondKeeper`); the Poisson cells of the rank's blocks and of its ghosts are built from all their
+	bonds. mpy's split erases the blocks the rank does not own and receives its ghosts from their owners.
+
+	Pass it as ``only`` to the generator (:func:`rdem.masonry.wall`, :func:`rdem.scenes.runningBondWall`), then
+	:meth:`assign` the generator's ids and call :func:`prepare` with ``perRank=`` it.
+
+	:param master: the layout's indices of the blocks that stay on the master (fixed ones: mpy sends the master's states
+	    to no worker), or a function of the layout that returns them; default none.
+	:param workers: number of workers (default: every rank but the master).
+	:param layers: bonds out from a rank's own blocks to make (2: its ghosts with all their bonds; see
+	    :func:`rdem.partition.neighbourhood`).
+	:ivar subdomain: the subdomain of each block of the layout (after the generator called it).
+	:ivar perWorker: blocks of each worker."""
+
+	def __init__(self, master=(), workers=None, layers=2):
+		self.master, self.workers, self.layers = master, workers, layers
+		self.subdomain, self.perWorker = None, None
+
+	def __call__(self, layout):
+		from yade import mpy
+		if mpy.comm is None:
+			mpy.configure()
+		workers = mpy.numThreads - 1 if self.workers is None else self.workers
+		if workers < 1:
+			raise ValueError('workers = %r: mpy needs at least one worker besides the master (mpiexec -n 2 or more)' % (workers, ))
+		master = set(self.master(layout) if callable(self.master) else self.master)
+		n = len(layout.blocks)
+		others = [k for k in range(n) if k not in master]
+		centres = [tuple((lo[d] + hi[d]) / 2 for d in range(3)) for lo, hi in (layout.blocks[k] for k in others)]
+		self.subdomain = [0] * n
+		parts = bisect(centres, workers)
+		for k, p in zip(others, parts):
+			self.subdomain[k] = p + 1
+		self.perWorker = counts(parts, workers)
+		return neighbourhood(self.subdomain, [(p[0], p[1]) for p in layout.pairs], mpy.rank, self.layers)
+
+	def assign(self, ids):
+		"""Set :yref:`Body.subdomain` of the blocks made: ``ids`` are the generator's ids of the layout's blocks (the whole
+		scene's, :attr:`rdem.masonry.Wall.ids`), in the layout's order. Returns the blocks of each worker."""
+		if self.subdomain is None:
+			raise RuntimeError('PerRank.assign: no layout yet; pass this PerRank as only= to the generator first')
+		if len(ids) != len(self.subdomain):
+			raise ValueError('PerRank.assign: %d ids for the %d blocks of the layout' % (len(ids), len(self.subdomain)))
+		for i, p in zip(ids, self.subdomain):
+			if i < len(O.bodies) and O.bodies[i] is not None:
+				O.bodies[i].subdomain = p
+		return self.perWorker
+
+
 def features():
 	"""What the scene has that matters for a distributed run (the keys of :func:`rdem.partition.refusals`)."""
-	f = dict(others=[], masterMoving=[], hex8=0, cells=0, exchange=False, breakable=False)
+	f = dict(others=[], masterMoving=[], masterCells=[], hex8=0, cells=0, exchange=False, breakable=False)
 	for b in O.bodies:
 		if b is None or getattr(b, 'isSubdomain', False):  # (a YADE without MPI has neither attribute: all on the master)
 			continue
 		if not isinstance(b.shape, RdemBlock):
 			f['others'].append(b.id)
-		elif getattr(b, 'subdomain', 0) == 0 and not _fixed(b):
-			f['masterMoving'].append(b.id)
+		elif getattr(b, 'subdomain', 0) == 0:
+			if not _fixed(b):
+				f['masterMoving'].append(b.id)
+			if getattr(b.state, 'cellVolume', 0) > 0:
+				f['masterCells'].append(b.id)
 	for e in O.engines:
 		if isinstance(e, RdemPoissonEngine) and not e.dead:
 			f['hex8'] += e.nElements
@@ -97,7 +166,7 @@ class _SceneCollider:
 		self._engine()()
 
 
-def prepare(workers=None, master=(), exchange=True):
+def prepare(workers=None, master=(), exchange=True, perRank=None):
 	"""Make the current scene ready for :func:`yade.mpy.mpirun` on every rank: assign the blocks (:func:`assign`, to
 	``workers`` ranks, default: all but the master), put an :yref:`RdemBondKeeper` first in the engines and record the
 	bonds across the cuts (mpy's split erases them; it puts them back), insert an :yref:`RdemGhostExchange` after the
@@ -105,7 +174,9 @@ def prepare(workers=None, master=(), exchange=True):
 	for tests), a collider if there is none (mpy's parallel collision detection needs an :yref:`InsertionSortCollider`),
 	with a sweep distance (``verletDist``) of 5 % of the smallest block if it has none (mpy's ghosts are the blocks whose
 	bounding boxes overlap a subdomain's: without a sweep, blocks face to face across the cut only touch); then :func:`check`. :yref:`RdemTimeStepper` takes one step for all ranks
-	itself (the minimum of their limits). Returns the blocks per worker."""
+	itself (the minimum of their limits). With ``perRank`` (a :class:`PerRank` that chose the blocks each rank made, and
+	assigned them), the subdomains are its own and mpy inserts nothing (``mpy.DISTRIBUTED_INSERT``). Returns the blocks
+	per worker."""
 	from yade import mpy
 	if mpy.comm is None:
 		mpy.configure()
@@ -113,7 +184,15 @@ def prepare(workers=None, master=(), exchange=True):
 		workers = mpy.numThreads - 1
 	if workers < 1:
 		raise ValueError('workers = %r: mpy needs at least one worker besides the master (mpiexec -n 2 or more)' % (workers, ))
-	perWorker = assign(workers, master)
+	if perRank is None:
+		perWorker = assign(workers, master)
+	else:
+		if perRank.perWorker is None:
+			raise RuntimeError('prepare: perRank made no layout; pass it as only= to the generator and call its assign() first')
+		if len(perRank.perWorker) != workers:
+			raise ValueError('prepare: perRank cut the scene for %d workers, mpy has %d' % (len(perRank.perWorker), workers))
+		perWorker = perRank.perWorker
+		mpy.DISTRIBUTED_INSERT = True
 	from yade.wrapper import RdemBondKeeper
 	eng = [e for e in O.engines if not isinstance(e, RdemBondKeeper)]
 	keeper = RdemBondKeeper(label='rdemBondKeeper')
@@ -125,7 +204,9 @@ def prepare(workers=None, master=(), exchange=True):
 		if at is not None:
 			from yade.wrapper import RdemGhostExchange
 			eng.insert(at, RdemGhostExchange(exchange=bool(exchange), label='rdemGhosts'))
-	size = min(min(b.shape.extents) for b in O.bodies if b is not None and isinstance(b.shape, RdemBlock))  # smallest half-extent
+	size = min([min(b.shape.extents) for b in O.bodies if b is not None and isinstance(b.shape, RdemBlock)] + [float('inf')])  # smallest half-extent
+	if perRank is not None:  # each rank holds a part: the scene's smallest
+		size = mpy.comm.allreduce(size, op=mpy.MPI.MIN)
 	collider = next((e for e in eng if isinstance(e, InsertionSortCollider)), None)
 	if collider is None:
 		at = next(k for k, e in enumerate(eng) if isinstance(e, InteractionLoop))
@@ -155,13 +236,16 @@ def localBreakCounts(counted=lambda id1, id2: True):
 
 def breakCounts():
 	"""(tension, shear): restoring springs broken so far over all ranks, each bond counted once, on the rank that owns its
-	body of lower id (a bond across a subdomain boundary exists on two ranks, and each rank's
-	:yref:`Law2_RdemGeom_RdemPhys_FaceSprings.tensionBreaks` counts it). Collective: call it on every rank."""
+	body of lower id, or the other body's if the master owns that one (a bond across a subdomain boundary exists on two
+	ranks, and each rank's :yref:`Law2_RdemGeom_RdemPhys_FaceSprings.tensionBreaks` counts it; the master keeps its fixed
+	bodies but none of their bonds). Collective: call it on every rank."""
 	from yade import mpy
 
 	def mine(id1, id2):
-		b = O.bodies[min(id1, id2)]
-		return b is not None and b.subdomain == mpy.rank
+		a, b = O.bodies[min(id1, id2)], O.bodies[max(id1, id2)]
+		if a is None or b is None:
+			return False
+		return (a.subdomain if a.subdomain != 0 else b.subdomain) == mpy.rank
 
 	tension, shear = localBreakCounts(mine)
 	return mpy.comm.allreduce(tension), mpy.comm.allreduce(shear)

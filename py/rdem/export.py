@@ -30,6 +30,29 @@ def _writeVtu(path, points, cells, cellType, cellData):
 		f.write('</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n')
 
 
+def blockCorners(body):
+	"""The 8 corners of an :yref:`RdemBlock` body in the current configuration [m], in VTK's hexahedron order (the face
+	$z^-$ counter-clockwise, then $z^+$, in the block's frame)."""
+	a, b, c = body.shape.extents
+	p, q = body.state.pos, body.state.ori
+	local = [(-a, -b, -c), (a, -b, -c), (a, b, -c), (-a, b, -c), (-a, -b, c), (a, -b, c), (a, b, c), (-a, b, c)]
+	return [tuple(p + q * type(p)(*v)) for v in local]
+
+
+def writeBlocks(path, blocks):
+	"""Write the blocks as one ParaView file (``.vtu``, a hexahedron each): ``blocks`` a list of ``(id, rank, corners)``
+	(:func:`blockCorners`), for instance gathered from every rank of a run on YADE's MPI onto one (YADE's
+	``VTKRecorder`` in ``parallelMode`` writes boxes on the master only, which holds no block there). Cell data: ``id``,
+	``rank``."""
+	d = os.path.dirname(path)
+	if d:
+		os.makedirs(d, exist_ok=True)
+	blocks = sorted(blocks)
+	points = [p for _, _, corners in blocks for p in corners]
+	cells = [list(range(8 * k, 8 * k + 8)) for k in range(len(blocks))]
+	_writeVtu(path, points, cells, 12, {'id': [float(i) for i, _, _ in blocks], 'rank': [float(r) for _, r, _ in blocks]})
+
+
 class CrackExport:
 	"""Writes ``<prefix>cracks.<iter>.vtu`` (one quad per segment broken since the export was made: ``state`` 1 tension,
 	2 shear, 3 broken, mode unknown; ``released`` 1 where the whole bond has broken through and opened) and

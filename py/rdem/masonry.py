@@ -38,10 +38,12 @@ class Wall:
 	    ``'head'``, ``'collar'``, ``'mortar'`` (between mortar pieces), ``'beam'``.
 	:ivar jointOf: ``{kind: RdemJoint}`` the joint each kind of bond was made with (``None``: bonded directly).
 	:ivar layout: the :class:`rdem.wall_layout.WallLayout`.
-	:ivar nBonds: number of bonds made."""
+	:ivar nBonds: number of bonds made.
+	:ivar made: the ids of the blocks made in this scene (all of ``ids``, or those :func:`wall`'s ``only`` chose)."""
 
-	def __init__(self, layout, ids, jointOf, nBonds):
+	def __init__(self, layout, ids, jointOf, nBonds, made=None):
 		self.layout, self.ids, self.jointOf, self.nBonds = layout, ids, jointOf, nBonds
+		self.made = list(ids) if made is None else made
 		self.units = [[ids[b] for b in u.blocks] for u in layout.units]
 		self.bricks = [self.units[k] for k, u in enumerate(layout.units) if u.kind in ('brick', 'bat')]
 		self.courses = [[] for _ in range(layout.courseCount)]
@@ -147,7 +149,8 @@ def wall(length,
          jointMaterial=None,
          mortarMaterial=None,
          beamMaterial=None,
-         origin=(0, 0, 0)):
+         origin=(0, 0, 0),
+         only=None):
 	"""Build a masonry wall into the current scene: lay it out (:func:`rdem.wall_layout.wallLayout`, whose arguments the
 	first twelve are), append its blocks to ``O.bodies`` and bond every touching pair with the joint of its kind. ``O.engines``
 	must come from :func:`rdem.engines` first. Lengths in m; the wall spans $x\\in$ [0, length], $y\\in$ [0, thickness], $z\\in$
@@ -160,6 +163,12 @@ def wall(length,
 	:param mortarMaterial: :yref:`RdemMat` of the mortar blocks (``mortar='layer'`` only); default: $E_m$ and $\\nu_m$ of
 	    ``jointMaterial``, the joint's strengths, density 1800 kg/m³ (a cement–lime mortar).
 	:param beamMaterial: :yref:`RdemMat` of the beams; default: the brick's elastic constants and density, unbreakable.
+	:param only: ``None``: make every block; or a function of the :class:`rdem.wall_layout.WallLayout` that returns the
+	    indices (into its ``blocks``) of the blocks to make, for a set-up on YADE's MPI in which each rank makes only its
+	    own blocks and the neighbours it needs (:class:`rdem.distributed.PerRank`, mpy's ``DISTRIBUTED_INSERT``). The
+	    blocks of the whole wall then have the ids ``len(O.bodies)`` + their index (at the call), on every rank alike;
+	    each block made is inserted at its id (``O.bodies.insertAtId``) and every pair of two blocks made is bonded.
+	    :attr:`Wall.ids` and the groups are the whole wall's ids, :attr:`Wall.made` the ids made.
 	:return: a :class:`Wall`.
 
 	ValueError for any argument out of range, naming it (the layout's arguments are checked by ``wallLayout``)."""
@@ -189,19 +198,31 @@ def wall(length,
 	if mortar == 'layer':
 		materialOf['mortar'] = mortarMat
 	o = Vector3(*origin)
+	first = len(O.bodies)
+	made = range(len(layout.blocks)) if only is None else sorted(set(int(k) for k in only(layout)))
+	if made and not 0 <= made[0] <= made[-1] < len(layout.blocks):
+		raise ValueError('only: returned block indices outside 0 ... %d (the layout\'s blocks)' % (len(layout.blocks) - 1))
 	bodies = []
-	for k, (lo, hi) in enumerate(layout.blocks):
+	for k in made:
+		lo, hi = layout.blocks[k]
 		unit = layout.units[layout.blockUnit[k]]
 		centre = o + Vector3(*((lo[d] + hi[d]) / 2 for d in range(3)))
 		half = tuple((hi[d] - lo[d]) / 2 for d in range(3))
 		bodies.append(build.block(centre, half, materialOf[unit.kind], color=COLORS[unit.kind]))
-	ids = O.bodies.append(bodies)
+	if only is None:
+		ids = O.bodies.append(bodies)
+	else:
+		ids = list(range(first, first + len(layout.blocks)))
+		for k, b in zip(made, bodies):
+			O.bodies.insertAtId(b, first + k)
+		made = set(made)
 	jointOf = _joints(jointMaterial, mortar, layout.joint)
 	byKind = {}
 	for i, j, kind, area in layout.pairs:
-		byKind.setdefault(kind, []).append((ids[i], ids[j]))
+		if only is None or (i in made and j in made):
+			byKind.setdefault(kind, []).append((ids[i], ids[j]))
 	nBonds = sum(build.bondPairs(pairs, joint=jointOf[kind]) for kind, pairs in sorted(byKind.items()))
-	return Wall(layout, ids, jointOf, nBonds)
+	return Wall(layout, ids, jointOf, nBonds, None if only is None else [ids[k] for k in sorted(made)])
 
 
 from .building import building, Building  # noqa: E402  (rdem.masonry.building: a whole building of such walls)

@@ -22,7 +22,7 @@ Typical use::
     parts = bisect([(0.1, 0, 0), (0.3, 0, 0), (0.5, 0, 0), (0.7, 0, 0)], 2)   # [0, 0, 1, 1]
 """
 
-__all__ = ['bisect', 'counts', 'refusals']
+__all__ = ['bisect', 'counts', 'neighbourhood', 'refusals']
 
 
 def _cut(order, coord, wanted, tol):
@@ -93,11 +93,42 @@ def counts(parts, n):
 	return c
 
 
+def neighbourhood(parts, pairs, part, layers=2):
+	"""Indices of the blocks of subdomain ``part`` and of every block within ``layers`` bonds of them, sorted: what a rank
+	makes in a distributed set-up (mpy's ``DISTRIBUTED_INSERT``, :class:`rdem.distributed.PerRank`). One layer gives the
+	rank's blocks all their bonds; the second gives each block of the first layer (a ghost after mpy's split) all of its
+	bonds as well, so that the Poisson cells built on the rank (:yref:`RdemPoissonEngine` ``.build``), which take every
+	bond of a block, are the serial ones for the rank's blocks and its ghosts, and with them the cell coefficients of the
+	bonds between the two.
+
+	:param parts: subdomain of each block (a list indexed by block).
+	:param pairs: bonded pairs ``(i, j)`` of block indices.
+	:param part: the subdomain whose neighbourhood to take.
+	:param layers: bonds to go out from the subdomain's blocks (an integer >= 0).
+	:raises ValueError: ``layers`` not an integer >= 0, or a pair naming a block outside ``parts``."""
+	if not (isinstance(layers, int) and layers >= 0):
+		raise ValueError('layers = %r: must be an integer >= 0' % (layers, ))
+	n = len(parts)
+	near = [[] for _ in range(n)]
+	for i, j in pairs:
+		if not (0 <= i < n and 0 <= j < n):
+			raise ValueError('pairs: (%r, %r) names a block outside the %d of parts' % (i, j, n))
+		near[i].append(j)
+		near[j].append(i)
+	chosen = set(k for k in range(n) if parts[k] == part)
+	front = chosen
+	for _ in range(layers):
+		front = set(j for i in front for j in near[i]) - chosen
+		chosen |= front
+	return sorted(chosen)
+
+
 def refusals(f):
 	"""What keeps a scene from running on mpy identical to the serial run, as a list of messages (empty: it can run).
 
 	``f`` is a dict of what the scene has (read by :func:`rdem.distributed.features`): ``others`` (ids of bodies that are
-	not blocks), ``masterMoving`` (ids on the master that are not fixed), ``hex8`` (the paper's hexahedra),
+	not blocks), ``masterMoving`` (ids on the master that are not fixed), ``masterCells`` (ids on the master with a
+	Poisson cell), ``hex8`` (the paper's hexahedra),
 	``cells`` (blocks with a Poisson cell), ``exchange`` (an :yref:`RdemGhostExchange` in the engines), ``breakable`` (springs that can break). Missing keys count as absent."""
 	out = []
 	if f.get('others'):
@@ -105,6 +136,11 @@ def refusals(f):
 	if f.get('masterMoving'):
 		out.append('bodies on the master (subdomain 0) that move (ids %s...): mpy sends the master\'s states to no worker, so only fixed '
 		           'bodies (all DOFs blocked, at rest) may stay there' % (sorted(f['masterMoving'])[:5], ))
+	if f.get('masterCells'):
+		out.append('bodies on the master (subdomain 0) with a Poisson cell (ids %s...): a cell\'s strain sums all its bonds, which mpy leaves '
+		           'on the workers of the blocks they join, and RdemGhostExchange does not gather them (each worker would take the strain '
+		           'of its own part); build the cells without them (RdemPoissonEngine.build(ids) without the master\'s) or give them to a '
+		           'worker' % (sorted(f['masterCells'])[:5], ))
 	if f.get('cells') and not f.get('exchange'):
 		out.append('%d Poisson cells without an RdemGhostExchange: the strains of ghost blocks would come from the bonds the rank has, '
 		           'not from all of theirs (rdem.distributed.prepare inserts it)' % f['cells'])

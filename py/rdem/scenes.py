@@ -362,7 +362,7 @@ class RockingBlock:
 		return t
 
 
-def runningBondWall(blocks, dt=None):
+def runningBondWall(blocks, dt=None, only=None, beamCell=True):
 	"""A running-bond brick wall of about ``blocks`` blocks standing on a fixed base beam under gravity: the large wall
 	of the benchmarks (``scripts/benchmark.py --cases bigwall``, ``scripts/mpi_scaling.py``).
 
@@ -373,7 +373,12 @@ def runningBondWall(blocks, dt=None):
 
 	:param blocks: about how many blocks (> 0).
 	:param dt: a fixed time step [s], or None for :yref:`RdemTimeStepper`'s.
-	:return: dict ``perCourse``, ``courses`` (bricks), ``ids`` (the wall's blocks), ``base`` (the fixed beam's blocks).
+	:param only: make only some blocks (:func:`rdem.masonry.wall`'s ``only``: a set-up per rank on YADE's MPI,
+	    :class:`rdem.distributed.PerRank`); the Poisson cells are built on the blocks made.
+	:param beamCell: give the base beam a Poisson cell too (default, the benchmarks' scene); ``False`` on YADE's MPI when
+	    the beam stays on the master, whose cells :func:`rdem.distributed.check` refuses.
+	:return: dict ``perCourse``, ``courses`` (bricks), ``ids`` (the wall's blocks), ``base`` (the fixed beam's blocks),
+	    ``made`` (the blocks made in this scene: ``ids``, or those ``only`` chose).
 	"""
 	from yade.wrapper import RdemJoint
 	from . import masonry
@@ -389,10 +394,13 @@ def runningBondWall(blocks, dt=None):
 	                  shearFractureEnergy=125, compressiveStrength=7.92e6, compressiveFractureEnergy=5000)
 	O.engines = build.engines(segmentsPerEdge=2, contactSamples=2, formulation='consistent', failureStress='total', softening=True, gravity=(0, 0, -9.81),
 	                          damping=0.2, verletDist=0.003, dt=dt)
-	w = masonry.wall(perCourse * 0.26 - 0.01, courses * 0.065 - 0.01, 0.12, blocksPerBrick=(2, 1, 1), baseBeam=0.1, brickMaterial=brick, jointMaterial=joint)
+	w = masonry.wall(perCourse * 0.26 - 0.01, courses * 0.065 - 0.01, 0.12, blocksPerBrick=(2, 1, 1), baseBeam=0.1, brickMaterial=brick, jointMaterial=joint,
+	                 only=only)
 	build.poissonEngine().elements = 'cells'
-	build.poissonEngine().build(w.ids)
+	base = set(w.beams['base'])
+	build.poissonEngine().build(w.made if beamCell else [i for i in w.made if i not in base])
 	for i in w.beams['base']:
-		O.bodies[i].state.blockedDOFs = 'xyzXYZ'
+		if i < len(O.bodies) and O.bodies[i] is not None:
+			O.bodies[i].state.blockedDOFs = 'xyzXYZ'
 	O.dt = dt if dt else -1
-	return dict(perCourse=perCourse, courses=courses, ids=list(w.ids), base=list(w.beams['base']))
+	return dict(perCourse=perCourse, courses=courses, ids=list(w.ids), base=list(w.beams['base']), made=list(w.made))

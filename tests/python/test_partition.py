@@ -7,7 +7,7 @@ import sys
 import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'py'))
-from rdem.partition import bisect, counts, refusals  # noqa: E402
+from rdem.partition import bisect, counts, neighbourhood, refusals  # noqa: E402
 
 
 def grid(nx, ny, nz, h=0.02):
@@ -89,6 +89,57 @@ class Bisect(unittest.TestCase):
 			bisect([(0, 0)], 1)
 
 
+class Neighbourhood(unittest.TestCase):
+
+	def chain(self, n):
+		"""n blocks in a row, each bonded to the next."""
+		return [(i, i + 1) for i in range(n - 1)]
+
+	def test_layers_of_a_row(self):
+		# blocks 0-4 on subdomain 1, 5-9 on 2: one layer out of 1 is block 5, two layers blocks 5 and 6
+		parts = [1] * 5 + [2] * 5
+		self.assertEqual(neighbourhood(parts, self.chain(10), 1, 0), [0, 1, 2, 3, 4])
+		self.assertEqual(neighbourhood(parts, self.chain(10), 1, 1), [0, 1, 2, 3, 4, 5])
+		self.assertEqual(neighbourhood(parts, self.chain(10), 1), [0, 1, 2, 3, 4, 5, 6])
+		self.assertEqual(neighbourhood(parts, self.chain(10), 2), [3, 4, 5, 6, 7, 8, 9])
+
+	def test_a_beam_brings_what_it_is_bonded_to(self):
+		# a beam (block 0, the master's) under a course of 6 (1-6; 1-3 on subdomain 1): two layers out of subdomain 1 reach
+		# the beam and, through it, the whole course, so that the beam's cell sees all its bonds
+		parts = [0, 1, 1, 1, 2, 2, 2]
+		pairs = [(0, k) for k in range(1, 7)] + [(k, k + 1) for k in range(1, 6)]
+		self.assertEqual(neighbourhood(parts, pairs, 1), [0, 1, 2, 3, 4, 5, 6])
+		self.assertEqual(neighbourhood(parts, pairs, 1, 1), [0, 1, 2, 3, 4])
+		self.assertEqual(neighbourhood(parts, pairs, 0, 1), [0, 1, 2, 3, 4, 5, 6])
+
+	def test_every_bond_of_a_block_and_its_neighbours_is_there(self):
+		# a running-bond wall cut by bisection: for each subdomain, every block within one bond of it has all its bonds in the
+		# neighbourhood (what the Poisson cells of the rank's blocks and ghosts are built from)
+		c = runningBond(bricks=8, courses=6)
+		l, h = 0.25, 0.065
+		pairs = [(i, j) for i in range(len(c)) for j in range(i + 1, len(c))
+		         if (abs(c[i][2] - c[j][2]) < 1e-9 and abs(abs(c[i][0] - c[j][0]) - l) < 0.126 and abs(c[i][0] - c[j][0]) < l + 1e-9)
+		         or (abs(abs(c[i][2] - c[j][2]) - h) < 1e-9 and abs(c[i][0] - c[j][0]) < l / 2 + l / 4 - 1e-9)]
+		parts = [p + 1 for p in bisect(c, 2)]
+		near = {}
+		for i, j in pairs:
+			near.setdefault(i, set()).add(j)
+			near.setdefault(j, set()).add(i)
+		for part in (1, 2):
+			made = set(neighbourhood(parts, pairs, part))
+			ghosts = set(j for i in range(len(c)) if parts[i] == part for j in near[i]) - set(i for i in range(len(c)) if parts[i] == part)
+			self.assertTrue(ghosts)
+			for b in ghosts | set(i for i in range(len(c)) if parts[i] == part):
+				self.assertLessEqual(near[b], made, b)
+			self.assertLess(len(made), len(c))  # not the whole wall
+
+	def test_refusals(self):
+		with self.assertRaisesRegex(ValueError, 'layers = -1: must be an integer >= 0'):
+			neighbourhood([1, 1], [(0, 1)], 1, -1)
+		with self.assertRaisesRegex(ValueError, 'outside the 2 of parts'):
+			neighbourhood([1, 1], [(0, 2)], 1)
+
+
 class Refusals(unittest.TestCase):
 
 	def test_springs_and_cells_with_exchange_run(self):
@@ -98,6 +149,7 @@ class Refusals(unittest.TestCase):
 
 	def test_each_refusal_names_what(self):
 		for f, what in ((dict(others=[7]), 'not RdemBlock'), (dict(masterMoving=[3]), 'only fixed'), (dict(cells=10), 'RdemGhostExchange'),
+		                (dict(masterCells=[0], cells=10, exchange=True), 'with a Poisson cell'),
 		                (dict(hex8=5), 'hexahedral')):
 			r = refusals(f)
 			self.assertEqual(len(r), 1, f)

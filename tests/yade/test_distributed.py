@@ -52,6 +52,48 @@ class Features(unittest.TestCase):
 		self.assertEqual(keeper.keep(), 16)
 		self.assertEqual(len(t.ids), 96)
 
+	def partWall(self, only=None):
+		"""A running-bond wall with cells, or the part ``only`` chooses (rdem.masonry.wall(only=), as a rank makes it in a
+		set-up per rank: rdem.distributed.PerRank, which needs mpy; here the same choice by rdem.partition directly)."""
+		from yade.wrapper import RdemMat, RdemJoint
+		from yade.rdem import masonry
+		O.reset()
+		brick = RdemMat(young=16.7e9, poisson=0.15, density=1800, tensileStrength=2e6, cohesion=4e6, frictionAngle=0.6)
+		O.materials.append(brick)
+		O.engines = build.engines(formulation='consistent', failureStress='total', recontact='always', dt=1e-9)
+		mortar = RdemJoint(young=5e9, poisson=0.2, tensileStrength=0.3e6, cohesion=0.5e6, frictionAngle=0.6)
+		w = masonry.wall(8 * 0.26 - 0.01, 6 * 0.065 - 0.01, 0.12, bond='running', brickMaterial=brick, jointMaterial=mortar, only=only)
+		build.poissonEngine().elements = 'cells'
+		build.poissonEngine().build(w.made)
+		bonds = {(I.id1, I.id2): (I.phys.cellCoef1, I.phys.cellCoef2, I.phys.weightNormal, I.phys.weightShear) for I in O.interactions if I.isReal}
+		cells = {i: (O.bodies[i].state.pos, O.bodies[i].state.cellVolume, O.bodies[i].state.cellStiffness) for i in w.made}
+		return w, bonds, cells
+
+	def test_a_part_of_a_wall_is_the_whole_walls_there(self):
+		whole, wholeBonds, wholeCells = self.partWall()
+		lay = whole.layout
+		parts = [p + 1 for p in partition.bisect([tuple((lo[d] + hi[d]) / 2 for d in range(3)) for lo, hi in lay.blocks], 2)]
+		own = [k for k in range(len(parts)) if parts[k] == 1]
+		chosen = partition.neighbourhood(parts, [(p[0], p[1]) for p in lay.pairs], 1)
+		part, bonds, cells = self.partWall(only=lambda layout: chosen)
+		self.assertEqual(part.ids, whole.ids)  # the whole wall's ids, on every rank alike
+		self.assertEqual(part.made, [whole.ids[k] for k in chosen])
+		self.assertLess(len(part.made), len(whole.ids))
+		self.assertEqual(len(O.bodies), max(part.made) + 1)
+		# every pair of two blocks made is bonded, as in the whole wall
+		made = set(part.made)
+		self.assertEqual(set(bonds), set(k for k in wholeBonds if k[0] in made and k[1] in made))
+		# the rank's blocks and those one bond out (its ghosts) have the whole wall's cells, and their bonds its
+		# coefficients and weights: the second layer gives the ghosts all their bonds
+		ghosts = set(j for i, j, *_ in lay.pairs if parts[i] == 1 and parts[j] != 1) | set(i for i, j, *_ in lay.pairs if parts[j] == 1 and parts[i] != 1)
+		near = set(whole.ids[k] for k in own) | set(whole.ids[k] for k in ghosts)
+		self.assertTrue(ghosts)
+		for i in near:
+			self.assertEqual(cells[i], wholeCells[i], i)
+		for k, v in bonds.items():
+			if k[0] in near and k[1] in near:
+				self.assertEqual(v, wholeBonds[k], k)
+
 
 if __name__ == '__main__':
 	harness.run(Features)
