@@ -572,7 +572,7 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::applyForces(const Interaction& I, RdemP
 	const Vector3r t1 = -(t2 + dx.cross(f2));
 	// deferForces, and the engine list was checked to have an RdemForceAssembler after the loop (RdemSharedState)
 	if (deferForces && shared->deferredForces) {
-		if (p.forceIter != scene->iter - 1) shared->activeSetChanges += 1; // new, or back after a pause: not in the assembler's lists
+		if (p.forceIter != scene->iter - 1) shared->join(I); // new, or back after a pause: not in the assembler's lists
 		p.torque1   = t1;
 		p.torque2   = t2;
 		p.forceIter = scene->iter;
