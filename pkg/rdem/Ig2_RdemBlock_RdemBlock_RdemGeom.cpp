@@ -103,6 +103,7 @@ namespace {
 		const Vector3r x1      = which == 0 ? X.pos : Y.pos;
 		const Vector3r x2      = which == 0 ? Y.pos : X.pos;
 		for (int k = 0; k < 3; ++k) {
+			if (near && !anyBit(*near, (which * 6 + 2 * k) * perFace, 2 * perFace)) continue; // neither face along axis k may enter
 			const int      k1 = (k + 1) % 3, k2 = (k + 2) % 3;
 			const Vector3r t1 = X.rot.col(k1), t2 = X.rot.col(k2);
 			const Vector3r q1 = toY * t1, q2 = toY * t2;                        // the face's in-plane axes in Y's frame
