@@ -41,14 +41,10 @@ namespace {
 	/// positions of blocks laid side by side, 1e-6 of the smaller half-extent [m].
 	Real faceTouchTolerance(const Block& A, const Block& B) { return 1e-6 * math::min(A.half.minCoeff(), B.half.minCoeff()); }
 
-	/// Bit `key` of a sample certificate (RdemGeom::nearSamples), and whether any of the `count` bits from `first` is set.
-	bool bit(const vector<uint64_t>& bits, int key) { return (bits[size_t(key) / 64] >> (size_t(key) % 64)) & 1; }
-	bool anyBit(const vector<uint64_t>& bits, int first, int count)
-	{
-		for (int key = first; key < first + count; ++key)
-			if (bit(bits, key)) return true;
-		return false;
-	}
+	/* A sample certificate (RdemGeom::nearSamples): word 0 has bit f set if face f = which·6 + face (sampleInside) has a
+	   sample in the certificate; the words from 1 on have bit `key` set for each such sample. */
+	bool nearFace(const vector<uint64_t>& near, int f) { return (near[0] >> f) & 1; }
+	bool nearSample(const vector<uint64_t>& near, int key) { return (near[1 + size_t(key) / 64] >> (size_t(key) % 64)) & 1; }
 
 	/* The samples of block X (which = 0 for body 1, 1 for body 2; keys as in sampleInside, all six faces) that lie less
 	   than skin outside block Y (rdem::sampleOutside), marked in near: the only ones that can enter Y while the blocks'
@@ -68,8 +64,10 @@ namespace {
 					const Vector3r qa = qc + X.half[k1] * rdem::trapezoidNode<Real>(i, n).x * q1;
 					for (int j = 0; j <= n; ++j) {
 						const int key = first + i * (n + 1) + j;
-						if (rdem::sampleOutside<Real>(Y.half, qa + X.half[k2] * rdem::trapezoidNode<Real>(j, n).x * q2) < skin)
-							near[size_t(key) / 64] |= uint64_t(1) << (size_t(key) % 64);
+						if (rdem::sampleOutside<Real>(Y.half, qa + X.half[k2] * rdem::trapezoidNode<Real>(j, n).x * q2) < skin) {
+							near[1 + size_t(key) / 64] |= uint64_t(1) << (size_t(key) % 64);
+							near[0] |= uint64_t(1) << (which * 6 + 2 * k + side);
+						}
 					}
 				}
 			}
@@ -103,14 +101,14 @@ namespace {
 		const Vector3r x1      = which == 0 ? X.pos : Y.pos;
 		const Vector3r x2      = which == 0 ? Y.pos : X.pos;
 		for (int k = 0; k < 3; ++k) {
-			if (near && !anyBit(*near, (which * 6 + 2 * k) * perFace, 2 * perFace)) continue; // neither face along axis k may enter
+			if (near && !nearFace(*near, which * 6 + 2 * k) && !nearFace(*near, which * 6 + 2 * k + 1)) continue; // neither face along k may enter
 			const int      k1 = (k + 1) % 3, k2 = (k + 2) % 3;
 			const Vector3r t1 = X.rot.col(k1), t2 = X.rot.col(k2);
 			const Vector3r q1 = toY * t1, q2 = toY * t2;                        // the face's in-plane axes in Y's frame
 			const Real     area = rdem::segmentArea(X.half[k1], X.half[k2], n); // of a segment of these faces [m²]
 			for (int side = 0; side < 2; ++side) {
 				const int face = 2 * k + side, first = (which * 6 + face) * perFace; // key of the face's first sample
-				if (near && !anyBit(*near, first, perFace)) continue;
+				if (near && !nearFace(*near, which * 6 + face)) continue;
 				const Real     s      = side ? 1 : -1;
 				const Vector3r nf     = s * X.rot.col(k);
 				const Real     cosine = -nf.dot(u);
@@ -124,7 +122,7 @@ namespace {
 					const Vector3r qa = qc + sa * q1;
 					for (int j = 0; j <= n; ++j) {
 						const int key = first + i * (n + 1) + j;
-						if (near && !bit(*near, key)) continue;
+						if (near && !nearSample(*near, key)) continue;
 						const auto b   = rdem::trapezoidNode<Real>(j, n);
 						const Real rb  = X.half[k2] * b.x;
 						const auto hit = rdem::sampleDepthLocal<Real>(Y.half, qa + rb * q2, uq);
@@ -389,7 +387,7 @@ const vector<uint64_t>* Ig2_RdemBlock_RdemBlock_RdemGeom::nearSamples(const rdem
 {
 	const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr; // recorded by RdemContactGate
 	if (!skipApart || !travel || !travel->currentFor(*scene)) return nullptr;
-	const int  n = g.samplesPerEdge, words = (2 * 6 * (n + 1) * (n + 1) + 63) / 64;
+	const int  n = g.samplesPerEdge, words = 1 + (2 * 6 * (n + 1) * (n + 1) + 63) / 64;
 	const Real t = travel->travel[size_t(I.getId1())] + travel->travel[size_t(I.getId2())];
 	if (g.sampleEpoch == travel->epoch && t < g.sampleReach && g.nearSamples.size() == size_t(words)) return &g.nearSamples;
 	// A new certificate; this step tests every sample.
