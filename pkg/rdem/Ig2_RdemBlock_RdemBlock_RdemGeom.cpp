@@ -45,14 +45,6 @@ namespace {
 	   sample in the certificate; the words from 1 on have bit `key` set for each such sample. */
 	bool nearFace(const vector<uint64_t>& near, int f) { return (near[0] >> f) & 1; }
 	bool nearSample(const vector<uint64_t>& near, int key) { return (near[1 + size_t(key) / 64] >> (size_t(key) % 64)) & 1; }
-	/// The bits of the samples from `key` on, `count` ≤ 64 of them, as the lowest bits of a word.
-	uint64_t faceBits(const vector<uint64_t>& near, int key, int count)
-	{
-		const size_t word = 1 + size_t(key) / 64, offset = size_t(key) % 64;
-		uint64_t     bits = near[word] >> offset;
-		if (offset + size_t(count) > 64) bits |= near[word + 1] << (64 - offset);
-		return count == 64 ? bits : bits & ((uint64_t(1) << count) - 1);
-	}
 
 	/* The samples of block X (which = 0 for body 1, 1 for body 2; keys as in sampleInside, all six faces) that lie less
 	   than skin outside block Y (rdem::sampleOutside), marked in near: the only ones that can enter Y while the blocks'
@@ -124,41 +116,25 @@ namespace {
 				const Vector3r fc = X.pos + X.half[k] * nf;
 				const Vector3r qc = toY * (fc - Y.pos); // the face centre in Y's frame
 				if (!rdem::faceMayEnterLocal<Real>(Y.half, qc, q1, q2, X.half[k1], X.half[k2])) continue;
-				// Sample (i, j) of the face, its point a row sa along t1 and rb along t2 from the face centre.
-				const auto test = [&](int i, int j, const rdem::TrapezoidNode<Real>& a, Real sa, const Vector3r& qa) {
-					const auto b   = rdem::trapezoidNode<Real>(j, n);
-					const Real rb  = X.half[k2] * b.x;
-					const auto hit = rdem::sampleDepthLocal<Real>(Y.half, qa + rb * q2, uq);
-					if (!hit.hit) return;
-					const Vector3r point = fc + sa * t1 + rb * t2 + (hit.depth / 2) * u;
-					g.sampleKey.push_back(first + i * (n + 1) + j);
-					g.samplePoint.push_back(point);
-					g.sampleNormal.push_back(normal);
-					g.sampleVel.push_back(pointVelocity(s2, x2, point) - pointVelocity(s1, x1, point));
-					g.sampleDepth.push_back(hit.depth);
-					g.sampleArea.push_back(area * a.w * b.w * cosine / 2); // trapezoid weight; both blocks are sampled: half each
-				};
-				if (near) { // the certificate's samples of the face only, in the order of their keys
-					for (int key = first; key < first + perFace; ++key) {
-						if (perFace <= 64) { // jump to the next sample of the certificate
-							const uint64_t rest = faceBits(*near, key, first + perFace - key);
-							if (!rest) break;
-							key += __builtin_ctzll(rest);
-						} else if (!nearSample(*near, key))
-							continue;
-						const int  i  = (key - first) / (n + 1);
-						const auto a  = rdem::trapezoidNode<Real>(i, n);
-						const Real sa = X.half[k1] * a.x;
-						test(i, (key - first) % (n + 1), a, sa, Vector3r(qc + sa * q1));
-					}
-					continue;
-				}
 				for (int i = 0; i <= n; ++i) {
 					const auto     a  = rdem::trapezoidNode<Real>(i, n);
 					const Real     sa = X.half[k1] * a.x;
 					const Vector3r qa = qc + sa * q1;
-					for (int j = 0; j <= n; ++j)
-						test(i, j, a, sa, qa);
+					for (int j = 0; j <= n; ++j) {
+						const int key = first + i * (n + 1) + j;
+						if (near && !nearSample(*near, key)) continue;
+						const auto b   = rdem::trapezoidNode<Real>(j, n);
+						const Real rb  = X.half[k2] * b.x;
+						const auto hit = rdem::sampleDepthLocal<Real>(Y.half, qa + rb * q2, uq);
+						if (!hit.hit) continue;
+						const Vector3r point = fc + sa * t1 + rb * t2 + (hit.depth / 2) * u;
+						g.sampleKey.push_back(key);
+						g.samplePoint.push_back(point);
+						g.sampleNormal.push_back(normal);
+						g.sampleVel.push_back(pointVelocity(s2, x2, point) - pointVelocity(s1, x1, point));
+						g.sampleDepth.push_back(hit.depth);
+						g.sampleArea.push_back(area * a.w * b.w * cosine / 2); // trapezoid weight; both blocks are sampled: half each
+					}
 				}
 			}
 		}
