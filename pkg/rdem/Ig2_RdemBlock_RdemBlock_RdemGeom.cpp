@@ -390,12 +390,13 @@ const vector<uint64_t>* Ig2_RdemBlock_RdemBlock_RdemGeom::nearSamples(const rdem
 	const int  n = g.samplesPerEdge, words = 1 + (2 * 6 * (n + 1) * (n + 1) + 63) / 64;
 	const Real t = travel->travel[size_t(I.getId1())] + travel->travel[size_t(I.getId2())];
 	if (g.sampleEpoch == travel->epoch && t < g.sampleReach && g.nearSamples.size() == size_t(words)) return &g.nearSamples;
-	// A new certificate; this step tests every sample.
-	const Real skin = sampleSkin * math::min(pair.A.half.minCoeff(), pair.B.half.minCoeff());
+	// A new certificate; this step tests every sample. None for blocks so slender that the skin is within the margin.
+	const Real skin = sampleSkin * math::min(pair.A.half.minCoeff(), pair.B.half.minCoeff()), margin = rdem::separationMargin<Real>(pair);
+	if (!(skin > margin)) return nullptr;
 	g.nearSamples.assign(size_t(words), 0);
 	markNearSamples(pair.A, pair.B, 0, n, skin, g.nearSamples);
 	markNearSamples(pair.B, pair.A, 1, n, skin, g.nearSamples);
-	g.sampleReach = t + skin - rdem::separationMargin<Real>(pair);
+	g.sampleReach = t + skin - margin;
 	g.sampleEpoch = travel->epoch;
 	return nullptr;
 }
