@@ -41,13 +41,56 @@ namespace {
 	/// positions of blocks laid side by side, 1e-6 of the smaller half-extent [m].
 	Real faceTouchTolerance(const Block& A, const Block& B) { return 1e-6 * math::min(A.half.minCoeff(), B.half.minCoeff()); }
 
+	/* A sample certificate (RdemGeom::nearSamples): word 0 has bit f set if face f = which·6 + face (sampleInside) has a
+	   sample in the certificate; the words from 1 on have bit `key` set for each such sample. */
+	bool nearFace(const vector<uint64_t>& near, int f) { return (near[0] >> f) & 1; }
+	bool nearSample(const vector<uint64_t>& near, int key) { return (near[1 + size_t(key) / 64] >> (size_t(key) % 64)) & 1; }
+
+	/* The samples of block X (which = 0 for body 1, 1 for body 2; keys as in sampleInside, all six faces) that lie less
+	   than skin outside block Y (rdem::sampleOutside), marked in near: the only ones that can enter Y while the blocks'
+	   travels add up to less than skin less rdem::separationMargin. Their points in Y's frame are computed as in
+	   sampleInside. */
+	void markNearSamples(const Block& X, const Block& Y, int which, int n, Real skin, vector<uint64_t>& near)
+	{
+		const int      perFace = (n + 1) * (n + 1);
+		const Matrix3r toY     = Y.rot.transpose();
+		for (int k = 0; k < 3; ++k) {
+			const int      k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+			const Vector3r q1 = toY * X.rot.col(k1), q2 = toY * X.rot.col(k2);
+			for (int side = 0; side < 2; ++side) {
+				const Vector3r qc    = toY * (X.pos + X.half[k] * (side ? 1 : -1) * X.rot.col(k) - Y.pos);
+				const int      first = (which * 6 + 2 * k + side) * perFace;
+				for (int i = 0; i <= n; ++i) {
+					const Vector3r qa = qc + X.half[k1] * rdem::trapezoidNode<Real>(i, n).x * q1;
+					for (int j = 0; j <= n; ++j) {
+						const int key = first + i * (n + 1) + j;
+						if (rdem::sampleOutside<Real>(Y.half, qa + X.half[k2] * rdem::trapezoidNode<Real>(j, n).x * q2) < skin) {
+							near[1 + size_t(key) / 64] |= uint64_t(1) << (size_t(key) % 64);
+							near[0] |= uint64_t(1) << (which * 6 + 2 * k + side);
+						}
+					}
+				}
+			}
+		}
+	}
+
 	/* Sample points of block X (which = 0 for body 1, 1 for body 2) that entered block Y, appended to geom. normal is the
 	   pair's contact normal from body 1 to body 2 (rdem::contactFaceAxis); X separates from Y along u = -normal (body 1)
 	   or +normal (body 2), and a sample's depth is its distance to Y's surface along u (rdem::sampleDepth). Only the faces
 	   of X that face Y take part (cosine c = -n_f·u > 0). Sample keys are ((which·6 + face)·(n+1)² + point), stable from
 	   step to step for the shear history. A face's samples are the points of the trapezoid rule (rdem::faceSamplePoints),
-	   tested in Y's frame, where they are affine in the face's centre and axes (rdem::sampleDepthLocal). */
-	void sampleInside(const Block& X, const State& sx, const Block& Y, const State& sy, int which, int n, const Vector3r& normal, RdemGeom& g)
+	   tested in Y's frame, where they are affine in the face's centre and axes (rdem::sampleDepthLocal). With near (a sample
+	   certificate, nearSamples), only the samples whose bit is set are tested: the others cannot be inside Y. */
+	void sampleInside(
+	        const Block&            X,
+	        const State&            sx,
+	        const Block&            Y,
+	        const State&            sy,
+	        int                     which,
+	        int                     n,
+	        const Vector3r&         normal,
+	        RdemGeom&               g,
+	        const vector<uint64_t>* near)
 	{
 		const int      perFace = (n + 1) * (n + 1);
 		const Vector3r u       = which == 0 ? Vector3r(-normal) : normal;
@@ -58,11 +101,14 @@ namespace {
 		const Vector3r x1      = which == 0 ? X.pos : Y.pos;
 		const Vector3r x2      = which == 0 ? Y.pos : X.pos;
 		for (int k = 0; k < 3; ++k) {
+			if (near && !nearFace(*near, which * 6 + 2 * k) && !nearFace(*near, which * 6 + 2 * k + 1)) continue; // neither face along k may enter
 			const int      k1 = (k + 1) % 3, k2 = (k + 2) % 3;
 			const Vector3r t1 = X.rot.col(k1), t2 = X.rot.col(k2);
 			const Vector3r q1 = toY * t1, q2 = toY * t2;                        // the face's in-plane axes in Y's frame
 			const Real     area = rdem::segmentArea(X.half[k1], X.half[k2], n); // of a segment of these faces [m²]
 			for (int side = 0; side < 2; ++side) {
+				const int face = 2 * k + side, first = (which * 6 + face) * perFace; // key of the face's first sample
+				if (near && !nearFace(*near, which * 6 + face)) continue;
 				const Real     s      = side ? 1 : -1;
 				const Vector3r nf     = s * X.rot.col(k);
 				const Real     cosine = -nf.dot(u);
@@ -70,18 +116,19 @@ namespace {
 				const Vector3r fc = X.pos + X.half[k] * nf;
 				const Vector3r qc = toY * (fc - Y.pos); // the face centre in Y's frame
 				if (!rdem::faceMayEnterLocal<Real>(Y.half, qc, q1, q2, X.half[k1], X.half[k2])) continue;
-				const int face = 2 * k + side;
 				for (int i = 0; i <= n; ++i) {
 					const auto     a  = rdem::trapezoidNode<Real>(i, n);
 					const Real     sa = X.half[k1] * a.x;
 					const Vector3r qa = qc + sa * q1;
 					for (int j = 0; j <= n; ++j) {
+						const int key = first + i * (n + 1) + j;
+						if (near && !nearSample(*near, key)) continue;
 						const auto b   = rdem::trapezoidNode<Real>(j, n);
 						const Real rb  = X.half[k2] * b.x;
 						const auto hit = rdem::sampleDepthLocal<Real>(Y.half, qa + rb * q2, uq);
 						if (!hit.hit) continue;
 						const Vector3r point = fc + sa * t1 + rb * t2 + (hit.depth / 2) * u;
-						g.sampleKey.push_back((which * 6 + face) * perFace + i * (n + 1) + j);
+						g.sampleKey.push_back(key);
 						g.samplePoint.push_back(point);
 						g.sampleNormal.push_back(normal);
 						g.sampleVel.push_back(pointVelocity(s2, x2, point) - pointVelocity(s1, x1, point));
@@ -114,14 +161,16 @@ namespace {
 		g.sampleArea.push_back(segArea / 4);
 	}
 
-	/// Face samples of both blocks inside each other along the pair's contact normal, then the edge-to-edge contact.
-	void sampleContacts(const rdem::BlockPair<Real>& pair, const State& s1, const State& s2, Real tol, int n, RdemGeom& g)
+	/// Face samples of both blocks inside each other along the pair's contact normal, then the edge-to-edge contact; with
+	/// near, only the samples of that certificate (sampleInside).
+	void sampleContacts(
+	        const rdem::BlockPair<Real>& pair, const State& s1, const State& s2, Real tol, int n, RdemGeom& g, const vector<uint64_t>* near = nullptr)
 	{
 		const Block&   A      = pair.A;
 		const Block&   B      = pair.B;
 		const Vector3r normal = rdem::contactFaceAxis<Real>(pair).normal;
-		sampleInside(A, s1, B, s2, 0, n, normal, g);
-		sampleInside(B, s2, A, s1, 1, n, normal, g);
+		sampleInside(A, s1, B, s2, 0, n, normal, g, near);
+		sampleInside(B, s2, A, s1, 1, n, normal, g, near);
 		edgeInside(pair, s1, s2, tol, n, g);
 	}
 
@@ -334,6 +383,24 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 	return true;                                           // samples of this step are already in place
 }
 
+const vector<uint64_t>* Ig2_RdemBlock_RdemBlock_RdemGeom::nearSamples(const rdem::BlockPair<Real>& pair, const Interaction& I, RdemGeom& g) const
+{
+	const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr; // recorded by RdemContactGate
+	if (!skipApart || !travel || !travel->currentFor(*scene)) return nullptr;
+	const int  n = g.samplesPerEdge, words = 1 + (2 * 6 * (n + 1) * (n + 1) + 63) / 64;
+	const Real t = travel->travel[size_t(I.getId1())] + travel->travel[size_t(I.getId2())];
+	if (g.sampleEpoch == travel->epoch && t < g.sampleReach && g.nearSamples.size() == size_t(words)) return &g.nearSamples;
+	// A new certificate; this step tests every sample. None for blocks so slender that the skin is within the margin.
+	const Real skin = sampleSkin * math::min(pair.A.half.minCoeff(), pair.B.half.minCoeff()), margin = rdem::separationMargin<Real>(pair);
+	if (!(skin > margin)) return nullptr;
+	g.nearSamples.assign(size_t(words), 0);
+	markNearSamples(pair.A, pair.B, 0, n, skin, g.nearSamples);
+	markNearSamples(pair.B, pair.A, 1, n, skin, g.nearSamples);
+	g.sampleReach = t + skin - margin;
+	g.sampleEpoch = travel->epoch;
+	return nullptr;
+}
+
 bool Ig2_RdemBlock_RdemBlock_RdemGeom::withinPatchTravel(const RdemGeom& g, const State& s1, const State& s2, const Vector3r& shift2) const
 {
 	if (!(g.patchTravel > 0)) return false;
@@ -447,7 +514,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	if (g.nPatch() > 0) g.clearPatch(); // and the configuration it was derived in
 	if (tried) markDerived(A, B, state1.ori, state2.ori, g);
 	g.clearSamples();
-	if (overlap) sampleContacts(pair, state1, state2, tol, g.samplesPerEdge, g);
+	if (overlap) sampleContacts(pair, state1, state2, tol, g.samplesPerEdge, g, nearSamples(pair, *I, g));
 	if (!from.pos.empty()) handOverToSamples(from, g, p);
 	return true; // a real interaction stays; the law erases it when no sample is in contact
 }

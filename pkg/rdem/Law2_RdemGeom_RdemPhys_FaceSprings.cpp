@@ -584,7 +584,7 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::applyForces(const Interaction& I, RdemP
 	const Vector3r t1 = -(t2 + dx.cross(f2));
 	// deferForces, and the engine list was checked to have an RdemForceAssembler after the loop (RdemSharedState)
 	if (deferForces && shared->deferredForces) {
-		if (p.forceIter != scene->iter - 1) shared->activeSetChanges += 1; // new, or back after a pause: not in the assembler's lists
+		if (p.forceIter != scene->iter - 1) shared->join(I); // new, or back after a pause: not in the assembler's lists
 		p.torque1   = t1;
 		p.torque2   = t2;
 		p.forceIter = scene->iter;
@@ -613,14 +613,21 @@ boost::python::list Law2_RdemGeom_RdemPhys_FaceSprings::releasedBondsPy()
 
 void Law2_RdemGeom_RdemPhys_FaceSprings::bookEnergies(const rdem::SpringEnergies<Real>& e)
 {
-	scene->energy->add(e.elastic, "rdemElastic", elasticIx, /*reset every step*/ true);
-	scene->energy->add(e.dashpot, "rdemDashpot", dashpotIx, false);
-	scene->energy->add(e.friction, "rdemFriction", frictionIx, false);
-	scene->energy->add(e.bondBreak, "rdemBondBreak", bondBreakIx, false);
+	/* Once an energy has its index, a zero adds nothing and is not booked; the names are made once, not at every call
+	   (a std::string per energy and interaction was 9 % of a step of the MI1 wall, doc/performance.md). */
+	static const std::string elastic("rdemElastic"), dashpot("rdemDashpot"), friction("rdemFriction"), bondBreak("rdemBondBreak"),
+	        fractureTension("rdemFractureTension"), fractureShear("rdemFractureShear"), crushing("rdemCrushing");
+	const auto book = [&](Real value, const std::string& name, int& ix, bool reset) {
+		if (ix < 0 || value != 0) scene->energy->add(value, name, ix, reset);
+	};
+	book(e.elastic, elastic, elasticIx, /*reset every step*/ true);
+	book(e.dashpot, dashpot, dashpotIx, false);
+	book(e.friction, friction, frictionIx, false);
+	book(e.bondBreak, bondBreak, bondBreakIx, false);
 	if (!e.softening) return;
-	scene->energy->add(e.fractureTension, "rdemFractureTension", fractureTensionIx, false);
-	scene->energy->add(e.fractureShear, "rdemFractureShear", fractureShearIx, false);
-	scene->energy->add(e.crushing, "rdemCrushing", crushingIx, false);
+	book(e.fractureTension, fractureTension, fractureTensionIx, false);
+	book(e.fractureShear, fractureShear, fractureShearIx, false);
+	book(e.crushing, crushing, crushingIx, false);
 }
 
 namespace {

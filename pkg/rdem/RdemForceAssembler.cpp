@@ -43,6 +43,46 @@ void RdemForceAssembler::rebuild()
 		std::sort(sides.begin() + long(first[b]), sides.begin() + long(first[b + 1]), [](const Side& x, const Side& y) { return x.other < y.other; });
 	builtBodies       = long(nBodies);
 	builtInteractions = long(scene->interactions->size());
+	staleSides        = 0;
+}
+
+void RdemForceAssembler::addSides(const vector<RdemSharedState::JoinedPhys>& joined)
+{
+	const size_t                        nBodies = first.size() - 1;
+	vector<std::pair<Body::id_t, Side>> add; // (body, side) to add
+	for (const auto& j : joined)
+		for (const bool second : { false, true }) {
+			const Body::id_t body = second ? j.id2 : j.id1;
+			if (body < 0 || size_t(body) >= nBodies) return rebuild();
+			bool present = false; // back after a pause, and still in the list
+			for (size_t k = first[size_t(body)]; k < first[size_t(body) + 1] && !present; ++k)
+				present = sides[k].phys == j.phys;
+			if (!present) add.emplace_back(body, Side { j.phys, second ? j.id1 : j.id2, second });
+		}
+	if (add.empty()) return;
+	std::sort(add.begin(), add.end(), [](const std::pair<Body::id_t, Side>& x, const std::pair<Body::id_t, Side>& y) {
+		return x.first != y.first ? x.first < y.first : x.second.other < y.second.other;
+	});
+	// One pass: each body's list merged with its new sides by the other body's id (a side that stopped, skipped in the
+	// sums, may share its other body with a new one: their order does not matter).
+	vector<Side>   merged;
+	vector<size_t> mergedFirst(nBodies + 1);
+	merged.reserve(sides.size() + add.size());
+	size_t a = 0;
+	for (size_t b = 0; b < nBodies; ++b) {
+		mergedFirst[b] = merged.size();
+		size_t k       = first[b];
+		for (;;) {
+			const bool fromAdd = a < add.size() && size_t(add[a].first) == b;
+			if (!fromAdd && k == first[b + 1]) break;
+			if (fromAdd && (k == first[b + 1] || add[a].second.other < sides[k].other)) merged.push_back(std::move(add[a++].second));
+			else
+				merged.push_back(std::move(sides[k++]));
+		}
+	}
+	mergedFirst[nBodies] = merged.size();
+	sides.swap(merged);
+	first.swap(mergedFirst);
 }
 
 void RdemForceAssembler::prepareDirectSums(Scene* scene, long nBodies)
@@ -59,9 +99,17 @@ void RdemForceAssembler::prepareDirectSums(Scene* scene, long nBodies)
 
 void RdemForceAssembler::action()
 {
-	const bool changed = RdemSharedState::of(scene, shared).takeActiveSetChanged();
-	if (changed || builtIter != scene->iter - 1 || builtBodies != long(scene->bodies->size()) || builtInteractions != long(scene->interactions->size()))
+	RdemSharedState& sh      = RdemSharedState::of(scene, shared);
+	const int        changes = sh.takeActiveSetChanges();
+	const auto       joined  = sh.takeJoined();
+	staleSides += 2 * size_t(std::max(0, changes - int(joined.size()))); // the interactions that stopped
+	const bool missed = builtIter != scene->iter - 1 || builtBodies != long(scene->bodies->size());
+	if (!incremental) {
+		if (changes > 0 || missed || builtInteractions != long(scene->interactions->size())) rebuild();
+	} else if (missed || staleSides > sides.size() / 8)
 		rebuild();
+	else if (!joined.empty())
+		addSides(joined);
 	builtIter          = scene->iter;
 	const long nBodies = long(scene->bodies->size());
 	prepareDirectSums(scene, nBodies);

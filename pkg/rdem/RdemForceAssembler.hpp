@@ -24,8 +24,9 @@ public:
 
 Floating-point sums depend on their order. The law alone adds its forces in the order of the interaction container, which ``O.load`` changes (interactions without geometry, e.g. released bonds, are not saved and come back at the end of the container when the collider finds the pair again); the sum of a body's forces then differs in the last bits and a reloaded run drifts from the uninterrupted one. Summed here in a fixed order, it continues bit for bit (tests/yade/test_save_load.py), and the result no longer depends on the number of threads. Place it right after the :yref:`InteractionLoop` (``rdem.engines()`` does).
 
-The per-body lists, sorted by the other body's id, are kept from step to step and rebuilt only when the law reports that an interaction started or stopped leaving forces (in :yref:`RdemSharedState`), or when the number of bodies or interactions changed: a step costs one pass over the lists.)""",
+The per-body lists, sorted by the other body's id, are kept from step to step. The interactions that the law reports as starting to leave forces (in :yref:`RdemSharedState`) are merged into them in one pass (``incremental``); those that stop stay in the lists, skipped (their physics has an old ``forceIter``), until they make up an eighth of the lists, or the number of bodies changes, or the assembler missed a step: then the lists are built again from the interactions. A step costs one pass over the lists, and one more in a step in which contacts start.)""",
 		((shared_ptr<RdemSharedState>,shared,,,"What the plugin's engines share (:yref:`RdemSharedState`, handed by ``rdem.engines()``; None: the law's, taken at the first step)."))
+		((bool,incremental,true,Attr::noSave,"Merge the interactions that start leaving forces into the lists (default); False: build the lists again from all interactions whenever an interaction starts or stops, or their number changes (the reference that tests/yade/test_force_assembler.py compares against; the same sums, in the same order). Not saved."))
 	);
 	// clang-format on
 
@@ -40,7 +41,10 @@ private:
 	vector<size_t> first; // the list of body b is sides[first[b] .. first[b+1]) (not saved: rebuilt after O.load)
 	vector<Side>   sides; // all lists, bodies in id order, each sorted by the other body's id
 	long           builtIter = -1, builtBodies = -1, builtInteractions = -1;
+	size_t         staleSides = 0; // sides of interactions that stopped leaving forces since the last rebuild, at most
 	void           rebuild();
+	/// Merges the sides of the joined physics that are not in the lists yet into them, each list staying sorted.
+	void addSides(const vector<RdemSharedState::JoinedPhys>& joined);
 };
 REGISTER_SERIALIZABLE(RdemForceAssembler);
 

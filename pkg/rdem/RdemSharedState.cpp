@@ -36,11 +36,25 @@ void RdemSharedState::postLoad(RdemSharedState&)
 	shearBreaks += int(savedShearBreaks);
 }
 
-bool RdemSharedState::takeActiveSetChanged()
+int RdemSharedState::takeActiveSetChanges()
 {
-	if (activeSetChanges.get() == 0) return false;
-	activeSetChanges.reset();
-	return true;
+	const int n = activeSetChanges.get();
+	if (n != 0) activeSetChanges.reset();
+	return n;
+}
+
+void RdemSharedState::join(const Interaction& I)
+{
+	activeSetChanges += 1;
+	const std::lock_guard<std::mutex> lock(joinedMutex);
+	joined.push_back(JoinedPhys { I.phys, I.getId1(), I.getId2() });
+}
+
+vector<RdemSharedState::JoinedPhys> RdemSharedState::takeJoined()
+{
+	vector<JoinedPhys> out;
+	out.swap(joined);
+	return out;
 }
 
 RdemSharedState& RdemSharedState::of(Scene* scene, shared_ptr<RdemSharedState>& mine)

@@ -10,9 +10,11 @@
 #include <lib/serialization/Serializable.hpp>
 #include <core/Body.hpp>
 #include <core/Engine.hpp>
+#include <core/Interaction.hpp>
 #include <pkg/rdem/RdemStiffnessSource.hpp>
 #include <boost/weak_ptr.hpp>
 #include <functional>
+#include <mutex>
 
 namespace yade {
 
@@ -65,11 +67,20 @@ public:
 	OpenMPAccumulator<int> tensionBreaks, shearBreaks;
 	/// Restoring springs broken so far (tension + shear): what the engines that follow cracks watch.
 	long brokenSprings() const { return long(tensionBreaks.get()) + long(shearBreaks.get()); }
-	/// Interactions that started or stopped leaving deferred forces since the last takeActiveSetChanged (law's threads).
+	/// Interactions that started or stopped leaving deferred forces since the last takeActiveSetChanges (law's threads).
 	OpenMPAccumulator<int> activeSetChanges;
-	/// Whether, since the last call, an interaction started or stopped leaving deferred forces; resets the record. Lets
+	/// How many interactions started or stopped leaving deferred forces since the last call; resets the record. Lets
 	/// RdemForceAssembler keep its per-body lists between such events.
-	bool takeActiveSetChanged();
+	int takeActiveSetChanges();
+	/// A physics that started leaving deferred forces (new, or back after a pause), with its bodies.
+	struct JoinedPhys {
+		shared_ptr<IPhys> phys;
+		Body::id_t        id1, id2;
+	};
+	/// Records that I starts leaving deferred forces in this step (the law's threads; an active-set change as well).
+	void join(const Interaction& I);
+	/// The physics that joined since the last call, in no particular order; empties the record (RdemForceAssembler).
+	vector<JoinedPhys> takeJoined();
 	/// How far each block has moved (written by RdemContactGate, read by Ig2_RdemBlock_RdemBlock_RdemGeom; not saved).
 	rdem::BodyTravel travel;
 	/// What adds to the scene's linear stiffness (its laws and Poisson engine, in the order of O.engines), for
@@ -110,6 +121,8 @@ public:
 	DECLARE_LOGGER;
 
 private:
+	std::mutex            joinedMutex; // a few interactions join in a step: a lock is cheap
+	vector<JoinedPhys>    joined;
 	rdem::EngineListStamp checkedEngines; // O.engines at the last check
 	/* Once per engine list (the first step, and whenever O.engines changes): hands self (this object) to the plugin's
 	   engines and functors that have none, and throws std::runtime_error naming the engine that holds another one, is

@@ -199,3 +199,56 @@ TEST(SeparationBound, CertifiedPairsStayApartUnderAnyMotionWithinTheSlack)
 }
 
 } // namespace
+
+TEST(SeparationBound, SampleOutsideIsTheDistanceBeyondTheGrownBox)
+{
+	const V3 h(0.5, 0.25, 0.125);
+	EXPECT_NEAR(rdem::sampleOutside<double>(h, V3(0.7, 0, 0)), 0.2 - 0.5e-9, 1e-15);
+	EXPECT_NEAR(rdem::sampleOutside<double>(h, V3(0.1, -0.35, 0.2)), 0.1 - 0.25e-9, 1e-15); // the largest over the axes
+	EXPECT_LT(rdem::sampleOutside<double>(h, V3(0.1, 0.1, 0.1)), 0);                        // inside
+}
+
+TEST(SeparationBound, ASampleOutsideByMoreThanTheTravelsStaysOutside)
+{
+	/* Random blocks Y (general rotations, half-extents 0.2-1 m) and sample points p of another block X (at distance up
+	   to ρ_X = |h_X| from X's centre) that lie outside Y: after 20 random rigid motions of X and Y whose travels add up
+	   to less than sampleOutside less separationMargin, sampleDepthLocal (along a random direction) never finds p
+	   inside the moved Y. Points and motions are drawn so that many lie within a few travels of Y's surface. */
+	std::mt19937 gen(2026);
+	int          tested = 0;
+	for (int k = 0; k < 3000; ++k) {
+		const Block  Y { V3(uniform(gen, -0.5, 0.5), uniform(gen, -0.5, 0.5), uniform(gen, -0.5, 0.5)),
+                                randomRotation(gen).toRotationMatrix(),
+                                V3(uniform(gen, 0.2, 1), uniform(gen, 0.2, 1), uniform(gen, 0.2, 1)) };
+		const V3     hX(uniform(gen, 0.2, 1), uniform(gen, 0.2, 1), uniform(gen, 0.2, 1));
+		const V3     xX = Y.pos + Y.rot * V3(uniform(gen, -1.5, 1.5), uniform(gen, -1.5, 1.5), uniform(gen, -1.5, 1.5));
+		const Q      qX = randomRotation(gen);
+		const V3     local(uniform(gen, -hX[0], hX[0]), uniform(gen, -hX[1], hX[1]), uniform(gen, -hX[2], hX[2])); // p in X's frame
+		const V3     p   = xX + qX * local;
+		const double out = rdem::sampleOutside<double>(Y.half, Y.rot.transpose() * (p - Y.pos));
+		if (!(out > 0)) continue;
+		const double margin = 1e-6 * (hX.norm() + Y.half.norm());
+		if (!(out > margin)) continue;
+		++tested;
+		for (int m = 0; m < 20; ++m) {
+			const Q qa      = Q(Eigen::AngleAxisd(uniform(gen, 0, 0.5), randomUnit(gen))),
+			        qb      = Q(Eigen::AngleAxisd(uniform(gen, 0, 0.5), randomUnit(gen)));
+			const V3     sa = uniform(gen, 0, 1) * randomUnit(gen), sb = uniform(gen, 0, 1) * randomUnit(gen);
+			const double ta = rdem::rigidTravel<double>(V3::Zero(), Q::Identity(), sa, qa, hX.norm());
+			const double tb = rdem::rigidTravel<double>(V3::Zero(), Q::Identity(), sb, qb, Y.half.norm());
+			const double f  = uniform(gen, 0, 0.99) * (out - margin) / (ta + tb);
+			// Scaled as in CertifiedPairsStayApartUnderAnyMotionWithinTheSlack (a travel grows by at most 1.0027 f).
+			const Eigen::AngleAxisd aa(qa), ab(qb);
+			const Q                 ra(Eigen::AngleAxisd(f * aa.angle(), aa.axis())), rb(Eigen::AngleAxisd(f * ab.angle(), ab.axis()));
+			const V3                p2 = xX + f * sa + ra * (qX * local);
+			const Block             Y2 = moved(Y, f * sb, rb);
+			ASSERT_LT(
+			        rdem::rigidTravel<double>(xX, qX, xX + f * sa, ra * qX, hX.norm())
+			                + rdem::rigidTravel<double>(Y.pos, Q(Y.rot), Y2.pos, Q(Y2.rot), Y.half.norm()),
+			        out - margin);
+			EXPECT_FALSE(rdem::sampleDepthLocal<double>(Y2.half, Y2.rot.transpose() * (p2 - Y2.pos), Y2.rot.transpose() * randomUnit(gen)).hit)
+			        << "point " << k << ", motion " << m;
+		}
+	}
+	EXPECT_GT(tested, 1000);
+}

@@ -1,6 +1,7 @@
-"""Pairs of blocks found apart are not tested again while their RdemGap certificate holds
-(Ig2_RdemBlock_RdemBlock_RdemGeom.skipApart, with the travel recorded by RdemContactGate; pkg/rdem/math/SeparationBound.hpp):
-the same bits with and without certificates, and the certificates are made and used."""
+"""Pairs of blocks found apart are not tested again while their RdemGap certificate holds, and a sampled contact tests
+only the samples of its sample certificate (Ig2_RdemBlock_RdemBlock_RdemGeom.skipApart, with the travel recorded by
+RdemContactGate; pkg/rdem/math/SeparationBound.hpp): the same bits with and without certificates, and the certificates
+are made and used."""
 import unittest
 import harness
 from yade import O, Vector3
@@ -13,7 +14,7 @@ E, NU, H = 30e9, 0.2, 0.01
 
 class SkipApart(unittest.TestCase):
 
-	def crackingRun(self, skip):
+	def crackingRun(self, skip, samples=1):
 		# The compression run of test_assembly.testPrefetchChangesNoResult (it cracks, makes sampled contacts, loses a
 		# block half-way: the travel record restarts), with a save and a load in the middle (certificates are not saved:
 		# every pair is tested again).
@@ -21,6 +22,7 @@ class SkipApart(unittest.TestCase):
 		harness.freshScene()
 		CompressionTest(blocksPerEdge=4, tensileStrength=2e6, rate=0.5, dt=2e-6)
 		rdem.build.geomFunctor().skipApart = skip
+		rdem.build.geomFunctor().contactSamplesPerEdge = samples
 		rdem.run(40)
 		O.bodies.erase(40)
 		rdem.run(20)
@@ -44,6 +46,14 @@ class SkipApart(unittest.TestCase):
 		# Tests were saved (the counter restarts with the load: the 40 steps after it).
 		self.assertGreater(skippedOn, 1000)
 		self.assertGreater(gapsOn, 100)
+
+	def testSameBitsWithAndWithoutOnTheWallsSampleGrid(self):
+		# The sample grid of the walls of doc/validation.md (contactSamplesPerEdge = 0: that of the 2×2 segments, 3×3
+		# samples per face), whose sample certificates skip most of a face's samples.
+		on, skippedOn, gapsOn = self.crackingRun(True, samples=0)
+		off, skippedOff, gapsOff = self.crackingRun(False, samples=0)
+		self.assertGreater(on[2], 0)  # sampled contacts
+		self.assertEqual(on, off)
 
 	def pair(self, gap, speed):
 		# Two loose cubes of side 2H side by side along x, a gap apart [m], the second moving towards the first [m/s].

@@ -70,5 +70,28 @@ namespace rdem {
 		return isfinite(slack) ? slack : -std::numeric_limits<S>::infinity();
 	}
 
+	/* How far a point q, given in block Y's frame (q = R_Yᵀ(p - x_Y)), lies outside the region in which sampleDepthLocal can
+	   find it inside Y, Y's box grown by tol·h_k along each axis k (its slab test |q_k| ≤ (1 + tol) h_k): the largest
+	   |q_k| - (1 + tol) h_k [m]; ≤ 0 where the point may be inside. The sample certificate of a sampled contact
+	   (Ig2_RdemBlock_RdemBlock_RdemGeom, RdemGeom::nearSamples) keeps the samples of a pair's two blocks less than a skin
+	   outside the other block, and tests only those while the blocks' travels add up to less than the skin less
+	   separationMargin.
+
+	   Guarantee: if afterwards the point moves by at most t_X (it is a material point of block X, within X's
+	   circumradius of its centroid: rigidTravel) and every point of Y's grown box by at most t_Y, with
+	   t_X + t_Y < sampleOutside - margin, sampleDepthLocal does not find it inside Y. Proof: along Y's axis k at the
+	   time of the certificate, now fixed in space, the point's coordinate has moved by at most t_X and the grown box's
+	   extent has grown by at most t_Y, so the point lies outside the moved grown box, and so beyond one of its slabs;
+	   the margin covers the round-off of the coordinates (~1e-16 of them) and the grown box's points lying up to 1e-9
+	   beyond the circumradius that rigidTravel is given. */
+	template <class S> S sampleOutside(const Eigen::Matrix<S, 3, 1>& half, const Eigen::Matrix<S, 3, 1>& q, S tol = S(1e-9))
+	{
+		using std::abs;
+		S out = -std::numeric_limits<S>::infinity();
+		for (int k = 0; k < 3; ++k)
+			out = std::max(out, abs(q[k]) - (1 + tol) * half[k]);
+		return out;
+	}
+
 } // namespace rdem
 } // namespace yade
