@@ -251,7 +251,7 @@ def setUp(ids):
 		for I in O.interactions.withBody(i):
 			if I.isReal and isinstance(I.phys, RdemPhys) and max(I.id1, I.id2) == i:
 				p = I.phys
-				bonds['%d-%d' % (I.id1, I.id2)] = (hexes(p, ('cellCoef1', 'cellCoef2', 'weightNormal', 'weightShear', 'centroidOffset', 'offsetCorrection')) +
+				bonds['%d-%d' % (I.id1, I.id2)] = (hexes(p, ('cellCoef1', 'cellCoef2', 'weightNormal', 'weightShear', 'offsetCorrection')) +
 				                                   hexes(I.geom, ('faceCentre1', 'faceCentre2')))
 	return cells, bonds
 
