@@ -104,7 +104,7 @@ from yade.rdem import scenes, build
 
 def cube():
 	formulation = {'off': None, 'hex8': 'paper', 'cells': 'consistent'}[args.poisson]
-	test = scenes.CompressionTest(blocksPerEdge=args.blocks, formulation=formulation, rate=args.rate)
+	test = scenes.CompressionTest(blocksPerEdge=args.blocks, formulation=formulation, rate=args.rate, distributed=args.mpi)
 	if args.poisson == 'cells':
 		build.poissonEngine().elements = 'cells'
 		build.poissonEngine().build(test.ids)
@@ -126,7 +126,7 @@ def wall():
 		raise SystemExit('mpi_compare: --scene wall has Poisson cells (--poisson cells)')
 	brick = RdemMat(young=16.7e9, poisson=0.15, density=1800, tensileStrength=2e6, cohesion=4e6, frictionAngle=0.6, label='brick')
 	O.materials.append(brick)
-	O.engines = build.engines(formulation='consistent', failureStress='total', recontact='always', dt=1e-9)
+	O.engines = build.engines(formulation='consistent', failureStress='total', recontact='always', dt=1e-9, distributed=args.mpi)
 	mortar = RdemJoint(young=5e9, poisson=0.2, tensileStrength=0.3e6, cohesion=0.5e6, frictionAngle=0.6)
 	global perRank
 	if args.per_rank:
@@ -168,7 +168,7 @@ def bigwall():
 		from yade.rdem import distributed
 		perRank = distributed.PerRank(master=lambda layout: [b for u in layout.beams() if layout.units[u].piece == 'base' for b in layout.units[u].blocks],
 		                              layers=args.layers)
-	w = scenes.runningBondWall(args.wall_blocks, dt=args.dt, only=perRank, beamCell=False)
+	w = scenes.runningBondWall(args.wall_blocks, dt=args.dt, only=perRank, beamCell=False, distributed=args.mpi)
 	if perRank is not None:
 		perRank.assign(w['ids'])
 	if args.contacts == 'always':

@@ -103,7 +103,7 @@ def buildWall(blocks, only=None):
 	from yade.rdem import scenes
 	# the base beam stays on the master (rdem.distributed.prepare(master=)), which must hold no Poisson cell: without one
 	# in every run, serial ones too, so that all run the same scene
-	return scenes.runningBondWall(blocks, dt=args.dt if args.dt > 0 else None, only=only, beamCell=False)
+	return scenes.runningBondWall(blocks, dt=args.dt if args.dt > 0 else None, only=only, beamCell=False, distributed=args.mpi)
 
 
 def child():

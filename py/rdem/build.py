@@ -5,6 +5,7 @@ can break (all strengths infinite) and ``recontact=False``, a collider kept dead
 spring breaks, no Poisson engine when ``formulation=None``.
 """
 import math
+import os
 from yade import O, utils, Vector3, Quaternion
 from yade.wrapper import (Body, RdemBlock, RdemMat, RdemJoint, ForceResetter, InsertionSortCollider, Bo1_Box_Aabb, InteractionLoop, Ig2_RdemBlock_RdemBlock_RdemGeom,
                           Ip2_RdemMat_RdemMat_RdemPhys, Law2_RdemGeom_RdemPhys_FaceSprings, RdemPoissonEngine, RdemCellStrainUpdater, RdemTimeStepper,
@@ -244,6 +245,16 @@ def _aligned(a, b):
 	return all(min(abs(abs(R[i, j]) - 1), abs(R[i, j])) < 1e-9 for i in range(3) for j in range(3))
 
 
+def mpiProcesses():
+	"""How many processes ``mpiexec`` launched together with this one: the size of MPI's world from the launcher's
+	environment (Open MPI's ``OMPI_COMM_WORLD_SIZE``, MPICH's and Intel MPI's ``PMI_SIZE``), 1 when not launched by it."""
+	for name in ('OMPI_COMM_WORLD_SIZE', 'PMI_SIZE'):
+		value = os.environ.get(name, '')
+		if value.isdigit():
+			return int(value)
+	return 1
+
+
 def engines(segmentsPerEdge=2,
             formulation='paper',
             corotational=False,
@@ -262,6 +273,7 @@ def engines(segmentsPerEdge=2,
             strengthPerSegment=False,
             stiffnessCoV=0.0,
             seed=0,
+            distributed=False,
             **removed):
 	"""The engine list of a refined-DEM scene. Every engine and functor carries a label of :data:`LABELS` (``rdemNewton``,
 	``rdemPoisson``, ...), by which :func:`poissonEngine`, :func:`newtonIntegrator` and the others find it.
@@ -307,12 +319,21 @@ def engines(segmentsPerEdge=2,
 	:param stiffnessCoV: the same for the bonds' spring stiffnesses.
 	:param seed: seed of the random factors; a fixed seed reproduces a scene bit for bit.
 	:param finiteGuard: append :yref:`RdemFiniteGuard` after the integrator: the run stops at the first NaN or infinite
-	    position, velocity or force, naming the body and interactions (costs < 1 % of a step)."""
+	    position, velocity or force, naming the body and interactions (costs < 1 % of a step).
+	:param distributed: ``True`` for a scene made to run on YADE's MPI (``yade.mpy``; distributed by
+	    :func:`rdem.distributed.prepare`, :ref:`rdem-mpi`). ``False`` (default): a serial scene, refused with a RuntimeError
+	    when the process is one of several that ``mpiexec`` launched (:func:`mpiProcesses`), since each would run all of it."""
 	if 'poisson' in removed:
 		raise TypeError("rdem.engines(poisson=%r): the formulation's keyword is formulation=, e.g. rdem.engines(formulation=%r) "
 		                "('paper', 'consistent' or None); poisson is Poisson's ratio (RdemMat.poisson)" % (removed['poisson'], removed['poisson']))
 	if removed:
 		raise TypeError('rdem.engines() got an unexpected keyword argument %r' % sorted(removed)[0])
+	if not isinstance(distributed, bool):
+		raise ValueError('distributed = %r: must be True or False' % (distributed, ))
+	if mpiProcesses() > 1 and not distributed:
+		raise RuntimeError('rdem.engines: this process is one of %d that mpiexec launched, but the scene is serial (distributed=False): '
+		                   'each process would run all of it. Run it without mpiexec, or make it for YADE\'s MPI with '
+		                   'rdem.engines(distributed=True) and rdem.distributed.prepare() (the MPI page of the user guide; scripts/mpi_compare.py)' % mpiProcesses())
 	if formulation not in POISSON_MODES:
 		raise ValueError('formulation = %r: must be one of %s or None' % (formulation, sorted(k for k in POISSON_MODES if k)))
 	if not (isinstance(segmentsPerEdge, int) and segmentsPerEdge >= 1):

@@ -38,7 +38,8 @@ class CompressionTest:
 	             platePoisson=None,
 	             rate=1.0e-3,
 	             dt=2.0e-6,
-	             contactSamples=None):
+	             contactSamples=None,
+	             distributed=False):
 		if not (isinstance(blocksPerEdge, int) and blocksPerEdge >= 2):
 			raise ValueError('blocksPerEdge = %r: must be an integer >= 2' % (blocksPerEdge, ))
 		for name, value in (('size', size), ('plateHeight', plateHeight), ('rate', rate)):
@@ -90,7 +91,8 @@ class CompressionTest:
 		                          corotational=corotational,
 		                          recontact=breakable,
 		                          dt=dt,
-		                          verletDist=0.05 * h)
+		                          verletDist=0.05 * h,
+		                          distributed=distributed)
 		n = blocksPerEdge
 		grey, red, blue = Vector3(.7, .7, .7), Vector3(.9, .2, .2), Vector3(.5, .7, 1)
 		self.bottom = build.blockGrid((n, n, 1), (h, h, plateHeight), self.plateMaterial, color=blue)
@@ -362,7 +364,7 @@ class RockingBlock:
 		return t
 
 
-def runningBondWall(blocks, dt=None, only=None, beamCell=True):
+def runningBondWall(blocks, dt=None, only=None, beamCell=True, distributed=False):
 	"""A running-bond brick wall of about ``blocks`` blocks standing on a fixed base beam under gravity: the large wall
 	of the benchmarks (``scripts/benchmark.py --cases bigwall``, ``scripts/mpi_scaling.py``).
 
@@ -377,6 +379,7 @@ def runningBondWall(blocks, dt=None, only=None, beamCell=True):
 	    :class:`rdem.distributed.PerRank`); the Poisson cells are built on the blocks made.
 	:param beamCell: give the base beam a Poisson cell too (default, the benchmarks' scene); ``False`` on YADE's MPI when
 	    the beam stays on the master, whose cells :func:`rdem.distributed.check` refuses.
+	:param distributed: made to run on YADE's MPI (:func:`rdem.engines`' ``distributed``).
 	:return: dict ``perCourse``, ``courses`` (bricks), ``ids`` (the wall's blocks), ``base`` (the fixed beam's blocks),
 	    ``made`` (the blocks made in this scene: ``ids``, or those ``only`` chose).
 	"""
@@ -393,7 +396,7 @@ def runningBondWall(blocks, dt=None, only=None, beamCell=True):
 	joint = RdemJoint(young=2.991e9, poisson=0.25, tensileStrength=0.15e6, cohesion=0.21e6, frictionAngle=math.atan(0.81), fractureEnergy=18,
 	                  shearFractureEnergy=125, compressiveStrength=7.92e6, compressiveFractureEnergy=5000)
 	O.engines = build.engines(segmentsPerEdge=2, contactSamples=2, formulation='consistent', failureStress='total', softening=True, gravity=(0, 0, -9.81),
-	                          damping=0.2, verletDist=0.003, dt=dt)
+	                          damping=0.2, verletDist=0.003, dt=dt, distributed=distributed)
 	w = masonry.wall(perCourse * 0.26 - 0.01, courses * 0.065 - 0.01, 0.12, blocksPerBrick=(2, 1, 1), baseBeam=0.1, brickMaterial=brick, jointMaterial=joint,
 	                 only=only)
 	build.poissonEngine().elements = 'cells'

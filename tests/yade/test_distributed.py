@@ -1,6 +1,7 @@
 """rdem.distributed's reading of a scene (features) and the refusals it leads to, and RdemBondKeeper's record of the bonds
 across a cut, on real scenes of the plugin, in any YADE (without MPI every body counts as on the master, and the keeper
 refuses). The runs on mpy are tests/mpi/test_mpy.py."""
+import os
 import unittest
 import harness
 from yade import O
@@ -95,5 +96,50 @@ class Features(unittest.TestCase):
 				self.assertEqual(v, wholeBonds[k], k)
 
 
+class SerialScenesUnderMpiexec(unittest.TestCase):
+	"""A serial scene launched by mpiexec would run whole on every process (each writing the same outputs): rdem.engines
+	refuses it unless it is made for YADE's MPI (distributed=True). The launcher's environment is set here as
+	Open MPI's and MPICH's mpiexec set it for 3 processes."""
+
+	LAUNCHERS = ('OMPI_COMM_WORLD_SIZE', 'PMI_SIZE')
+
+	def launchedBy(self, name):
+		"""The environment of a process that mpiexec launched as one of 3 (name: the launcher's variable), or of a process
+		it did not launch (None); the test's environment is restored at its end."""
+		saved = {n: os.environ.get(n) for n in self.LAUNCHERS}
+
+		def restore():
+			for n, v in saved.items():
+				if v is None:
+					os.environ.pop(n, None)
+				else:
+					os.environ[n] = v
+
+		self.addCleanup(restore)
+		for n in self.LAUNCHERS:
+			os.environ.pop(n, None)
+		if name:
+			os.environ[name] = '3'
+
+	def test_refused_unless_distributed(self):
+		for name in self.LAUNCHERS:
+			self.launchedBy(name)
+			self.assertEqual(build.mpiProcesses(), 3)
+			O.reset()
+			with self.assertRaisesRegex(RuntimeError, 'one of 3 that mpiexec launched'):
+				build.engines()
+			with self.assertRaisesRegex(RuntimeError, 'one of 3 that mpiexec launched'):
+				scenes.CompressionTest(blocksPerEdge=2)
+			self.assertGreater(len(build.engines(distributed=True)), 0)
+			self.assertEqual(len(scenes.CompressionTest(blocksPerEdge=2, distributed=True).ids), 16)
+
+	def test_serial_process(self):
+		self.launchedBy(None)
+		self.assertEqual(build.mpiProcesses(), 1)
+		self.assertGreater(len(build.engines()), 0)
+		with self.assertRaisesRegex(ValueError, '^distributed'):
+			build.engines(distributed='yes')
+
+
 if __name__ == '__main__':
-	harness.run(Features)
+	harness.run(Features, SerialScenesUnderMpiexec)
