@@ -399,11 +399,11 @@ def runningBondWall(blocks, dt=None, only=None, beamCell=True, distributed=False
 	                          damping=0.2, verletDist=0.003, dt=dt, distributed=distributed)
 	w = masonry.wall(perCourse * 0.26 - 0.01, courses * 0.065 - 0.01, 0.12, blocksPerBrick=(2, 1, 1), baseBeam=0.1, brickMaterial=brick, jointMaterial=joint,
 	                 only=only)
+	for i in w.beams['base']:  # fixed before the cells are built, which read the prescribed axes from the DOFs
+		if i < len(O.bodies) and O.bodies[i] is not None:
+			O.bodies[i].state.blockedDOFs = 'xyzXYZ'
 	build.poissonEngine().elements = 'cells'
 	base = set(w.beams['base'])
 	build.poissonEngine().build(w.made if beamCell else [i for i in w.made if i not in base])
-	for i in w.beams['base']:
-		if i < len(O.bodies) and O.bodies[i] is not None:
-			O.bodies[i].state.blockedDOFs = 'xyzXYZ'
 	O.dt = dt if dt else -1
 	return dict(perCourse=perCourse, courses=courses, ids=list(w.ids), base=list(w.beams['base']), made=list(w.made))

@@ -111,11 +111,11 @@ class OffsetCorrectionSetsTheStep(unittest.TestCase):
 	a 5.2 m base beam). Its 40 beam bonds are its only ones with offset centroids, and their shear springs' offset
 	correction (rdem::offsetSlip) takes the beam's strain at the face centre, up to 2.6 m from the beam's centroid: a
 	stiff coupling that RdemTimeStepper must count (rdem::BlockStiffness::addOffsetShear; that K is the forces' own is
-	tests/yade/test_stiffness_source.py's). Measured: critical step 30.2 µs with the coupling, 43.9 µs without. At the
-	automatic step the wall settles with no broken spring and a horizontal speed of 2.5·10⁻³ m/s after 32 steps; at
-	0.8 × 43.9 µs (the step before the coupling was counted) its speed reached 0.080 m/s after 16 steps and 4 springs of
-	the beam bonds broke. The criterion: the horizontal motion under gravity comes from the Poisson expansion of the
-	settling wall, so it stays below the free-fall speed g·t (7.6·10⁻³ m/s after 32 steps)."""
+	tests/yade/test_stiffness_source.py's). Measured: critical step 30.9 µs with the coupling, 43.9 µs without. At the
+	automatic step the wall settles with no broken spring and a horizontal speed of 3.1·10⁻³ m/s after 32 steps; at
+	0.8 × 43.9 µs (the step before the coupling was counted) its speed reached 0.058 m/s after 32 steps and 4 springs of
+	the beam bonds broke by step 128. The criterion: the horizontal motion under gravity comes from the Poisson
+	expansion of the settling wall, so it stays below the free-fall speed g·t (7.8·10⁻³ m/s after 32 steps)."""
 
 	def wall(self):
 		harness.freshScene()
