@@ -83,20 +83,22 @@ namespace {
 
 	/* Offset correction of a bond's intact shear springs (rdem::offsetSlip, doc/sphinx/rdemTheory.rst §5.4): the slip E₁a₁ - E₂a₂
 	   that the blocks' cell strains (RdemState::strain, scaled by RdemState::cellScale, from RdemCellStrainUpdater) give
-	   at the bonded face's centre, a_b its offset from block b's centroid along the face, in global coordinates and in
-	   the tangent plane of n [m]. */
-	Vector3r cellOffsetSlip(const State& s1, const State& s2, const Matrix3r& R1, const Matrix3r& R12, const RdemGeom& g, const Vector3r& n)
+	   at the bonded face's centre, a_b its offset from block b's centroid along the face (a1 in body 1's frame, a2 in body
+	   2's), in global coordinates and in the tangent plane of n [m]. */
+	Vector3r cellOffsetSlip(
+	        const State&    s1,
+	        const State&    s2,
+	        const Matrix3r& R1,
+	        const Matrix3r& R12,
+	        const RdemGeom& g,
+	        const Vector3r& a1,
+	        const Vector3r& a2,
+	        const Vector3r& n)
 	{
 		const auto&    a     = static_cast<const RdemState&>(s1);
 		const auto&    b     = static_cast<const RdemState&>(s2);
-		const Vector3r local = rdem::offsetSlip<Real>(
-		        a.cellScale * a.strain,
-		        rdem::alongFace<Real>(g.faceCentre1, g.segNormal1),
-		        R12,
-		        b.cellScale * b.strain,
-		        rdem::alongFace<Real>(g.faceCentre2, g.segNormal2),
-		        g.segNormal1);
-		const Vector3r slip = R1 * local;
+		const Vector3r local = rdem::offsetSlip<Real>(a.cellScale * a.strain, a1, R12, b.cellScale * b.strain, a2, g.segNormal1);
+		const Vector3r slip  = R1 * local;
 		return slip - slip.dot(n) * n;
 	}
 
@@ -348,9 +350,12 @@ namespace {
 		// Bonds whose centroids are offset along the face (cells only): the intact shear springs measure d_t - slip.
 		const bool     offset = p.offsetCorrection;
 		const Matrix3r R12    = offset ? Matrix3r(b.R1.transpose() * pair.s2.ori.toRotationMatrix()) : Matrix3r::Identity();
-		b.slip                = offset ? cellOffsetSlip(pair.s1, pair.s2, b.R1, R12, g, b.n) : Vector3r::Zero();
-		b.sigmaCells          = totalStress ? cellNormalStress(pair.s1, pair.s2, g, p) : Real(0);
-		const bool withCells  = offset || totalStress;
+		// the face centre's offsets from the centroids along the face (rdem::offsetSlip's a₁, a₂), for the slip and its gradient
+		const Vector3r a1    = offset ? rdem::alongFace<Real>(g.faceCentre1, g.segNormal1) : Vector3r::Zero();
+		const Vector3r a2    = offset ? rdem::alongFace<Real>(g.faceCentre2, g.segNormal2) : Vector3r::Zero();
+		b.slip               = offset ? cellOffsetSlip(pair.s1, pair.s2, b.R1, R12, g, a1, a2, b.n) : Vector3r::Zero();
+		b.sigmaCells         = totalStress ? cellNormalStress(pair.s1, pair.s2, g, p) : Real(0);
+		const bool withCells = offset || totalStress;
 		if (p.softening) {
 			if (withCells) softeningSegmentForces<true>(b, p, e, breaks);
 			else
@@ -362,13 +367,7 @@ namespace {
 		out.f += b.fSum;
 		out.t += b.kin.r0.cross(b.fSum) + b.kin.ra.cross(b.fs) + b.kin.rb.cross(b.fr);
 		if (offset) {
-			rdem::offsetSlipGradient<Real>(
-			        b.R1.transpose() * b.tSum,
-			        R12,
-			        rdem::alongFace<Real>(g.faceCentre1, g.segNormal1),
-			        rdem::alongFace<Real>(g.faceCentre2, g.segNormal2),
-			        p.offsetGrad1,
-			        p.offsetGrad2);
+			rdem::offsetSlipGradient<Real>(b.R1.transpose() * b.tSum, R12, a1, a2, p.offsetGrad1, p.offsetGrad2);
 			p.offsetGrad1 *= static_cast<const RdemState&>(pair.s1).cellScale;
 			p.offsetGrad2 *= static_cast<const RdemState&>(pair.s2).cellScale;
 		}
