@@ -24,7 +24,7 @@ Needs YADE built with MPI (``tools/setup.sh --mpi``): the plain YADE has no :yre
 import math
 from yade import O, Body
 from yade.wrapper import RdemBlock, RdemMat, RdemPoissonEngine, RdemCellStrainUpdater, InsertionSortCollider, InteractionLoop, Bo1_Box_Aabb
-from .partition import bisect, counts, neighbourhood, refusals
+from .partition import neighbourhood, ranks, refusals
 
 __all__ = ['assign', 'PerRank', 'features', 'check', 'prepare', 'localBreakCounts', 'breakCounts', 'energies']
 
@@ -36,36 +36,30 @@ def _fixed(b):
 
 def assign(workers, master=()):
 	"""Set :yref:`Body.subdomain` of every block: ``master`` (ids of fixed blocks) stay on rank 0, the others go to ranks
-	1 … ``workers`` by :func:`rdem.partition.bisect` of their centroids. Returns the number of blocks of each worker.
+	1 … ``workers`` by a bisection of their centroids (:func:`rdem.partition.ranks`). Returns the number of blocks of each worker.
 
 	:raises ValueError: a body that is not a block, a master body that is not fixed, or what ``bisect`` refuses."""
 	if not hasattr(Body(), 'subdomain'):
 		raise RuntimeError('rdem.distributed.assign: this YADE has no Body.subdomain (built without MPI); use build-mpi/bin/yade (tools/setup.sh --mpi)')
 	master = set(master)
-	ids = []
-	for b in O.bodies:
-		if b is None or b.isSubdomain:
-			continue
+	blocks = [b for b in O.bodies if b is not None and not b.isSubdomain]
+	for b in blocks:
 		if not isinstance(b.shape, RdemBlock):
 			raise ValueError('assign: body %d is not an RdemBlock; only blocks can be assigned to subdomains' % b.id)
-		if b.id in master:
-			if not _fixed(b):
-				raise ValueError('assign: body %d on the master moves (blockedDOFs %r, vel %s): mpy sends the master\'s states to no worker, '
-				                 'only fixed bodies may stay there' % (b.id, b.state.blockedDOFs, b.state.vel))
-			b.subdomain = 0
-		else:
-			ids.append(b.id)
-	parts = bisect([O.bodies[i].state.pos for i in ids], workers)
-	for i, p in zip(ids, parts):
-		O.bodies[i].subdomain = p + 1
-	return counts(parts, workers)
+		if b.id in master and not _fixed(b):
+			raise ValueError('assign: body %d on the master moves (blockedDOFs %r, vel %s): mpy sends the master\'s states to no worker, '
+			                 'only fixed bodies may stay there' % (b.id, b.state.blockedDOFs, b.state.vel))
+	rank, perWorker = ranks([b.state.pos for b in blocks], set(k for k, b in enumerate(blocks) if b.id in master), workers)
+	for b, r in zip(blocks, rank):
+		b.subdomain = r
+	return perWorker
 
 
 class PerRank:
 	"""Which blocks of a layout this rank makes, for a set-up on mpy in which no rank holds the whole scene (mpy's
 	``DISTRIBUTED_INSERT``; YADE's user manual, *MPI parallelization*, "Centralized versus distributed scene
 	construction"). Every rank lays out the whole scene (the boxes and their touching pairs: geometry only, no bodies),
-	cuts it into subdomains as :func:`assign` would (:func:`rdem.partition.bisect` of the block centroids, ``master``
+	cuts it into subdomains as :func:`assign` does (:func:`rdem.partition.ranks`: a bisection of the block centroids, ``master``
 	blocks on rank 0), and makes only its own blocks and those within two bonds of them
 	(:func:`rdem.partition.neighbourhood`), each with the id the whole scene gives it. A bond across a cut is thus made on
 	both of its ranks from the same two blocks, as the serial set-up makes it, and :func:`prepare` keeps it through mpy's
@@ -95,14 +89,8 @@ class PerRank:
 		if workers < 1:
 			raise ValueError('workers = %r: mpy needs at least one worker besides the master (mpiexec -n 2 or more)' % (workers, ))
 		master = set(self.master(layout) if callable(self.master) else self.master)
-		n = len(layout.blocks)
-		others = [k for k in range(n) if k not in master]
-		centres = [tuple((lo[d] + hi[d]) / 2 for d in range(3)) for lo, hi in (layout.blocks[k] for k in others)]
-		self.subdomain = [0] * n
-		parts = bisect(centres, workers)
-		for k, p in zip(others, parts):
-			self.subdomain[k] = p + 1
-		self.perWorker = counts(parts, workers)
+		centres = [tuple((lo[d] + hi[d]) / 2 for d in range(3)) for lo, hi in layout.blocks]
+		self.subdomain, self.perWorker = ranks(centres, master, workers)
 		return neighbourhood(self.subdomain, [(p[0], p[1]) for p in layout.pairs], mpy.rank, self.layers)
 
 	def assign(self, ids):

@@ -22,7 +22,7 @@ Typical use::
     parts = bisect([(0.1, 0, 0), (0.3, 0, 0), (0.5, 0, 0), (0.7, 0, 0)], 2)   # [0, 0, 1, 1]
 """
 
-__all__ = ['bisect', 'counts', 'neighbourhood', 'refusals']
+__all__ = ['bisect', 'counts', 'ranks', 'neighbourhood', 'refusals']
 
 
 def _cut(order, coord, wanted, tol):
@@ -91,6 +91,21 @@ def counts(parts, n):
 	for p in parts:
 		c[p] += 1
 	return c
+
+
+def ranks(centres, master, workers):
+	"""The rank of each block on mpy, and the number of blocks of each worker: the blocks whose indices are in ``master``
+	stay on the master (rank 0), the others go to ranks 1 … ``workers`` by :func:`bisect` of their centroids
+	(``centres``, in the order of the blocks). What :func:`rdem.distributed.assign` and :class:`rdem.distributed.PerRank`
+	give :yref:`Body.subdomain`.
+
+	:raises ValueError: what :func:`bisect` refuses."""
+	others = [k for k in range(len(centres)) if k not in master]
+	parts = bisect([centres[k] for k in others], workers)
+	rank = [0] * len(centres)
+	for k, p in zip(others, parts):
+		rank[k] = p + 1
+	return rank, counts(parts, workers)
 
 
 def neighbourhood(parts, pairs, part, layers=2):

@@ -7,7 +7,7 @@ import sys
 import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'py'))
-from rdem.partition import bisect, counts, neighbourhood, refusals  # noqa: E402
+from rdem.partition import bisect, counts, neighbourhood, ranks, refusals  # noqa: E402
 
 
 def grid(nx, ny, nz, h=0.02):
@@ -87,6 +87,23 @@ class Bisect(unittest.TestCase):
 			bisect(grid(1, 1, 2) + [(0.01, 0.01, 0.01)], 3)  # two layers (2 and 1 blocks) cannot make 3 subdomains
 		with self.assertRaisesRegex(ValueError, '3 coordinates'):
 			bisect([(0, 0)], 1)
+
+
+class Ranks(unittest.TestCase):
+
+	def test_master_blocks_stay_and_the_others_are_bisected(self):
+		# a 4 x 1 x 2 grid whose bottom row (a fixed beam, indices 0-3) stays on the master; the top row (4-7) goes to two
+		# workers, cut across x (its longest side): ranks 1, 1, 2, 2, as bisect of the top row alone gives them
+		c = grid(4, 1, 2)
+		rank, perWorker = ranks(c, {0, 1, 2, 3}, 2)
+		self.assertEqual(rank, [0, 0, 0, 0, 1, 1, 2, 2])
+		self.assertEqual(perWorker, [2, 2])
+		self.assertEqual(rank[4:], [p + 1 for p in bisect(c[4:], 2)])
+
+	def test_no_master(self):
+		rank, perWorker = ranks(grid(10, 10, 12), set(), 2)
+		self.assertEqual(perWorker, [600, 600])
+		self.assertNotIn(0, rank)
 
 
 class Neighbourhood(unittest.TestCase):
