@@ -330,10 +330,11 @@ def engines(segmentsPerEdge=2,
 		raise TypeError('rdem.engines() got an unexpected keyword argument %r' % sorted(removed)[0])
 	if not isinstance(distributed, bool):
 		raise ValueError('distributed = %r: must be True or False' % (distributed, ))
-	if mpiProcesses() > 1 and not distributed:
+	processes = mpiProcesses()
+	if processes > 1 and not distributed:
 		raise RuntimeError('rdem.engines: this process is one of %d that mpiexec launched, but the scene is serial (distributed=False): '
 		                   'each process would run all of it. Run it without mpiexec, or make it for YADE\'s MPI with '
-		                   'rdem.engines(distributed=True) and rdem.distributed.prepare() (the MPI page of the user guide; scripts/mpi_compare.py)' % mpiProcesses())
+		                   'rdem.engines(distributed=True) and rdem.distributed.prepare() (the MPI page of the user guide; scripts/mpi_compare.py)' % processes)
 	if formulation not in POISSON_MODES:
 		raise ValueError('formulation = %r: must be one of %s or None' % (formulation, sorted(k for k in POISSON_MODES if k)))
 	if not (isinstance(segmentsPerEdge, int) and segmentsPerEdge >= 1):
