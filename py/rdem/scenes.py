@@ -387,6 +387,8 @@ def runningBondWall(blocks, dt=None, only=None, beamCell=True, distributed=False
 	from . import masonry
 	if not blocks > 0:
 		raise ValueError('blocks = %r: must be > 0' % blocks)
+	if not isinstance(beamCell, bool):
+		raise ValueError('beamCell = %r: must be True or False' % (beamCell, ))
 	bricks = blocks / 2
 	perCourse = max(2, int(round(math.sqrt(bricks * 4 / 5))))
 	courses = max(2, int(round(bricks / perCourse)))

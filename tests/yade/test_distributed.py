@@ -139,6 +139,8 @@ class SerialScenesUnderMpiexec(unittest.TestCase):
 		self.assertGreater(len(build.engines()), 0)
 		with self.assertRaisesRegex(ValueError, '^distributed'):
 			build.engines(distributed='yes')
+		with self.assertRaisesRegex(ValueError, '^beamCell'):
+			scenes.runningBondWall(100, beamCell='no')
 
 
 if __name__ == '__main__':
