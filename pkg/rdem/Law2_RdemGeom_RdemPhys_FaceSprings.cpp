@@ -703,6 +703,8 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::addStiffness(Scene* sc, rdem::BlockStif
 			        K.addPointSpring(b1, b2, r1, r2, n, kn, ks);
 			        C.addPointSpring(b1, b2, r1, r2, n, cn, cs); // nothing where no dashpot acts (zero)
 		        });
+		K.endPair();
+		C.endPair();
 	}
 }
 

@@ -13,6 +13,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstdlib>
 #include <gtest/gtest.h>
 
 namespace {
@@ -68,6 +69,7 @@ rdem::BlockStiffness<double> grid(int nx, int ny, int nz, double h, double kn, d
 					const V3 p = centres[a] + h * n + 0.5 * h * (s * t1 + r * t2); // segment centre, global
 					K.addPointSpring(long(a), long(b), p - centres[a], p - centres[b], n, kn, ks);
 				}
+			K.endPair();
 		}
 	return K;
 }
@@ -90,6 +92,7 @@ TEST(StiffnessSpectrum, ChainOfNormalSpringsHasTheClosedFormSpectrum)
 	for (long b = 0; b + 1 < N; ++b) {
 		K.beginPair(b, b + 1);
 		K.addPointSpring(b, b + 1, V3::Zero(), V3::Zero(), V3::UnitX(), k, 0);
+		K.endPair();
 	}
 	const auto scale = cubes(N, m, 0.1);
 	const MX   A     = normalised(K, scale);
@@ -118,6 +121,46 @@ TEST(StiffnessSpectrum, BlockOnAGroundedFace)
 	const MX A = normalised(K, cubes(1, m, h));
 	EXPECT_NEAR(A(2, 2), 4 * kn / m, 1e-12);
 	EXPECT_NEAR(A(3, 3), kn * h * h / I, 1e-12);
+}
+
+TEST(StiffnessSpectrum, PairSumsMatchTheSpringsOneByOne)
+{
+	// A pair's blocks are made from the moments of its springs' arms (BlockStiffness::endPair); here against the
+	// definition written out spring by spring: d = J(r2) x2 - J(r1) x1, J(r) = [I, -[r]×], energy ½ dᵀK_s d, for 16
+	// springs at random common points with random normals and stiffnesses, bodies at random centroids. The entries are
+	// sums of 16 products of O(1) numbers: 1e-12 relative covers their round-off.
+	std::srand(7);
+	const V3   c1 = V3::Random(), c2 = c1 + V3(1.0, 0.3, -0.2);
+	MX         ref = MX::Zero(12, 12);
+	const auto J   = [](const V3& r) {
+                Eigen::Matrix<double, 3, 6> j;
+                j << M3::Identity(), -(M3() << 0, -r[2], r[1], r[2], 0, -r[0], -r[1], r[0], 0).finished();
+                return j;
+	};
+	rdem::BlockStiffness<double> K(2);
+	K.beginPair(0, 1);
+	for (int i = 0; i < 16; ++i) {
+		const V3     p  = (c1 + c2) / 2 + 0.4 * V3::Random();
+		const V3     n  = V3::Random().normalized();
+		const double kn = 2 + std::abs(V3::Random()[0]), ks = 1 + std::abs(V3::Random()[0]);
+		K.addPointSpring(0, 1, p - c1, p - c2, n, kn, ks);
+		const M3                     Ks = kn * n * n.transpose() + ks * (M3::Identity() - n * n.transpose());
+		Eigen::Matrix<double, 3, 12> Jd;
+		Jd << -J(p - c1), J(p - c2);
+		ref += Jd.transpose() * Ks * Jd;
+	}
+	K.endPair();
+	EXPECT_LT((K.dense() - ref).norm(), 1e-12 * ref.norm());
+	// The protocol: springs of a pair sit at common points, inside beginPair ... endPair.
+	rdem::BlockStiffness<double> L(2);
+	L.beginPair(0, 1);
+	L.addPointSpring(0, 1, V3(0.1, 0, 0), V3(-0.9, 0, 0), V3::UnitX(), 1, 1);
+	EXPECT_THROW(L.addPointSpring(0, 1, V3(0.1, 0.2, 0), V3(-0.9, 0, 0), V3::UnitX(), 1, 1), std::logic_error);
+	std::vector<double> x(12, 1), y(12);
+	EXPECT_THROW(L.multiply(x.data(), y.data()), std::logic_error);
+	EXPECT_THROW(L.beginPair(0, 1), std::logic_error);
+	L.endPair();
+	EXPECT_THROW(L.endPair(), std::logic_error);
 }
 
 TEST(StiffnessSpectrum, GridIsSymmetricAndFreeOfRigidMotions)
@@ -200,6 +243,7 @@ TEST(StiffnessSpectrum, OffsetShearCompletesTheShearSpringsEnergy)
 	const size_t cell0 = K.addCell(K0, { { q0, 0, c00 }, { q1, 2, c01 } }), cell1 = K.addCell(K1, { { q0, 0, c10 } });
 	K.beginPair(0, 1);
 	K.addPointSpring(0, 1, r1, r2, n, 0, k);
+	K.endPair();
 	K.addOffsetShear(0, 1, r1, r2, n, k, long(cell0), A1, long(cell1), A2);
 	const auto at = [](const VX& x, long b, const V3& r) -> V3 { return x.segment<3>(6 * b) + V3(x.segment<3>(6 * b + 3)).cross(r); };
 	const auto E  = [&](const VX& x) {
@@ -224,6 +268,7 @@ TEST(StiffnessSpectrum, OffsetShearCompletesTheShearSpringsEnergy)
 	plain.addCell(K1, { { p0, 0, c10 } });
 	plain.beginPair(0, 1);
 	plain.addPointSpring(0, 1, r1, r2, n, 0, k);
+	plain.endPair();
 	EXPECT_GT((K.dense() - plain.dense()).norm(), 1e-3 * H.norm());
 }
 

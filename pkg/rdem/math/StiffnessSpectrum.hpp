@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -79,24 +80,56 @@ namespace rdem {
 		/// Whether nothing nonzero was added (then K x = 0 for every x).
 		bool empty() const { return !anyTerm; }
 
-		/// Opens the pair (b1, b2) for addPointSpring (b1 ≠ b2, both ≥ 0); springs to a fixed point need none.
+		/// Opens the pair (b1, b2) for addPointSpring (b1 ≠ b2, both ≥ 0) until endPair; springs to a fixed point need none.
 		void beginPair(long b1, long b2)
 		{
-			pairs.push_back({ b1, b2 });
-			offDiag.push_back(M6::Zero());
+			if (open.active) throw std::logic_error("BlockStiffness::beginPair: the pair opened last was not closed (endPair)");
+			open        = OpenPair();
+			open.b1     = b1;
+			open.b2     = b2;
+			open.active = true;
 		}
 
-		/// A point spring between body b1 (arm r1 from its centroid) and body b2 (arm r2) [m], unit normal n, stiffnesses
-		/// k_n, k_s [N/m]; b2 < 0: a spring to a fixed point. Adds to the pair opened last by beginPair when b2 ≥ 0.
+		/* A point spring between body b1 (arm r1 from its centroid) and body b2 (arm r2) [m], unit normal n, stiffnesses
+		   k_n, k_s [N/m]; b2 < 0: a spring to a fixed point. When b2 ≥ 0 it belongs to the pair opened by beginPair, whose
+		   springs all sit at material points common to both bodies: r1 - r2 = d, one offset of the centroids per pair
+		   (checked to round-off). Such a pair's terms are summed as moments of its arms and made 6×6 blocks once, by
+		   endPair. */
 		void addPointSpring(long b1, long b2, const V3& r1, const V3& r2, const V3& n, S kn, S ks)
 		{
 			if (kn == 0 && ks == 0) return;
-			anyTerm     = true;
-			const M3 Ks = kn * n * n.transpose() + ks * (M3::Identity() - n * n.transpose());
-			diag[size_t(b1)] += jtkj(Ks, r1, r1);
-			if (b2 < 0) return;
-			diag[size_t(b2)] += jtkj(Ks, r2, r2);
-			offDiag.back() -= jtkj(Ks, r1, r2);
+			anyTerm = true;
+			if (b2 < 0) {
+				diag[size_t(b1)] += jtkj(kn * n * n.transpose() + ks * (M3::Identity() - n * n.transpose()), r1, r1);
+				return;
+			}
+			if (!open.active || b1 != open.b1 || b2 != open.b2)
+				throw std::logic_error("BlockStiffness::addPointSpring: the spring's bodies are not those of the open pair (beginPair)");
+			const V3 d = r1 - r2;
+			if (open.springs == 0) open.d = d;
+			else if (!((d - open.d).norm() <= 1e-9 * (open.d.norm() + r1.norm())))
+				throw std::logic_error("BlockStiffness::addPointSpring: the springs of a pair must sit at points common to both bodies (r1 - "
+				                       "r2 the same for all)");
+			open.springs += 1;
+			open.moments.add(r1, n, kn, ks);
+		}
+
+		/// Closes the pair opened by beginPair: its summed terms go to the two diagonal blocks and the pair's block.
+		void endPair()
+		{
+			if (!open.active) throw std::logic_error("BlockStiffness::endPair: no pair is open (beginPair)");
+			open.active = false;
+			if (open.springs == 0) return; // nothing added: no block for the pair
+			/* M = Σ J(r1)ᵀK_s J(r1); with r2 = r1 - d, J(r2) = J(r1) T, T = [[I, [d]×], [0, I]], so that
+			   Σ J(r1)ᵀK_s J(r2) = M T and Σ J(r2)ᵀK_s J(r2) = Tᵀ M T. */
+			const M6 M                        = open.moments.block();
+			M6       T                        = M6::Identity();
+			T.template topRightCorner<3, 3>() = cross(open.d);
+			const M6 MT                       = M * T;
+			diag[size_t(open.b1)] += M;
+			diag[size_t(open.b2)] += T.transpose() * MT;
+			pairs.push_back({ open.b1, open.b2 });
+			offDiag.push_back(-MT);
 		}
 
 		/// A Poisson element: ½ s uᵀK u on the translations of its 8 nodes (body ids; K [N/m], not copied: it must outlive this).
@@ -138,6 +171,7 @@ namespace rdem {
 		/// y = K x (6 values per body) [N, N·m]; x and y of size 6·nBodies, y overwritten.
 		void multiply(const S* x, S* y) const
 		{
+			if (open.active) throw std::logic_error("BlockStiffness::multiply: a pair is open (endPair)");
 			using V6   = Eigen::Matrix<S, 6, 1>;
 			using MV6  = Eigen::Map<V6>;
 			using CMV6 = Eigen::Map<const V6>;
@@ -216,6 +250,46 @@ namespace rdem {
 			long cell1, cell2;
 			M3   A1, A2;
 		};
+		/* The moments of the arms r of a pair's springs (K_s = k_s I + (k_n - k_s) nnᵀ), from which the 6×6 block
+		   Σ J(r)ᵀK_s J(r) = [[Σ K_s, -Σ K_s[r]×], [Σ [r]×K_s, -Σ [r]×K_s[r]×]] is made once per pair:
+		   K_s[r]× = [k_s r]× + (k_n - k_s) n (n×r)ᵀ and -[r]×K_s[r]× = k_s(|r|²I - r rᵀ) + (k_n - k_s)(r×n)(r×n)ᵀ. */
+		struct ArmMoments {
+			S  ks = 0, ksr2 = 0; // Σ k_s, Σ k_s |r|²
+			V3 ksr = V3::Zero(); // Σ k_s r
+			M3 dnn = M3::Zero(), ksrr = M3::Zero(), dnm = M3::Zero(),
+			   dmm = M3::Zero(); // Σ δ nnᵀ, Σ k_s r rᵀ, Σ δ n mᵀ, Σ δ m mᵀ; δ = k_n - k_s, m = n×r
+			void add(const V3& r, const V3& n, S kn, S kst)
+			{
+				const S  dk = kn - kst;
+				const V3 m  = n.cross(r);
+				ks += kst;
+				ksr2 += kst * r.squaredNorm();
+				ksr += kst * r;
+				dnn += dk * n * n.transpose();
+				ksrr += kst * r * r.transpose();
+				dnm += dk * n * m.transpose();
+				dmm += dk * m * m.transpose();
+			}
+			M6 block() const
+			{
+				const M3 KR = cross(ksr) + dnm; // Σ K_s[r]×
+				M6       out;
+				out.template topLeftCorner<3, 3>()     = ks * M3::Identity() + dnn;
+				out.template topRightCorner<3, 3>()    = -KR;
+				out.template bottomLeftCorner<3, 3>()  = -KR.transpose(); // Σ [r]×K_s = -(Σ K_s[r]×)ᵀ
+				out.template bottomRightCorner<3, 3>() = ksr2 * M3::Identity() - ksrr + dmm;
+				return out;
+			}
+		};
+		/// The pair between beginPair and endPair.
+		struct OpenPair {
+			long       b1 = -1, b2 = -1;
+			V3         d       = V3::Zero(); // r1 - r2 of its springs [m]
+			long       springs = 0;
+			ArmMoments moments;
+			bool       active = false;
+		};
+		OpenPair                 open;
 		std::vector<M6>          diag;
 		std::vector<Link>        pairs;
 		std::vector<M6>          offDiag;
