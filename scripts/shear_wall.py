@@ -258,6 +258,7 @@ def record(t):
 	             workV=t.work['vertical'],
 	             workM=t.work['moment'],
 	             moment=t.topMoment(),
+	             momentOfMasonry=t.topMomentOfMasonry(),
 	             **{e: O.energy[e] if e in keys else 0.0 for e in ENERGIES})
 
 
