@@ -20,10 +20,13 @@ between the beams. Vertical stresses are positive in compression here, as engine
 Boundary conditions of the top beam, one rigid block (``beamBlocks=1``): it is guided along $x$ (prescribed velocity),
 held along $y$, and free along $z$ under the constant vertical force $N = \\sigma_0 L t$ (less its own weight, so that
 the masonry carries exactly $N$ at its top). ``'fixed'``: both ends fixed against rotation (the top beam never rotates,
-the shear span is $H_0 = H/2$, as in Magenes & Calvi 1992); ``'cantilever'``: the top beam may rotate in the wall's
-plane (about $y$) and carries a couple that makes the moment at the masonry's top $V (H_0 - H)$, the shear span $H_0$
-given as ``shearSpan`` $= H_0/H$ (default 1: no moment at the top, a cantilever; 1.5: Petry & Beyer 2014's walls, whose
-actuators held that ratio). The base beam is fixed.
+the shear span is $H_0 = H/2$, as in Magenes & Calvi 1992); ``'cantilever'``: the top beam rotates in the wall's
+plane (about $y$) as a rigid lever pinned at the height $H_0$ above the base, so that the moment at the masonry's top is
+$V (H_0 - H)$ at every step: the pin, not the centroid, is moved along $x$ at the prescribed velocity, and a
+:yref:`PyRunner` sets the beam's couple and $x$-velocity every step from that step's forces (:func:`applyLever`); the
+shear span $H_0$ given as ``shearSpan`` $= H_0/H$ (default 1: no moment at the top, a cantilever; 1.5: Petry & Beyer
+2014's walls, whose actuators held that ratio). A couple set once per chunk of steps from the $V$ of the chunk before fed
+back and broke the walls of $H_0/H = 1.5$ (:ref:`validation <rdem-validation>`). The base beam is fixed.
 
 Quasi-static loading: the top beam's velocity rises from 0 to ``rate`` along a half cosine over ``ramp`` seconds at the
 start and at every reversal, and Cundall's non-viscous damping of :yref:`NewtonIntegrator` (``rdem.engines(damping=...)``)
@@ -162,11 +165,12 @@ class ShearWallTest:
 		self._load = ForceEngine(ids=[self.top], force=Vector3.Zero)
 		engines = O.engines
 		k = next(k for k, e in enumerate(engines) if e.label == build.LABELS['newton'])
-		# The couple that makes the moment at the masonry's top V (H0 - H): the actuator's force acts at the beam's centroid,
-		# half the beam's height b above the masonry, which adds V b/2 (both about +y, tilting the top towards +x). It is
-		# set every step from that step's V (coupleMoment), as the test's actuators held M/V: a couple set once per chunk
-		# from the V of the chunk before feeds back with a delay, and for H0/H = 1.5 that loop oscillated from chunk to
-		# chunk with a growing amplitude until the wall broke (the user guide, validation, "Fifteen walls").
+		# A rotating top beam is a rigid lever pinned at H0 above the base (applyLever, every step): the couple that makes
+		# the moment at the masonry's top V (H0 - H) (the actuator's force acts at the beam's centroid, b/2 above the
+		# masonry, which adds V b/2), the beam's x following its rotation so that the pin moves at the prescribed velocity,
+		# and the beam's inertia about the pin. A couple set once per chunk from the V of the chunk before fed back with a
+		# delay (H0/H = 1.5: V alternated from chunk to chunk until the wall broke); set every step with the beam's x held,
+		# it is a follower load, and the beam fluttered (the user guide, validation, "The top beam of a long shear span").
 		lever = wall.layout.topBeam or 0.0
 		self._coupleArm = self.shearSpan * self.height - self.height - lever / 2
 		self._couple = PyRunner(iterPeriod=1, updateGlobals=False, label='rdemShearSpanLever') if boundary == 'cantilever' else None
