@@ -77,7 +77,7 @@ def coupleMoment(shear, arm):
 def applyLever(top, arm, velocity):
 	"""One step of the top beam as a rigid lever pinned at the height $H_0$ (the arm ``arm`` [m] above its centroid),
 	the pin moved along $x$ at ``velocity`` [m/s]: the couple :func:`coupleMoment` of this step's $V = -F_x$ (the force
-	the masonry exerts on the beam now) and the beam's $x$-velocity $v - \omega_y a$, so that the pin moves at $v$. The
+	the masonry exerts on the beam now) and the beam's $x$-velocity $v - \\omega_y a$, so that the pin moves at $v$. The
 	:yref:`PyRunner` of :class:`ShearWallTest` calls it every step after the forces are summed and before the integrator
 	(:data:`LEVER_COMMAND`)."""
 	# sync=True: mid-step, the container is unsynced (the vertical load's ForceEngine has added to it) and f(id) without
@@ -250,7 +250,7 @@ class ShearWallTest:
 
 	def advance(self, steps):
 		"""Run ``steps`` steps and add the work of the actuator, of the vertical load and of the couple over them
-		(trapezoid rule on the values before and after). A cantilever's couple is set from the shear before the chunk."""
+		(trapezoid rule on the values before and after; a cantilever's couple follows V at every step, :func:`applyLever`)."""
 		before = (self.topDisplacement(), self.shear(), self.verticalDisplacement(), self._load.force[2], self.topRotation(), self.couple())
 		O.run(int(steps), True)
 		u, V, w, F, r = self.topDisplacement(), self.shear(), self.verticalDisplacement(), self._load.force[2], self.topRotation()
@@ -291,7 +291,6 @@ class ShearWallTest:
 			raise ValueError('rate = %r: must be finite and > 0 [m/s]' % (rate, ))
 		if not (math.isfinite(ramp) and ramp >= 0):
 			raise ValueError('ramp = %r: must be finite and >= 0 [s]' % (ramp, ))
-		s = O.bodies[self.top].state
 		n0 = O.iter
 		for target in targets:
 			direction = 1.0 if target > self.topDisplacement() else -1.0
@@ -309,7 +308,7 @@ class ShearWallTest:
 		return O.iter - n0
 
 	def hold(self, steps, chunk=100, record=None):
-		"""Stop the top beam along $x$ and run ``steps`` steps (e.g. to let the wall come to rest)."""
+		"""Stop the top beam (a cantilever's: the lever's pin) along $x$ and run ``steps`` steps (e.g. to let the wall come to rest)."""
 		self._setVelocity(0.0)
 		for _ in range(0, int(steps), chunk):
 			self.advance(chunk)
