@@ -7,8 +7,8 @@ Problem
     of rdem.wall_database from its row of the table (geometry, bond, joints, materials, sigma0, shear span; each value
     with its source, doc/validation.md "Fifteen walls"). First the vertical stress sigma0 is ramped up on the top beam
     and held until the wall is at rest; then the top beam moves along the wall (monotonic, or cycles of growing drift):
-    kept horizontal (--shear-span 0.5: both ends fixed) or free to rotate in the wall's plane with the moment
-    V (H0 - H) at the masonry's top (any other --shear-span H0/H; 1: a cantilever). Quasi-static loading (doc/validation.md,
+    kept horizontal (--shear-span 0.5: both ends fixed) or free to rotate in the wall's plane as a lever pinned at H0,
+    with the moment V (H0 - H) at the masonry's top (any other --shear-span H0/H; 1: a cantilever). Quasi-static loading (doc/validation.md,
     "Quasi-static loading in fewer steps"): the velocity of the top beam is ramped up along a half cosine (--ramp) at
     the start and at every reversal, and Cundall's non-viscous damping (--damping) takes out the vibrations.
 
@@ -258,6 +258,7 @@ def record(t):
 	             workV=t.work['vertical'],
 	             workM=t.work['moment'],
 	             moment=t.topMoment(),
+	             momentOfMasonry=t.topMomentOfMasonry(),
 	             **{e: O.energy[e] if e in keys else 0.0 for e in ENERGIES})
 
 

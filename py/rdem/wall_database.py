@@ -67,7 +67,8 @@ RULES = {
                         'compressTime [s] and held until the wall is at rest; the push ends once the load averaged over smoothDrift [-] of drift has '
                         'dropped by stopDrop of its peak, or once past drift [-] and pastPeak times the drift of that peak, or at maxDrift [-] (MI1 was '
                         'validated to 0.6 % drift with a 20 % drop)'),
-        'shearSpan': ('H0/H = 0.5: top beam kept horizontal; otherwise it rotates freely and carries the moment V (H0 - H)',
+        'shearSpan': ('H0/H = 0.5: top beam kept horizontal; otherwise it is a rigid lever pinned at H0 above the base, which makes the moment '
+                      'V (H0 - H) at the masonry top at every step (rdem.walltest.applyLever)',
                       'the test set-ups of the table (H0/H, EESDWallsDB field #27); H0 = (H0/H) x the model height'),
 }
 

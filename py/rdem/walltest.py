@@ -20,10 +20,13 @@ between the beams. Vertical stresses are positive in compression here, as engine
 Boundary conditions of the top beam, one rigid block (``beamBlocks=1``): it is guided along $x$ (prescribed velocity),
 held along $y$, and free along $z$ under the constant vertical force $N = \\sigma_0 L t$ (less its own weight, so that
 the masonry carries exactly $N$ at its top). ``'fixed'``: both ends fixed against rotation (the top beam never rotates,
-the shear span is $H_0 = H/2$, as in Magenes & Calvi 1992); ``'cantilever'``: the top beam may rotate in the wall's
-plane (about $y$) and carries a couple that makes the moment at the masonry's top $V (H_0 - H)$, the shear span $H_0$
-given as ``shearSpan`` $= H_0/H$ (default 1: no moment at the top, a cantilever; 1.5: Petry & Beyer 2014's walls, whose
-actuators held that ratio). The base beam is fixed.
+the shear span is $H_0 = H/2$, as in Magenes & Calvi 1992); ``'cantilever'``: the top beam rotates in the wall's
+plane (about $y$) as a rigid lever pinned at the height $H_0$ above the base, so that the moment at the masonry's top is
+$V (H_0 - H)$ at every step: the pin, not the centroid, is moved along $x$ at the prescribed velocity, and a
+:yref:`PyRunner` sets the beam's couple and $x$-velocity every step from that step's forces (:func:`applyLever`); the
+shear span $H_0$ given as ``shearSpan`` $= H_0/H$ (default 1: no moment at the top, a cantilever; 1.5: Petry & Beyer
+2014's walls, whose actuators held that ratio). A couple set once per chunk of steps from the $V$ of the chunk before fed
+back and broke the walls of $H_0/H = 1.5$ (:ref:`validation <rdem-validation>`). The base beam is fixed.
 
 Quasi-static loading: the top beam's velocity rises from 0 to ``rate`` along a half cosine over ``ramp`` seconds at the
 start and at every reversal, and Cundall's non-viscous damping of :yref:`NewtonIntegrator` (``rdem.engines(damping=...)``)
@@ -32,7 +35,7 @@ enough is checked by running it again at half the rate (scripts/shear_wall.py ``
 """
 import math
 from yade import O, Vector3, Quaternion
-from yade.wrapper import ForceEngine, TorqueEngine, NewtonIntegrator
+from yade.wrapper import ForceEngine, PyRunner, NewtonIntegrator
 from . import build, quasi_static  # relative: the package is also yade.rdem (merged into YADE's tree)
 
 BOUNDARIES = ('fixed', 'cantilever')
@@ -62,6 +65,31 @@ def timoshenkoStiffness(E, nu, length, thickness, height, boundary, shearFactor=
 	G = E / (2 * (1 + nu))
 	c = 3.0 if boundary == 'cantilever' else 12.0
 	return 1.0 / (height**3 / (c * E * I) + height / (shearFactor * G * length * thickness))
+
+
+def coupleMoment(shear, arm):
+	"""The couple about $+y$ [N·m] that the test applies to a rotating top beam so that the moment at the masonry's top is
+	$V (H_0 - H)$: $C = V a$ with the arm $a = H_0 - H - b/2$ [m] (the actuator's force $V$ [N] acts at the beam's centroid,
+	$b/2$ above the masonry, and adds $V b/2$). Positive about $+y$ tilts the top towards $+x$."""
+	return shear * arm
+
+
+def applyLever(top, arm, velocity):
+	"""One step of the top beam as a rigid lever pinned at the height $H_0$ (the arm ``arm`` [m] above its centroid),
+	the pin moved along $x$ at ``velocity`` [m/s]: the couple :func:`coupleMoment` of this step's $V = -F_x$ (the force
+	the masonry exerts on the beam now) and the beam's $x$-velocity $v - \\omega_y a$, so that the pin moves at $v$. The
+	:yref:`PyRunner` of :class:`ShearWallTest` calls it every step after the forces are summed and before the integrator
+	(:data:`LEVER_COMMAND`)."""
+	# sync=True: mid-step, the container is unsynced (the vertical load's ForceEngine has added to it) and f(id) without
+	# sync would read the per-thread part only, not the face springs' sums of RdemForceAssembler
+	O.forces.addT(top, Vector3(0, coupleMoment(-O.forces.f(top, sync=True)[0], arm), 0))
+	s = O.bodies[top].state
+	s.vel = Vector3(velocity - s.angVel[1] * arm, 0, s.vel[2])
+
+
+#: The command of the lever (top beam id, arm [m], the pin's velocity [m/s]): a PyRunner run every step (a string, so
+#: that the scene saves); :class:`ShearWallTest` sets the velocity as the push goes.
+LEVER_COMMAND = "__import__('yade.rdem.walltest', fromlist=['applyLever']).applyLever(%d, %r, %r)"
 
 
 def halfCosineRamp(t, duration):
@@ -129,6 +157,7 @@ class ShearWallTest:
 		s = O.bodies[self.top].state
 		s.blockedDOFs = TOP_DOFS[boundary]
 		s.vel = s.angVel = Vector3.Zero
+		self._velocity = 0.0  # of the top beam along x, or of the lever's pin [m/s]
 		# Not damped: NewtonIntegrator books |F_i||v_i| D dt as damping energy on blocked DOFs too, which on the driven
 		# beam is the actuator's work, not a loss (the wall's blocks are damped as usual).
 		s.isDamped = False
@@ -136,15 +165,30 @@ class ShearWallTest:
 		self._load = ForceEngine(ids=[self.top], force=Vector3.Zero)
 		engines = O.engines
 		k = next(k for k, e in enumerate(engines) if e.label == build.LABELS['newton'])
-		# The couple that makes the moment at the masonry's top V (H0 - H): the actuator's force acts at the beam's centroid,
-		# half the beam's height b above the masonry, which adds V b/2 (both about +y, tilting the top towards +x).
-		self._couple = TorqueEngine(ids=[self.top], moment=Vector3.Zero) if boundary == 'cantilever' else None
+		# A rotating top beam is a rigid lever pinned at H0 above the base (applyLever, every step): the couple that makes
+		# the moment at the masonry's top V (H0 - H) (the actuator's force acts at the beam's centroid, b/2 above the
+		# masonry, which adds V b/2), the beam's x following its rotation so that the pin moves at the prescribed velocity,
+		# and the beam's inertia about the pin. A couple set once per chunk from the V of the chunk before fed back with a
+		# delay (H0/H = 1.5: V alternated from chunk to chunk until the wall broke); set every step with the beam's x held,
+		# it is a follower load, and the beam fluttered (the user guide, validation, "The top beam of a long shear span").
 		lever = wall.layout.topBeam or 0.0
 		self._coupleArm = self.shearSpan * self.height - self.height - lever / 2
+		self._couple = PyRunner(iterPeriod=1, updateGlobals=False, label='rdemShearSpanLever') if boundary == 'cantilever' else None
+		if self._couple:
+			self._setVelocity(0.0)
+			s.inertia = s.inertia + Vector3(0, s.mass * self._coupleArm**2, 0)  # the beam's inertia about the pin
 		O.engines = engines[:k] + [self._load] + ([self._couple] if self._couple else []) + engines[k:]  # after the force assembler, before the integrator
 		self.origin = Vector3(s.pos)
 		self.work = {'horizontal': 0.0, 'vertical': 0.0, 'moment': 0.0}
 		self._last = None
+
+	def _setVelocity(self, v):
+		"""The top beam moved along $x$ at ``v`` [m/s]: its centroid (both ends fixed) or the lever's pin (cantilever)."""
+		self._velocity = v
+		if self._couple:
+			self._couple.command = LEVER_COMMAND % (self.top, self._coupleArm, v)
+		s = O.bodies[self.top].state
+		s.vel = Vector3(v, 0, s.vel[2])
 
 	# Measurements -----------------------------------------------------------------------------------------------------
 	def topDisplacement(self):
@@ -184,23 +228,35 @@ class ShearWallTest:
 	def _setLoad(self, fraction):
 		self._load.force = Vector3(0, 0, -(fraction * self.axialForce - self._weight))
 
+	def couple(self):
+		"""The couple the test applies to the top beam in the last step about $+y$ [N·m]: :func:`coupleMoment` of that
+		step's $V$ (0 with both ends fixed, where the top beam's rotation is held instead)."""
+		return coupleMoment(self.shear(), self._coupleArm) if self._couple else 0.0
+
 	def topMoment(self):
-		"""The moment the test applies to the masonry's top about $+y$ [N·m]: $V (H_0 - H)$ with the couple of a
-		cantilever as set for the last chunk (0 with both ends fixed, where the top beam's rotation is held instead)."""
-		return self._couple.moment[1] + self.shear() * (self.wall.layout.topBeam or 0.0) / 2 if self._couple else 0.0
+		"""The moment the test applies to the masonry's top about $+y$ [N·m]: the couple and the actuator's force $V$ at
+		the beam's centroid, $b/2$ above the masonry: $V (H_0 - H)$ (0 with both ends fixed)."""
+		return self.couple() + self.shear() * (self.wall.layout.topBeam or 0.0) / 2 if self._couple else 0.0
+
+	def topMomentOfMasonry(self):
+		"""The moment the top beam exerts on the masonry about $+y$ at the masonry's top below the beam's centroid [N·m],
+		measured from the contact forces of the last step (the beam's force and torque less the test's couple; the
+		vertical load and the actuator act at the centroid): the reaction to the masonry's moment on the beam, equal to
+		:meth:`topMoment` when the beam is at rest and different from it by the beam's rotational inertia when it is not."""
+		s = O.bodies[self.top].state
+		F, T = O.forces.f(self.top), O.forces.t(self.top)
+		P = s.pos - Vector3(0, 0, (self.wall.layout.topBeam or 0.0) / 2)
+		return -(T[1] - self.couple() + (s.pos - P).cross(F)[1])
 
 	def advance(self, steps):
 		"""Run ``steps`` steps and add the work of the actuator, of the vertical load and of the couple over them
-		(trapezoid rule on the values before and after). A cantilever's couple is set from the shear before the chunk."""
-		if self._couple:
-			self._couple.moment = Vector3(0, self.shear() * self._coupleArm, 0)
-		before = (self.topDisplacement(), self.shear(), self.verticalDisplacement(), self._load.force[2], self.topRotation(),
-		          self._couple.moment[1] if self._couple else 0.0)
+		(trapezoid rule on the values before and after; a cantilever's couple follows V at every step, :func:`applyLever`)."""
+		before = (self.topDisplacement(), self.shear(), self.verticalDisplacement(), self._load.force[2], self.topRotation(), self.couple())
 		O.run(int(steps), True)
 		u, V, w, F, r = self.topDisplacement(), self.shear(), self.verticalDisplacement(), self._load.force[2], self.topRotation()
 		self.work['horizontal'] += 0.5 * (before[1] + V) * (u - before[0])
 		self.work['vertical'] += 0.5 * (before[3] + F) * (w - before[2])
-		self.work['moment'] += before[5] * (r - before[4])
+		self.work['moment'] += 0.5 * (before[5] + self.couple()) * (r - before[4])
 
 	def compress(self, duration, tolerance=1e-4, chunk=200, maxTime=None, report=None):
 		"""Apply $\\sigma_0$: the vertical load grows along a half cosine from 0 to $N$ over ``duration`` [s] while the top
@@ -212,7 +268,7 @@ class ShearWallTest:
 			raise ValueError('duration = %r: must be finite and > 0 [s]' % (duration, ))
 		maxTime = 20 * duration if maxTime is None else maxTime
 		s = O.bodies[self.top].state
-		s.vel = Vector3(0, 0, s.vel[2])
+		self._setVelocity(0.0)
 		t0 = O.time
 		while True:
 			self._setLoad(halfCosineRamp(O.time - t0, duration))
@@ -235,15 +291,14 @@ class ShearWallTest:
 			raise ValueError('rate = %r: must be finite and > 0 [m/s]' % (rate, ))
 		if not (math.isfinite(ramp) and ramp >= 0):
 			raise ValueError('ramp = %r: must be finite and >= 0 [s]' % (ramp, ))
-		s = O.bodies[self.top].state
 		n0 = O.iter
 		for target in targets:
 			direction = 1.0 if target > self.topDisplacement() else -1.0
-			v0, t0 = s.vel[0], O.time
+			v0, t0 = self._velocity, O.time
 			while direction * (target - self.topDisplacement()) > 0:
 				# from the velocity at the reversal to direction*rate along the ramp
 				f = halfCosineRamp(O.time - t0, ramp)
-				s.vel = Vector3(v0 + f * (direction * rate - v0), 0, s.vel[2])
+				self._setVelocity(v0 + f * (direction * rate - v0))
 				left = direction * (target - self.topDisplacement())
 				self.advance(max(1, min(chunk, int(left / (rate * O.dt)) + 1)))
 				if record:
@@ -253,9 +308,8 @@ class ShearWallTest:
 		return O.iter - n0
 
 	def hold(self, steps, chunk=100, record=None):
-		"""Stop the top beam along $x$ and run ``steps`` steps (e.g. to let the wall come to rest)."""
-		s = O.bodies[self.top].state
-		s.vel = Vector3(0, 0, s.vel[2])
+		"""Stop the top beam (a cantilever's: the lever's pin) along $x$ and run ``steps`` steps (e.g. to let the wall come to rest)."""
+		self._setVelocity(0.0)
 		for _ in range(0, int(steps), chunk):
 			self.advance(chunk)
 			if record:

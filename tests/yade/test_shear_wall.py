@@ -18,6 +18,9 @@ Tolerances, from the deviations measured (2026-11-24; the runs are at rest to 1e
   is softer than the beam; bound 8 % and 2 %;
 * the shear span (rotating top beam with the couple V (H0 - H) at the masonry's top): the base moment is V H0 to
   1e-8 at rest for H0/H = 1.5, 1 and 0.75; bound 1e-3;
+* the long shear span (H0/H = 2.5, the top beam a lever pinned at H0, pushed and held in chunks of 100 steps): the
+  base moment V H0 and the moment at the top from the contact forces V (H0 - H), both to 1e-3 at rest, as above; the
+  couple of the commit before, set once per chunk, ran away (V of 1.7e8 N, base moment -0.08 % of V H0);
 * settlement: 0.978 of the bar's; the interior courses shorten by exactly sigma/E per course (3.333e-4), the
   difference is at the two brick-beam interfaces, each about 1.6 times as stiff as eq. 12 with the bricks'
   half-height; bound 3 %. The actuator's force and the base shear agree to 1e-6 at rest; bound 1e-3;
@@ -167,6 +170,30 @@ class ShearWall(unittest.TestCase):
 			self.assertAlmostEqual(test.topMoment() / (V * (span - 1) * H) if span != 1 else test.topMoment() / (V * H), 1.0 if span != 1 else 0.0, delta=TOL_MOMENT)
 		with self.assertRaisesRegex(ValueError, '^shearSpan'):
 			walltest.ShearWallTest(w, 0.0, boundary='fixed', shearSpan=1.5)
+
+	def testLongShearSpan(self):
+		"""The moment of a long shear span follows V, not the V of the chunk before: H0/H = 2.5 (arm a = H0 - H - b/2 =
+		1.495 m) pushed and held in chunks of 100 steps (the defaults of push and hold). A couple set once per chunk from the
+		last V fed back with a gain of about 3a/(2H) = 2.2 (an elastic cantilever held at its tip, u = V H³/(3EI) +
+		C H²/(2EI) fixed: dV = -3 C/(2H)), and V alternated from chunk to chunk with a growing amplitude (the PUP walls of
+		H0/H = 1.5 broke so; the user guide, validation); a couple set every step from the V of that step, with the beam's
+		x held, made the beam flutter for H0/H = 0.75 (a follower load). With the top beam a lever pinned at H0, at rest:
+		the base moment V H0 (1e-3, as testShearSpan), the moment at the masonry's top measured from the contact forces
+		equal to V (H0 - H), and V of the sign of the push."""
+		span = 2.5
+		w, test = tinyWall('cantilever', shearSpan=span)
+		rdem.timeStepper().method = 'gershgorin'
+		O.dt = rdem.timeStepper().safety * rdem.timeStepper().estimate()
+		test.push([1e-5], rate=1e-3, ramp=0.002)
+		test.hold(8000)
+		V, base = test.shear(), test.base[0]
+		self.assertGreater(V, 0.0)
+		F, T = O.forces.f(base), O.forces.t(base)
+		c = O.bodies[base].state.pos
+		Mbase = T[1] + (c - Vector3(c[0], c[1], 0.0)).cross(F)[1]
+		self.assertAlmostEqual(Mbase / (V * span * H), 1.0, delta=TOL_MOMENT, msg='base moment %.5g N m, V H0 = %.5g N m' % (Mbase, V * span * H))
+		self.assertAlmostEqual(test.topMomentOfMasonry() / (V * (span - 1) * H), 1.0, delta=TOL_MOMENT)
+		self.assertAlmostEqual(test.topMoment() / (V * (span - 1) * H), 1.0, delta=1e-12)
 
 	def testArguments(self):
 		w, test = tinyWall('fixed')
