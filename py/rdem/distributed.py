@@ -26,7 +26,7 @@ from yade import O, Body
 from yade.wrapper import RdemBlock, RdemMat, RdemPoissonEngine, RdemCellStrainUpdater, InsertionSortCollider, InteractionLoop, Bo1_Box_Aabb
 from .partition import neighbourhood, ranks, refusals
 
-__all__ = ['assign', 'PerRank', 'features', 'check', 'prepare', 'localBreakCounts', 'breakCounts', 'energies']
+__all__ = ['assign', 'PerRank', 'features', 'check', 'prepare', 'localBreakCounts', 'countedHere', 'breakCounts', 'energies']
 
 
 def _fixed(b):
@@ -231,20 +231,23 @@ def localBreakCounts(counted=lambda id1, id2: True):
 	return sum(1 for seg in states for x in seg if x == 1), sum(1 for seg in states for x in seg if x == 2)
 
 
-def breakCounts():
-	"""(tension, shear): restoring springs broken so far over all ranks, each bond counted once, on the rank that owns its
+def countedHere(id1, id2):
+	"""Whether this rank counts the bond between bodies ``id1`` and ``id2`` in a sum over the ranks: the rank that owns its
 	body of lower id, or the other body's if the master owns that one (a bond across a subdomain boundary exists on two
-	ranks, and each rank's :yref:`Law2_RdemGeom_RdemPhys_FaceSprings.tensionBreaks` counts it; the master keeps its fixed
-	bodies but none of their bonds). Collective: call it on every rank."""
+	ranks; the master keeps its fixed bodies but none of their bonds). Before and after mpy's split alike."""
 	from yade import mpy
+	a, b = O.bodies[min(id1, id2)], O.bodies[max(id1, id2)]
+	if a is None or b is None:
+		return False
+	return (a.subdomain if a.subdomain != 0 else b.subdomain) == mpy.rank
 
-	def mine(id1, id2):
-		a, b = O.bodies[min(id1, id2)], O.bodies[max(id1, id2)]
-		if a is None or b is None:
-			return False
-		return (a.subdomain if a.subdomain != 0 else b.subdomain) == mpy.rank
 
-	tension, shear = localBreakCounts(mine)
+def breakCounts():
+	"""(tension, shear): restoring springs broken so far over all ranks, each bond counted once (:func:`countedHere`; each
+	rank's :yref:`Law2_RdemGeom_RdemPhys_FaceSprings.tensionBreaks` counts the bonds across its boundary). Collective:
+	call it on every rank."""
+	from yade import mpy
+	tension, shear = localBreakCounts(countedHere)
 	return mpy.comm.allreduce(tension), mpy.comm.allreduce(shear)
 
 
