@@ -85,6 +85,8 @@ if cli.mpi:
 	from yade.rdem import distributed
 	mpy.VERBOSE_OUTPUT = False
 	mpy.configure()
+	if mpy.numThreads < 2:
+		sys.exit('wall: --mpi runs on YADE\'s MPI: mpiexec -n 3 build-mpi/bin/yade -n -x scripts/wall.py --mpi (the master and at least one worker)')
 	rank = mpy.rank
 	cli.vtk_every = 0
 
