@@ -225,7 +225,7 @@ long RdemCellNetwork::reduceMasterStrains(Scene* scene)
 			          c,
 			          opening[sideBond[j]],
 			          intact[sideBond[j]],
-			          Real(scene->subdomain) });
+			          Real(rdem::rank(*scene)) });
 		}
 	}
 	const vector<Real> all = rdem::gatherOverRanks(*scene, mine);
@@ -251,7 +251,7 @@ long RdemCellNetwork::reduceMasterStrains(Scene* scene)
 		}
 		if (it == compact.end()) continue; // a cell this rank does not hold
 		setStrain(it->second, eps, scale);
-		booksEnergy[it->second] = booker == Real(scene->subdomain); // the lowest rank with a part of its bonds
+		booksEnergy[it->second] = booker == Real(rdem::rank(*scene)); // the lowest rank with a part of its bonds
 	}
 	return long(mine.size() * sizeof(Real));
 }

@@ -25,6 +25,17 @@ namespace rdem {
 	inline Subdomain* splitSubdomain(const Scene& scene) { return dynamic_cast<Subdomain*>(scene.subD.get()); }
 #endif
 
+	/// This process's rank in a scene that mpy split (0, the master, otherwise and without MPI).
+	inline int rank(const Scene& scene)
+	{
+#ifdef YADE_MPI
+		return splitSubdomain(scene) ? int(scene.subdomain) : 0;
+#else
+		(void)scene;
+		return 0;
+#endif
+	}
+
 	/// Whether body b is a ghost on this rank: a body of another subdomain, whose state its owner integrates and mpy sends.
 	inline bool isGhost(const Scene& scene, const Body& b)
 	{
