@@ -328,8 +328,11 @@ void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energ
 		elastic[size_t(i)] = s * Ke;
 		stress[size_t(i)]  = fullStress(elastic[size_t(i)], condensation[size_t(i)], grad);
 		// a ghost's cell: its owner's energy; a cell on the master (YADE's MPI): one rank's with a part of its bonds
-		const Body& bi = *Body::byId(body[size_t(i)], scene);
-		if (trackEnergy && (rdem::onMaster(*scene, bi) ? booksEnergy[size_t(i)] : !rdem::isGhost(*scene, bi))) {
+		const auto books = [&]() {
+			const Body& bi = *Body::byId(body[size_t(i)], scene);
+			return rdem::onMaster(*scene, bi) ? booksEnergy[size_t(i)] != 0 : !rdem::isGhost(*scene, bi);
+		};
+		if (trackEnergy && books()) {
 			e += s * st.strain.dot(Ke) / 2;
 			rel += (scalePrev[size_t(i)] - s) * st.strain.dot(Ke) / 2;
 		}
