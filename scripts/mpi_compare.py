@@ -140,7 +140,8 @@ def wall():
 	global perRank
 	if args.per_rank:
 		from yade.rdem import distributed
-		perRank = distributed.PerRank(layers=args.layers)
+		base = (lambda layout: [b for u in layout.beams() if layout.units[u].piece == 'base' for b in layout.units[u].blocks]) if args.base_beam else ()
+		perRank = distributed.PerRank(master=base, layers=args.layers)  # the base beam on the master
 	bricks, courses = args.wall
 	global master
 	w = masonry.wall(bricks * 0.26 - 0.01, courses * 0.065 - 0.01, 0.12, bond='running', brickMaterial=brick, jointMaterial=mortar, only=perRank,
