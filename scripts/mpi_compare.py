@@ -3,8 +3,10 @@
 comparison of doc/mpi.md. Scenes: the paper's compression cube (rdem.scenes.CompressionTest), a running-bond wall
 with Poisson cells and springs that break on the total stress of their face, compressed between its fixed bottom and
 moving top courses (--per-rank: each rank makes only its part, rdem.distributed.PerRank), or the benchmarks' wall under
-gravity on a base beam (--scene bigwall, rdem.scenes.runningBondWall). A scene that cannot run on mpy yet (the paper's
-hexahedra: --poisson hex8) is refused by rdem.distributed.check with the reason.
+gravity on a base beam (--scene bigwall, rdem.scenes.runningBondWall). A base beam stays on the master under --mpi;
+its Poisson cell (--base-beam, --beam-cell) is completed on every rank from all ranks' parts of its bonds
+(RdemGhostExchange.masterCells). A scene that cannot run on mpy yet (the paper's hexahedra: --poisson hex8) is refused
+by rdem.distributed.check with the reason.
 
     build-mpi/bin/yade -n -x scripts/mpi_compare.py --poisson cells --contacts always --steps 200 --out output/mpi/serial.json
     mpiexec --allow-run-as-root --oversubscribe -n 3 build-mpi/bin/yade -n -x scripts/mpi_compare.py --poisson cells --steps 200 --mpi --out output/mpi/mpi.json
@@ -52,6 +54,12 @@ parser.add_argument('--layers', type=int, default=2,
                     help='--per-rank: bonds out from a rank\'s blocks to make (default 2; 1 builds the ghosts\' cells from part of their bonds: for the test)')
 parser.add_argument('--energy', action='store_true', help='track the energies (O.trackEnergy) and record them, summed over ranks under --mpi')
 parser.add_argument('--no-exchange', action='store_true', help='RdemGhostExchange off (wrong at the subdomain boundary: for the test)')
+parser.add_argument('--base-beam', action='store_true',
+                    help='wall: on a fixed base beam (one block with a Poisson cell, on the master under --mpi) instead of its fixed bottom course')
+parser.add_argument('--beam-cell', action='store_true', help='bigwall: give the base beam (on the master under --mpi) a Poisson cell')
+parser.add_argument('--no-master-cells', action='store_true',
+                    help='--mpi: do not complete the cells on the master from every rank\'s bonds (RdemGhostExchange.masterCells off: '
+                    'each worker takes its own part of their bonds, which is wrong: for the test)')
 parser.add_argument('--out', default='output/mpi/result.json', help='result file (default output/mpi/result.json)')
 parser.add_argument('--vtk', default='', help='also write the blocks at the end to this ParaView file (.vtu), once (on rank 0, gathered under --mpi)')
 parser.add_argument('--compare', nargs=2, metavar=('A', 'B'), help='compare two result files (plain python3, no YADE)')
@@ -115,8 +123,9 @@ def cube():
 
 def wall():
 	"""A running-bond wall, 10 bricks by 10 courses, one wythe, one block per brick (the bed joints' bonds have centroid
-	offsets, which RdemGhostExchange's second message is for), its bottom course fixed and its top course moving down at
-	``rate``; consistent formulation, cells, springs breaking on the total stress of their face, contacts detected from
+	offsets, which RdemGhostExchange's second message is for), its bottom course fixed (``--base-beam``: standing on a
+	fixed base beam of one block with a Poisson cell, which stays on the master under --mpi) and its top course moving
+	down at ``rate``; consistent formulation, cells, springs breaking on the total stress of their face, contacts detected from
 	the first step, with a collider sweep of 5 % of the smallest brick dimension; a fixed step, ``--dt`` or half the
 	stepper's estimate at set-up (the same on every rank, which all build the whole scene). ``--wall`` sets its size;
 	with ``--per-rank`` each rank makes only its own bricks and those within two bonds of them."""
@@ -131,11 +140,16 @@ def wall():
 	global perRank
 	if args.per_rank:
 		from yade.rdem import distributed
-		perRank = distributed.PerRank(layers=args.layers)
+		base = (lambda layout: [b for u in layout.beams() if layout.units[u].piece == 'base' for b in layout.units[u].blocks]) if args.base_beam else ()
+		perRank = distributed.PerRank(master=base, layers=args.layers)  # the base beam on the master
 	bricks, courses = args.wall
-	w = masonry.wall(bricks * 0.26 - 0.01, courses * 0.065 - 0.01, 0.12, bond='running', brickMaterial=brick, jointMaterial=mortar, only=perRank)
+	global master
+	w = masonry.wall(bricks * 0.26 - 0.01, courses * 0.065 - 0.01, 0.12, bond='running', brickMaterial=brick, jointMaterial=mortar, only=perRank,
+	                 baseBeam=0.1 if args.base_beam else None)
 	made = set(w.made)
-	for i in w.courses[0] + w.courses[-1]:
+	if args.base_beam:
+		master = w.beams['base']  # fixed, it stays on the master under --mpi, with its Poisson cell
+	for i in (list(master) if args.base_beam else w.courses[0]) + w.courses[-1]:  # fixed before the cells are built (they read the DOFs)
 		if i in made:
 			O.bodies[i].state.blockedDOFs = 'xyzXYZ'
 	for i in w.courses[-1]:
@@ -159,8 +173,8 @@ def wall():
 
 def bigwall():
 	"""rdem.scenes.runningBondWall of about ``--wall-blocks`` blocks at the fixed step ``--dt``; its base beam stays on the
-	master under --mpi (as scripts/mpi_scaling.py runs it), without a Poisson cell (which rdem.distributed.check refuses
-	on the master), serially too; contact detection from the first step (``--contacts``
+	master under --mpi (as scripts/mpi_scaling.py runs it), without a Poisson cell unless ``--beam-cell`` (serially too);
+	contact detection from the first step (``--contacts``
 	applies to the serial run: mpy detects contacts from its split)."""
 	from yade.rdem import scenes
 	global perRank, master
@@ -168,7 +182,7 @@ def bigwall():
 		from yade.rdem import distributed
 		perRank = distributed.PerRank(master=lambda layout: [b for u in layout.beams() if layout.units[u].piece == 'base' for b in layout.units[u].blocks],
 		                              layers=args.layers)
-	w = scenes.runningBondWall(args.wall_blocks, dt=args.dt, only=perRank, beamCell=False, distributed=args.mpi)
+	w = scenes.runningBondWall(args.wall_blocks, dt=args.dt, only=perRank, beamCell=args.beam_cell, distributed=args.mpi)
 	if perRank is not None:
 		perRank.assign(w['ids'])
 	if args.contacts == 'always':
@@ -192,7 +206,7 @@ if args.mpi:
 	from yade import mpy
 	from yade.rdem import distributed
 	mpy.VERBOSE_OUTPUT = False
-	perWorker = distributed.prepare(exchange=not args.no_exchange, perRank=perRank, master=master)
+	perWorker = distributed.prepare(exchange=not args.no_exchange, perRank=perRank, master=master, masterCells=not args.no_master_cells)
 	rank = mpy.rank
 
 

@@ -101,8 +101,8 @@ def buildWall(blocks, only=None):
 	"""The bigwall case of scripts/benchmark.py (rdem.scenes.runningBondWall, its base beam without a Poisson cell), at the fixed --dt if one is given; with
 	``only`` (an rdem.distributed.PerRank), the blocks it chooses."""
 	from yade.rdem import scenes
-	# the base beam stays on the master (rdem.distributed.prepare(master=)), which must hold no Poisson cell: without one
-	# in every run, serial ones too, so that all run the same scene
+	# the base beam stays on the master (rdem.distributed.prepare(master=)), without a Poisson cell in every run, serial ones
+	# too, as doc/scaling-mpi.md's figures were measured (its cell would now run: RdemGhostExchange.masterCells, doc/mpi.md)
 	return scenes.runningBondWall(blocks, dt=args.dt if args.dt > 0 else None, only=only, beamCell=False, distributed=args.mpi)
 
 

@@ -15,6 +15,7 @@
 #include <pkg/rdem/math/ContactBound.hpp>
 #include <pkg/rdem/math/GroupByKey.hpp>
 #include <algorithm>
+#include <limits>
 #include <optional>
 #include <unordered_map>
 
@@ -118,6 +119,8 @@ void RdemCellNetwork::rebuild(Scene* scene)
 	rot.assign(body.size(), Matrix3r::Identity());
 	pos.assign(body.size(), Vector3r::Zero());
 	stress.assign(body.size(), Vector3r::Zero());
+	elastic.assign(body.size(), Vector3r::Zero());
+	booksEnergy.assign(body.size(), 0);
 	scalePrev.assign(body.size(), 1);
 	for (size_t i = 0; i < body.size(); ++i)
 		scalePrev[i] = state[i]->cellScale;
@@ -188,10 +191,105 @@ void RdemCellNetwork::updateStrains(Scene* scene, long brokenSprings, int thread
 			eps[sideSecond[j] ? b.ax2 : b.ax1] += c * opening[sideBond[j]];
 			scale = math::min(scale, intact[sideBond[j]]);
 		}
-		st.strain     = condensation[size_t(i)] * eps;
-		st.cellScale  = scale;
-		st.cellStress = scale * (stiffness[size_t(i)] * st.strain);
+		setStrain(size_t(i), eps, scale);
 	}
+}
+
+void RdemCellNetwork::setStrain(size_t i, const Vector3r& eps, Real scale)
+{
+	RdemState& st = *state[i];
+	st.strain     = condensation[i] * eps;
+	st.cellScale  = scale;
+	st.cellStress = scale * (stiffness[i] * st.strain);
+}
+
+long RdemCellNetwork::reduceMasterStrains(Scene* scene)
+{
+	/* The terms updateStrains sums for a cell on the master, of the bonds to this rank's own blocks (each bond is on the
+	   rank of its other block, and also on ranks that hold that block as a ghost, which do not send it): the cell's
+	   id, the other block's id, the axis, c, u_n, the intact fraction, this rank. */
+	constexpr size_t width = 7;
+	vector<Real>     mine;
+	for (size_t i = 0; i < body.size(); ++i) {
+		if (!hasCell[i] || !rdem::onMaster(*scene, *Body::byId(body[i], scene))) continue;
+		for (size_t j = first[i]; j < first[i + 1]; ++j) {
+			const Bond&  b     = bond[sideBond[j]];
+			const size_t other = sideSecond[j] ? b.i1 : b.i2;
+			const Real   c     = sideSecond[j] ? b.c2 : b.c1;
+			if (c == 0 || rdem::notOwned(*scene, *Body::byId(body[other], scene))) continue;
+			mine.insert(
+			        mine.end(),
+			        { Real(body[i]),
+			          Real(body[other]),
+			          Real(sideSecond[j] ? b.ax2 : b.ax1),
+			          c,
+			          opening[sideBond[j]],
+			          intact[sideBond[j]],
+			          Real(rdem::rank(*scene)) });
+		}
+	}
+	const vector<Real> all = rdem::gatherOverRanks(*scene, mine);
+	// each cell's terms in the order of the other block's id, as updateStrains sums them on one rank
+	vector<size_t> term(all.size() / width);
+	for (size_t t = 0; t < term.size(); ++t)
+		term[t] = t;
+	const auto at = [&all](size_t t, size_t k) { return all[t * width + k]; };
+	std::sort(term.begin(), term.end(), [&](size_t x, size_t y) { return std::make_pair(at(x, 0), at(x, 1)) < std::make_pair(at(y, 0), at(y, 1)); });
+	std::unordered_map<Body::id_t, size_t> compact;
+	for (size_t i = 0; i < body.size(); ++i)
+		if (hasCell[i] && rdem::onMaster(*scene, *Body::byId(body[i], scene))) compact.emplace(body[i], i);
+	for (size_t t = 0; t < term.size();) {
+		const auto cell   = Body::id_t(at(term[t], 0));
+		const auto it     = compact.find(cell);
+		Vector3r   eps    = Vector3r::Zero();
+		Real       scale  = it != compact.end() ? state[it->second]->cellScale : Real(1); // lowered by this rank's part already: min is idempotent
+		Real       booker = std::numeric_limits<Real>::max();
+		for (; t < term.size() && Body::id_t(at(term[t], 0)) == cell; ++t) {
+			eps[int(at(term[t], 2))] += at(term[t], 3) * at(term[t], 4);
+			scale  = math::min(scale, at(term[t], 5));
+			booker = math::min(booker, at(term[t], 6));
+		}
+		if (it == compact.end()) continue; // a cell this rank does not hold
+		setStrain(it->second, eps, scale);
+		booksEnergy[it->second] = booker == Real(rdem::rank(*scene)); // the lowest rank with a part of its bonds
+	}
+	return long(mine.size() * sizeof(Real));
+}
+
+long RdemCellNetwork::reduceMasterStresses(Scene* scene)
+{
+	// the offset corrections' gradients of the bonds of cells on the master to this rank's own blocks: cell, other block, g
+	constexpr size_t width = 5;
+	vector<Real>     mine;
+	for (size_t i = 0; i < body.size(); ++i) {
+		if (!hasCell[i] || !rdem::onMaster(*scene, *Body::byId(body[i], scene))) continue;
+		for (size_t j = first[i]; j < first[i + 1]; ++j) {
+			if (!sideOffset[j] || intact[sideBond[j]] == 0) continue;
+			const Bond&  b     = bond[sideBond[j]];
+			const size_t other = sideSecond[j] ? b.i1 : b.i2;
+			if (rdem::notOwned(*scene, *Body::byId(body[other], scene))) continue;
+			const auto&     p = *static_cast<const RdemPhys*>(phys[sideBond[j]].get());
+			const Vector3r& g = sideSecond[j] ? p.offsetGrad2 : p.offsetGrad1;
+			mine.insert(mine.end(), { Real(body[i]), Real(body[other]), g[0], g[1], g[2] });
+		}
+	}
+	const vector<Real> all = rdem::gatherOverRanks(*scene, mine);
+	vector<size_t>     term(all.size() / width);
+	for (size_t t = 0; t < term.size(); ++t)
+		term[t] = t;
+	const auto at = [&all](size_t t, size_t k) { return all[t * width + k]; };
+	std::sort(term.begin(), term.end(), [&](size_t x, size_t y) { return std::make_pair(at(x, 0), at(x, 1)) < std::make_pair(at(y, 0), at(y, 1)); });
+	for (size_t i = 0; i < body.size(); ++i) {
+		if (!hasCell[i] || !rdem::onMaster(*scene, *Body::byId(body[i], scene))) continue;
+		// the cell's terms (a binary search on the sorted ids), summed as applyForces sums them on one rank
+		const Real id = Real(body[i]);
+		auto       t  = std::lower_bound(term.begin(), term.end(), id, [&](size_t x, Real v) { return at(x, 0) < v; });
+		Vector3r   g  = Vector3r::Zero();
+		for (; t != term.end() && at(*t, 0) == id; ++t)
+			g += Vector3r(at(*t, 2), at(*t, 3), at(*t, 4));
+		stress[i] = fullStress(elastic[i], condensation[i], g);
+	}
+	return long(mine.size() * sizeof(Real));
 }
 
 void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released, int threads, const StressSync& sync)
@@ -227,8 +325,14 @@ void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energ
 			const auto& p = *static_cast<const RdemPhys*>(phys[sideBond[j]].get());
 			grad += sideSecond[j] ? p.offsetGrad2 : p.offsetGrad1;
 		}
-		stress[size_t(i)] = s * Ke + condensation[size_t(i)].transpose() * grad;
-		if (trackEnergy && !rdem::isGhost(*scene, *Body::byId(body[size_t(i)], scene))) { // a ghost's cell: its owner's energy
+		elastic[size_t(i)] = s * Ke;
+		stress[size_t(i)]  = fullStress(elastic[size_t(i)], condensation[size_t(i)], grad);
+		// a ghost's cell: its owner's energy; a cell on the master (YADE's MPI): one rank's with a part of its bonds
+		const auto books = [&]() {
+			const Body& bi = *Body::byId(body[size_t(i)], scene);
+			return rdem::onMaster(*scene, bi) ? booksEnergy[size_t(i)] != 0 : !rdem::isGhost(*scene, bi);
+		};
+		if (trackEnergy && books()) {
 			e += s * st.strain.dot(Ke) / 2;
 			rel += (scalePrev[size_t(i)] - s) * st.strain.dot(Ke) / 2;
 		}

@@ -35,6 +35,15 @@ public:
 	/// normal force -Σ c ∂W/∂ε of every bond at its face centre, added to the blocks in a fixed order. Adds the cells'
 	/// energy ½ s εᵀKε and the energy released by a drop of s [J]. Threads as for updateStrains.
 	void applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released, int threads, const StressSync& sync = StressSync());
+	/* YADE's MPI: the cells of blocks on the master (fixed beams and slabs; mpy keeps them on rank 0) have their bonds on
+	   the ranks of the blocks they join, each rank a part. Called on every rank (collective), these complete such a cell
+	   from every rank's part, summed over its bonds in the order of the other block's id as on one rank: each rank sends
+	   the terms of the bonds between it and the rank's own blocks (rdem::gatherOverRanks). reduceMasterStrains: the
+	   strains, crack scales and elastic stresses (after updateStrains, before the law reads them); reduceMasterStresses:
+	   the reaction of their bonds' offset correction in ∂W/∂ε (inside applyForces, through its sync, before the bonds'
+	   forces). Each returns the bytes of this rank's part. */
+	long reduceMasterStrains(Scene* scene);
+	long reduceMasterStresses(Scene* scene);
 	/// Per body id, the Gershgorin bound of the squared eigenfrequency the cells add [1/s²] (see the definition).
 	vector<Real> omega2Bound(Scene* scene);
 	/// Adds the cells' linear stiffness ½ s εᵀ CᵀKC ε on the bond openings at the current poses to K (RdemTimeStepper),
@@ -71,10 +80,16 @@ private:
 	vector<Matrix3r>   stiffness;    // per compact block: RdemState::cellStiffness (constant between builds)
 	vector<Matrix3r>   condensation; // per compact block: RdemState::cellCondensation
 	vector<Vector3r>   stress;       // per compact block: ∂W/∂ε this step [N·m]
+	vector<Vector3r>   elastic;      // per compact block: its elastic part s K ε this step [N·m]
+	vector<char>       booksEnergy;  // per compact block on the master (YADE's MPI): whether this rank books its cell's energy
 	vector<Real>       scalePrev;    // per compact block: cell scale of the last step
 	size_t             nCellBlocks     = 0;
 	long               builtGeneration = -1, builtInteractions = -1, builtBodies = -1, brokenSeen = -1;
 	void               rebuild(Scene* scene);
+	/// Cell i's strain from ε (before the condensation), its crack scale and elastic stress (RdemState).
+	void setStrain(size_t i, const Vector3r& eps, Real scale);
+	/// The cells' ∂W/∂ε: the elastic part s K ε plus the reaction Cᵀ g of its bonds' offset correction (C the condensation).
+	static Vector3r fullStress(const Vector3r& sKe, const Matrix3r& condensation, const Vector3r& g) { return sKe + condensation.transpose() * g; }
 	/// Total shear stiffness k_s w_s A of bond k's intact springs when they carry the offset correction [N/m]; else 0.
 	Real offsetShearStiffness(size_t k) const;
 	void updateIntact(long brokenSprings);

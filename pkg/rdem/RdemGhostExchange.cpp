@@ -79,13 +79,23 @@ void RdemGhostExchange::action()
 	                         "(tools/setup.sh --mpi) and run it under mpiexec with yade.mpy");
 #else
 	static_assert(std::is_same<Real, double>::value, "RdemGhostExchange sends Real as MPI_DOUBLE");
-	bytesSent      = 0;
-	ghostsReceived = 0;
-	const int rank = scene->subdomain;
-	if (!exchange || rank == 0) return;
+	bytesSent       = 0;
+	ghostsReceived  = 0;
+	const int  rank = scene->subdomain;
 	const auto subD = YADE_PTR_DYN_CAST<Subdomain>(scene->subD);
 	if (!subD || subD->intersections.size() <= size_t(rank)) return; // not split (yet): nothing is a ghost
-	Scene* sc = scene;
+	Scene*           sc    = scene;
+	RdemCellNetwork* cells = RdemSharedState::of(scene, shared).cells;
+	/* 0. The cells of the master's blocks (fixed beams, slabs), on every rank, the master too: their strains, crack
+	      scales and elastic stresses from the parts of their bonds on all ranks (collective); their offset reactions below. */
+	const bool reduce = masterCells && cells;
+	if (reduce) bytesSent += cells->reduceMasterStrains(scene);
+	if (rank == 0 || !exchange) { // the master holds no ghost: only the reductions
+		if (reduce)
+			RdemSharedState::of(scene, shared).cellStressSync
+			        = [cells, sc, this](const vector<Body::id_t>&, vector<Vector3r>&) { bytesSent += cells->reduceMasterStresses(sc); };
+		return;
+	}
 	// 1. Now: each boundary block's strain (3), crack scale (1) and elastic ∂W/∂ε (3), for the law and the cells.
 	long received = 0;
 	bytesSent += swapWithNeighbours(
@@ -117,7 +127,8 @@ void RdemGhostExchange::action()
 	      ∂W/∂ε (3), which includes the reaction of the offset correction of all its bonds (running bond), most of which the
 	      ghost's rank does not have. */
 	const shared_ptr<Subdomain> sd                    = subD;
-	RdemSharedState::of(scene, shared).cellStressSync = [sd, rank, sc, this](const vector<Body::id_t>& body, vector<Vector3r>& stress) {
+	RdemSharedState::of(scene, shared).cellStressSync = [sd, rank, sc, cells, reduce, this](const vector<Body::id_t>& body, vector<Vector3r>& stress) {
+		if (reduce) bytesSent += cells->reduceMasterStresses(sc);
 		vector<long> index(sc->bodies->size(), -1); // body id → compact index of the cells
 		for (size_t i = 0; i < body.size(); ++i)
 			if (size_t(body[i]) < index.size()) index[size_t(body[i])] = long(i);

@@ -14,7 +14,7 @@ A large scene need not exist on one rank: with :class:`PerRank` each rank makes 
 neighbours (mpy's distributed insertion, ``DISTRIBUTED_INSERT``)::
 
     part = distributed.PerRank(master=lambda layout: [b for u in layout.beams() for b in layout.units[u].blocks])
-    wall = scenes.runningBondWall(1e5, only=part, beamCell=False)   # or rdem.masonry.wall(..., only=part)
+    wall = scenes.runningBondWall(1e5, only=part)   # or rdem.masonry.wall(..., only=part)
     part.assign(wall['ids'])
     distributed.prepare(perRank=part)
     mpy.mpirun(1000)
@@ -26,7 +26,7 @@ from yade import O, Body
 from yade.wrapper import RdemBlock, RdemMat, RdemPoissonEngine, RdemCellStrainUpdater, InsertionSortCollider, InteractionLoop, Bo1_Box_Aabb
 from .partition import neighbourhood, ranks, refusals
 
-__all__ = ['assign', 'PerRank', 'features', 'check', 'prepare', 'localBreakCounts', 'breakCounts', 'energies']
+__all__ = ['assign', 'PerRank', 'features', 'check', 'prepare', 'localBreakCounts', 'countedHere', 'breakCounts', 'energies']
 
 
 def _fixed(b):
@@ -108,7 +108,7 @@ class PerRank:
 
 def features():
 	"""What the scene has that matters for a distributed run (the keys of :func:`rdem.partition.refusals`)."""
-	f = dict(others=[], masterMoving=[], masterCells=[], hex8=0, cells=0, exchange=False, breakable=False)
+	f = dict(others=[], masterMoving=[], masterCells=[], hex8=0, cells=0, exchange=False, masterCellsReduced=False, breakable=False)
 	for b in O.bodies:
 		if b is None or getattr(b, 'isSubdomain', False):  # (a YADE without MPI has neither attribute: all on the master)
 			continue
@@ -123,8 +123,9 @@ def features():
 		if isinstance(e, RdemPoissonEngine) and not e.dead:
 			f['hex8'] += e.nElements
 			f['cells'] += e.nCells
-		if type(e).__name__ == 'RdemGhostExchange' and not e.dead and e.exchange:
-			f['exchange'] = True
+		if type(e).__name__ == 'RdemGhostExchange' and not e.dead:
+			f['exchange'] = f['exchange'] or e.exchange
+			f['masterCellsReduced'] = f['masterCellsReduced'] or e.masterCells
 	f['breakable'] = any(isinstance(m, RdemMat) and (math.isfinite(m.tensileStrength) or math.isfinite(m.cohesion)) for m in O.materials)
 	return f
 
@@ -154,12 +155,14 @@ class _SceneCollider:
 		self._engine()()
 
 
-def prepare(workers=None, master=(), exchange=True, perRank=None):
+def prepare(workers=None, master=(), exchange=True, perRank=None, masterCells=True):
 	"""Make the current scene ready for :func:`yade.mpy.mpirun` on every rank: assign the blocks (:func:`assign`, to
 	``workers`` ranks, default: all but the master), put an :yref:`RdemBondKeeper` first in the engines and record the
 	bonds across the cuts (mpy's split erases them; it puts them back), insert an :yref:`RdemGhostExchange` after the
 	:yref:`RdemCellStrainUpdater` (with ``exchange=False`` one that does not exchange, which is wrong at the boundary:
-	for tests), a collider if there is none (mpy's parallel collision detection needs an :yref:`InsertionSortCollider`),
+	for tests), which also completes the Poisson cells of blocks on the master from every rank's part of their bonds
+	(:yref:`RdemGhostExchange::masterCells`, if the scene has such cells; ``masterCells=False``: it does not, which is
+	wrong: for tests), a collider if there is none (mpy's parallel collision detection needs an :yref:`InsertionSortCollider`),
 	with a sweep distance (``verletDist``) of 5 % of the smallest block if it has none (mpy's ghosts are the blocks whose
 	bounding boxes overlap a subdomain's: without a sweep, blocks face to face across the cut only touch); then :func:`check`. :yref:`RdemTimeStepper` takes one step for all ranks
 	itself (the minimum of their limits). With ``perRank`` (a :class:`PerRank` that chose the blocks each rank made, and
@@ -186,12 +189,18 @@ def prepare(workers=None, master=(), exchange=True, perRank=None):
 	keeper = RdemBondKeeper(label='rdemBondKeeper')
 	keeper.keep()
 	eng.insert(0, keeper)
+	# cells on the master: the same decision on every rank (each may hold another part of the scene: perRank)
+	onMaster = any(b.subdomain == 0 and getattr(b.state, 'cellVolume', 0) > 0 for b in O.bodies
+	               if b is not None and not b.isSubdomain and isinstance(b.shape, RdemBlock))
+	reduce = bool(masterCells) and bool(mpy.comm.allreduce(onMaster, op=mpy.MPI.LOR))
 	names = [type(e).__name__ for e in eng]
 	if 'RdemGhostExchange' not in names:
 		at = next((k + 1 for k, e in enumerate(eng) if isinstance(e, RdemCellStrainUpdater)), None)
 		if at is not None:
 			from yade.wrapper import RdemGhostExchange
-			eng.insert(at, RdemGhostExchange(exchange=bool(exchange), label='rdemGhosts'))
+			eng.insert(at, RdemGhostExchange(exchange=bool(exchange), masterCells=reduce, label='rdemGhosts'))
+	else:
+		eng[names.index('RdemGhostExchange')].masterCells = reduce
 	size = min([min(b.shape.extents) for b in O.bodies if b is not None and isinstance(b.shape, RdemBlock)] + [float('inf')])  # smallest half-extent
 	if perRank is not None:  # each rank holds a part: the scene's smallest
 		size = mpy.comm.allreduce(size, op=mpy.MPI.MIN)
@@ -206,7 +215,7 @@ def prepare(workers=None, master=(), exchange=True, perRank=None):
 	O.engines = eng
 	if not hasattr(mpy, 'collider'):
 		mpy.collider = _SceneCollider()
-	if exchange:
+	if exchange and masterCells:
 		check()
 	return perWorker
 
@@ -222,20 +231,23 @@ def localBreakCounts(counted=lambda id1, id2: True):
 	return sum(1 for seg in states for x in seg if x == 1), sum(1 for seg in states for x in seg if x == 2)
 
 
-def breakCounts():
-	"""(tension, shear): restoring springs broken so far over all ranks, each bond counted once, on the rank that owns its
+def countedHere(id1, id2):
+	"""Whether this rank counts the bond between bodies ``id1`` and ``id2`` in a sum over the ranks: the rank that owns its
 	body of lower id, or the other body's if the master owns that one (a bond across a subdomain boundary exists on two
-	ranks, and each rank's :yref:`Law2_RdemGeom_RdemPhys_FaceSprings.tensionBreaks` counts it; the master keeps its fixed
-	bodies but none of their bonds). Collective: call it on every rank."""
+	ranks; the master keeps its fixed bodies but none of their bonds). Before and after mpy's split alike."""
 	from yade import mpy
+	a, b = O.bodies[min(id1, id2)], O.bodies[max(id1, id2)]
+	if a is None or b is None:
+		return False
+	return (a.subdomain if a.subdomain != 0 else b.subdomain) == mpy.rank
 
-	def mine(id1, id2):
-		a, b = O.bodies[min(id1, id2)], O.bodies[max(id1, id2)]
-		if a is None or b is None:
-			return False
-		return (a.subdomain if a.subdomain != 0 else b.subdomain) == mpy.rank
 
-	tension, shear = localBreakCounts(mine)
+def breakCounts():
+	"""(tension, shear): restoring springs broken so far over all ranks, each bond counted once (:func:`countedHere`; each
+	rank's :yref:`Law2_RdemGeom_RdemPhys_FaceSprings.tensionBreaks` counts the bonds across its boundary). Collective:
+	call it on every rank."""
+	from yade import mpy
+	tension, shear = localBreakCounts(countedHere)
 	return mpy.comm.allreduce(tension), mpy.comm.allreduce(shear)
 
 

@@ -144,18 +144,18 @@ def refusals(f):
 	``f`` is a dict of what the scene has (read by :func:`rdem.distributed.features`): ``others`` (ids of bodies that are
 	not blocks), ``masterMoving`` (ids on the master that are not fixed), ``masterCells`` (ids on the master with a
 	Poisson cell), ``hex8`` (the paper's hexahedra),
-	``cells`` (blocks with a Poisson cell), ``exchange`` (an :yref:`RdemGhostExchange` in the engines), ``breakable`` (springs that can break). Missing keys count as absent."""
+	``cells`` (blocks with a Poisson cell), ``exchange`` (an :yref:`RdemGhostExchange` in the engines), ``masterCellsReduced``
+	(one that completes the cells on the master, :yref:`RdemGhostExchange::masterCells`), ``breakable`` (springs that can break). Missing keys count as absent."""
 	out = []
 	if f.get('others'):
 		out.append('bodies that are not RdemBlock (ids %s...): only blocks are assigned to subdomains and exchanged' % (sorted(f['others'])[:5], ))
 	if f.get('masterMoving'):
 		out.append('bodies on the master (subdomain 0) that move (ids %s...): mpy sends the master\'s states to no worker, so only fixed '
 		           'bodies (all DOFs blocked, at rest) may stay there' % (sorted(f['masterMoving'])[:5], ))
-	if f.get('masterCells'):
+	if f.get('masterCells') and not f.get('masterCellsReduced'):
 		out.append('bodies on the master (subdomain 0) with a Poisson cell (ids %s...): a cell\'s strain sums all its bonds, which mpy leaves '
-		           'on the workers of the blocks they join, and RdemGhostExchange does not gather them (each worker would take the strain '
-		           'of its own part); build the cells without them (RdemPoissonEngine.build(ids) without the master\'s) or give them to a '
-		           'worker' % (sorted(f['masterCells'])[:5], ))
+		           'on the workers of the blocks they join, and no RdemGhostExchange completes them (RdemGhostExchange.masterCells, which '
+		           'rdem.distributed.prepare sets); each worker would take the strain of its own part' % (sorted(f['masterCells'])[:5], ))
 	if f.get('cells') and not f.get('exchange'):
 		out.append('%d Poisson cells without an RdemGhostExchange: the strains of ghost blocks would come from the bonds the rank has, '
 		           'not from all of theirs (rdem.distributed.prepare inserts it)' % f['cells'])

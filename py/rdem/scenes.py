@@ -377,8 +377,8 @@ def runningBondWall(blocks, dt=None, only=None, beamCell=True, distributed=False
 	:param dt: a fixed time step [s], or None for :yref:`RdemTimeStepper`'s.
 	:param only: make only some blocks (:func:`rdem.masonry.wall`'s ``only``: a set-up per rank on YADE's MPI,
 	    :class:`rdem.distributed.PerRank`); the Poisson cells are built on the blocks made.
-	:param beamCell: give the base beam a Poisson cell too (default, the benchmarks' scene); ``False`` on YADE's MPI when
-	    the beam stays on the master, whose cells :func:`rdem.distributed.check` refuses.
+	:param beamCell: give the base beam a Poisson cell too (default, the benchmarks' scene); ``False``: the beam without
+	    one (``scripts/mpi_scaling.py``, whose figures were measured so).
 	:param distributed: made to run on YADE's MPI (:func:`rdem.engines`' ``distributed``).
 	:return: dict ``perCourse``, ``courses`` (bricks), ``ids`` (the wall's blocks), ``base`` (the fixed beam's blocks),
 	    ``made`` (the blocks made in this scene: ``ids``, or those ``only`` chose).

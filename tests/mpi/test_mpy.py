@@ -2,7 +2,8 @@
 oversubscribed, one thread each) against the serial run of the same binary (scripts/mpi_compare.py): identical bit for
 bit with the Poisson cells' exchange (RdemGhostExchange), different without it (the ghosts' cell strains then come
 from the bonds the rank has); the wall, with springs breaking on the total stress of their faces, with the same break
-counts every 10 steps.
+counts every 10 steps; and that wall on a base beam whose Poisson cell is on the master, completed from every rank's
+bonds (RdemGhostExchange.masterCells), bit for bit, and not without it; scripts/wall.py --mpi, the serial run's history.
 
 Run by CTest in a build against YADE with MPI (tools/setup.sh --mpi: build-mpi/); elsewhere it reports itself skipped
 (exit status 77) with the reason. By hand:
@@ -17,6 +18,7 @@ import unittest
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..')
 SCRIPT = os.path.join(ROOT, 'scripts', 'mpi_compare.py')
+WALL = os.path.join(ROOT, 'scripts', 'wall.py')
 LAUNCHER = os.environ.get('RDEM_LAUNCHER', os.path.join(ROOT, 'build-mpi', 'bin', 'yade'))
 MPIEXEC = shutil.which('mpiexec')
 STEPS = 100
@@ -46,6 +48,24 @@ def run(out, poisson, mpi, exchange=True, scene='cube', steps=STEPS, every=0, ra
 	if r.returncode != 0 or not os.path.exists(out):
 		raise AssertionError('%s failed (%d):\n%s' % (' '.join(cmd), r.returncode, r.stdout[-4000:]))
 	with open(out) as f:
+		return json.load(f)
+
+
+def runWall(out, mpi, extra=()):
+	"""scripts/wall.py on a small wall (6 courses of 3½ bricks, 74 blocks, on a base beam under a top beam) at a fixed step,
+	up to 0.7 mm of shortening (its first joints crack at 0.56 mm); serially with contacts from the first step (as mpy
+	has them). Returns its results.json."""
+	env = dict(os.environ, OMP_NUM_THREADS='1')
+	cmd = [LAUNCHER, '-n', '-x', WALL, '--length', '0.77', '--height', '0.38', '--dt', '4e-6', '--end', '0.7', '--vtk-every', '0', '--out', out] + list(extra)
+	if mpi:
+		cmd = [MPIEXEC, '--allow-run-as-root', '--oversubscribe', '-n', '3'] + cmd + ['--mpi']
+		env = {k: v for k, v in env.items() if not k.startswith(('OMPI_', 'PMIX_'))}
+	else:
+		cmd += ['--contacts', 'always']
+	r = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True, timeout=900)
+	if r.returncode != 0 or not os.path.exists(os.path.join(out, 'results.json')):
+		raise AssertionError('%s failed (%d):\n%s' % (' '.join(cmd), r.returncode, r.stdout[-4000:]))
+	with open(os.path.join(out, 'results.json')) as f:
 		return json.load(f)
 
 
@@ -110,6 +130,37 @@ class Cube(unittest.TestCase):
 		self.assertGreater(serial['breaks'][0] + serial['breaks'][1], 0)  # it cracks within the run
 		self.assertEqual(mpi['history'], serial['history'])  # the same break counts (each bond counted once) every 10 steps
 		self.assertEqual(differences(serial, mpi), (0, 0.0))
+
+	def test_wall_on_beam_with_its_cell(self):
+		# the 10 × 10 running-bond wall standing on a fixed base beam of one block with a Poisson cell: the beam stays on
+		# the master, its bonds (to the 10 bricks of the bottom course) are on the workers of the bricks, each a part, and
+		# RdemGhostExchange.masterCells completes its cell on every rank from all parts, summed in the serial order
+		beam = ['--base-beam']
+		serial = run(os.path.join(self.tmp, 'beam-serial.json'), 'cells', mpi=False, scene='wall', steps=300, every=10, rate=1.0, energy=True, extra=beam)
+		mpi = run(os.path.join(self.tmp, 'beam-mpi.json'), 'cells', mpi=True, scene='wall', steps=300, every=10, rate=1.0, energy=True, extra=beam)
+		self.assertGreater(serial['breaks'][0] + serial['breaks'][1], 0)  # it cracks within the run (measured: 4 in shear by step 30, 16 + 4 by 60)
+		self.assertEqual(mpi['history'], serial['history'])
+		self.assertEqual(differences(serial, mpi), (0, 0.0))
+		# the beam's cell booked once (on the lowest rank with a part of its bonds), its bonds in full on the worker of the
+		# other block: the serial energies, summed in another order (equal to rounding)
+		self.assertEqual(set(mpi['energy']), set(serial['energy']))
+		scale = max(abs(v) for v in serial['energy'].values())
+		for name, value in serial['energy'].items():
+			self.assertAlmostEqual(mpi['energy'][name], value, delta=1e-12 * scale, msg=name)
+		# without the reduction each worker takes the beam's cell from its own half of the bonds: the run departs
+		off = run(os.path.join(self.tmp, 'beam-off.json'), 'cells', mpi=True, scene='wall', steps=300, every=10, rate=1.0, extra=beam + ['--no-master-cells'])
+		self.assertGreater(differences(serial, off)[0], 0)
+
+	def test_wall_script(self):
+		# scripts/wall.py --mpi: the base beam and its Poisson cell on the master, the wall and the top beam (which moves
+		# down) over the workers, the stress on the top beam and the crack counts summed over the ranks: the serial run's
+		# stress-shortening history, crack counts included, bit for bit
+		serial = runWall(os.path.join(self.tmp, 'wallpy-serial'), mpi=False)
+		mpi = runWall(os.path.join(self.tmp, 'wallpy-mpi'), mpi=True)
+		self.assertEqual(mpi['processes'], 3)
+		self.assertGreater(serial['brokenSprings']['joints'], 0)  # its first joints crack within the run
+		self.assertEqual(mpi['history'], serial['history'])
+		self.assertEqual(mpi['brokenSprings'], serial['brokenSprings'])
 
 	def test_wall_made_per_rank(self):
 		# about 4000 blocks (50 bricks by 80 courses, one block per brick), each rank making only its bricks and those

@@ -163,6 +163,8 @@ class Refusals(unittest.TestCase):
 		self.assertEqual(refusals({}), [])
 		self.assertEqual(refusals(dict(cells=1200, exchange=True, breakable=True, offsets=400)), [])  # running bond: both exchanges
 		self.assertEqual(refusals(dict(trackEnergy=True)), [])  # energies: rdem.distributed.energies sums them over ranks
+		# a beam's cell on the master, completed from every rank's part of its bonds (RdemGhostExchange.masterCells)
+		self.assertEqual(refusals(dict(masterCells=[0], cells=10, exchange=True, masterCellsReduced=True)), [])
 
 	def test_each_refusal_names_what(self):
 		for f, what in ((dict(others=[7]), 'not RdemBlock'), (dict(masterMoving=[3]), 'only fixed'), (dict(cells=10), 'RdemGhostExchange'),
