@@ -194,9 +194,10 @@ namespace rdem {
 
 	/* One step of a softening spring: stresses for the segment's total opening u_n and shear displacement u_s [m]
 	   (eq. 14's measures; u_s in any fixed frame, the slip s is kept in the same), updating the history st and adding
-	   the step's dissipation to d. σ_extra: the normal stress the Poisson cells add to the face (doc/sphinx/rdemTheory.rst §5.6), in
-	   the criteria only. Normal: u = u_n + κ (the crushed length taken off); u ≥ w: spring k_n(u - w), tension cut-off;
-	   0 ≤ u < w: crack open, σ = 0; u < 0: crack closed, k_n u, compression cap. Then shear. */
+	   the step's dissipation to d. σ_extra: the normal stress the Poisson cells add to the face (doc/sphinx/rdemTheory.rst
+	   §5.6), in the criteria (the spring's own σ is returned, and the dissipation is the work of its own stresses).
+	   Normal: u = u_n + κ (the crushed length taken off); u ≥ w: spring k_n(u - w), tension cut-off; 0 ≤ u < w: crack
+	   open, σ = 0; u < 0: crack closed, k_n u, compression cap. Then shear. */
 	template <class S>
 	SofteningStress<S>
 	softeningStep(const SofteningConstants<S>& k, S un, const Eigen::Matrix<S, 3, 1>& us, S sigmaExtra, SofteningState<S>& st, SofteningDissipation<S>& d)
