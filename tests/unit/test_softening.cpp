@@ -37,6 +37,7 @@ struct Path {
 	rdem::SofteningConstants<double>   k;
 	rdem::SofteningState<double>       st;
 	rdem::SofteningDissipation<double> d;
+	double                             extra = 0; ///< σ_extra, the Poisson cells' normal stress on the face [Pa]
 	double                             work = 0, un = 0, sigma = 0, peakSigma = -inf, peakTau = 0;
 	V                                  us = V::Zero(), tau = V::Zero();
 	SegmentState                       state = SegmentState::Intact;
@@ -49,7 +50,7 @@ struct Path {
 			const double t = double(i) / n;
 			const double u = un0 + (un1 - un0) * t;
 			const V      s = us0 + (us1 - us0) * t;
-			const auto   r = rdem::softeningStep(k, u, s, 0.0, st, d);
+			const auto   r = rdem::softeningStep(k, u, s, extra, st, d);
 			work += (sigma + r.sigma) / 2 * (u - un) + (tau + r.tau).dot(s - us) / 2;
 			un        = u;
 			us        = s;
@@ -180,6 +181,57 @@ TEST(Softening, CompressionCapCrushesToItsResidual)
 	EXPECT_NEAR(p.d.crushing, 5000 + 0.2 * 10e6 * p.st.crush, 1e-9 * 5000);
 	EXPECT_NEAR(p.work, p.d.crushing + p.stored(), 1e-3 * 5000);
 	EXPECT_NEAR(rdem::capWork(p.k, ku), 5000 + 0.2 * 10e6 * ku, 1e-9 * 5000);
+}
+
+TEST(Softening, CapUnderTheCellsStressBooksTheSpringsWork)
+{
+	/* The cap yields on the total stress σ + σ_extra (the Poisson cells' normal stress on the face, constant here), so
+	   the spring itself carries σ = -f_c(κ) - σ_extra: in a compressed column of cells σ_extra > 0 (the cells' E - M < 0
+	   pulls the face), and the spring carries more than f_c. What its force dissipates is ∫-σ dκ = ∫(f_c + σ_extra)dκ,
+	   not the cap's ∫f_c dκ: the work of the spring's stress along the path balances the booked crushing plus what the
+	   spring stores only with the σ_extra κ term (without it, 3750 J/m² of 8750 go missing here). */
+	for (double extra : { 1.5e6, -1.5e6 }) {
+		Path p(joint());
+		p.k.fc          = 10e6;
+		p.k.Gfc         = 5000;
+		p.k.residual    = 0.2;
+		p.k.c           = inf; // no Coulomb surface: a face barely pressed with cells that pull it is past its apex c/tanφ
+		p.extra         = extra;
+		const double ku = 1.25e-3;
+		p.to(-2 * ku, V::Zero(), 40000);
+		ASSERT_EQ(p.state, SegmentState::Intact);
+		// On the residual plateau: σ + σ_extra = -r f_c.
+		EXPECT_NEAR(p.sigma, -0.2 * 10e6 - extra, 1e-9 * 10e6) << extra;
+		// Booked: G_fc above the plateau, r f_c times the whole closure and σ_extra times it, exactly.
+		EXPECT_NEAR(p.d.crushing, 5000 + (0.2 * 10e6 + extra) * p.st.crush, 1e-9 * 5000) << extra;
+		EXPECT_NEAR(p.work, p.d.crushing + p.stored(), 1e-3 * 5000) << extra;
+	}
+}
+
+TEST(Softening, TensionUnderTheCellsStressBooksTheSpringsWork)
+{
+	/* The tension cut-off on the total stress: the spring carries σ = f_t(1 - ξ) - σ_extra, and its force dissipates
+	   ∫σ dw, G_f^I less σ_extra w. Cells that press the face (σ_extra < 0) make the spring carry -σ_extra even when ξ
+	   reaches 1: released at the break (σ_extra²/2k_n). Cells that pull it (σ_extra > 0) up to a partial softening. */
+	const double wI = 2 * 18.0 / 0.25e6;
+	{
+		Path p(joint());
+		p.extra = -0.1e6;
+		p.to(2 * wI, V::Zero(), 40000);
+		ASSERT_EQ(p.state, SegmentState::BrokenTension);
+		EXPECT_NEAR(p.d.tension, 18.0 + 0.1e6 * wI + 0.1e6 * 0.1e6 / (2 * 1e11), 1e-9 * 18.0);
+		EXPECT_NEAR(p.work, p.d.tension, 1e-3 * 18.0);
+	}
+	{
+		Path p(joint());
+		p.extra = 0.05e6;
+		p.to(wI / 2, V::Zero(), 20000);
+		ASSERT_EQ(p.state, SegmentState::Intact);
+		ASSERT_GT(p.st.xi, 0.3);
+		EXPECT_NEAR(p.sigma, 0.25e6 * (1 - p.st.xi) - 0.05e6, 1e-6 * 0.25e6);
+		EXPECT_NEAR(p.d.tension, 18.0 * (1 - (1 - p.st.xi) * (1 - p.st.xi)) - 0.05e6 * p.st.crack, 1e-9 * 18.0);
+		EXPECT_NEAR(p.work, p.d.tension + p.stored(), 1e-3 * 18.0);
+	}
 }
 
 TEST(Softening, ChecksNameTheParameterAndTheBound)

@@ -100,9 +100,11 @@ namespace rdem {
 		return k.fc * (ku - (1 - k.residual) * ku / 2) + k.residual * k.fc * (kappa - ku);
 	}
 
-	/* Compression cap: returns σ (< 0) for the trial σ_tr = k_n u (u < 0) and advances the crushing closure κ, booking
-	   the work of the cap's stress. Yield on the total stress σ + σ_extra; the softening branch (slope H = (1-r)f_c/κ_u)
-	   and the residual plateau are each returned exactly (piecewise linear in κ). */
+	/* Compression cap: returns σ (< 0) for the trial σ_tr = k_n u (u < 0) and advances the crushing closure κ. Yield on
+	   the total stress σ + σ_extra; the softening branch (slope H = (1-r)f_c/κ_u) and the residual plateau are each
+	   returned exactly (piecewise linear in κ). Books the work of the spring's own stress on the closure, ∫-σ dκ =
+	   ∫(f_c(κ) + σ_extra)dκ (on the cap σ = -f_c(κ) - σ_extra): what the spring's force dissipates, which differs from
+	   the cap's ∫f_c dκ by σ_extra κ where the Poisson cells load the face (σ_extra constant within the step). */
 	template <class S> S capReturn(const SofteningConstants<S>& k, S sigmaTrial, S sigmaExtra, SofteningState<S>& st, SofteningDissipation<S>& d)
 	{
 		S F = -(sigmaTrial + sigmaExtra) - capStrength(k, st.crush);
@@ -117,14 +119,16 @@ namespace rdem {
 			}
 		} else
 			dk = F / k.kn;
-		d.crushing += capWork(k, st.crush + dk) - capWork(k, st.crush);
+		d.crushing += capWork(k, st.crush + dk) - capWork(k, st.crush) + sigmaExtra * dk;
 		st.crush += dk;
 		return sigmaTrial + k.kn * dk;
 	}
 
 	/* Tension cut-off: returns σ for the trial σ_tr = k_n(u - w) ≥ 0 and advances w and ξ (slope H = f_t/w_I of
-	   f_t(ξ) in w), booking ∫f_t(ξ)dw (trapezoid, exact for the linear law). Sets broken when ξ reaches 1 (then the
-	   exact rest of G_f^I is booked and σ = 0). */
+	   f_t(ξ) in w), booking the work of the spring's own stress on the opening, ∫σ dw = ∫(f_t(ξ) - σ_extra)dw (on the
+	   cut-off σ = f_t(ξ) - σ_extra; trapezoid, exact for the linear law): ∫f_t(ξ)dw, the fracture energy, less
+	   σ_extra w where the Poisson cells load the face. Sets broken when ξ reaches 1 (then the exact rest is booked, with
+	   the energy σ_extra²/2k_n the spring still held on the cut-off, and σ = 0). */
 	template <class S>
 	S tensionReturn(const SofteningConstants<S>& k, S sigmaTrial, S sigmaExtra, SofteningState<S>& st, SofteningDissipation<S>& d, bool& broken)
 	{
@@ -134,14 +138,14 @@ namespace rdem {
 		const S dw = k.kn > H ? F / (k.kn - H) : std::numeric_limits<S>::infinity();
 		if (!(st.xi + dw / wI < 1)) { // fully softened in this step (or a spring that would snap back: at once)
 			const S rest = (1 - st.xi) * wI;
-			d.tension += k.ft * (1 - st.xi) * rest / 2;
+			d.tension += k.ft * (1 - st.xi) * rest / 2 - sigmaExtra * rest + sigmaExtra * sigmaExtra / (2 * k.kn);
 			st.crack += rest;
 			st.xi  = 1;
 			broken = true;
 			return 0;
 		}
 		const S xiNew = st.xi + dw / wI;
-		d.tension += k.ft * ((1 - st.xi) + (1 - xiNew)) / 2 * dw;
+		d.tension += (k.ft * ((1 - st.xi) + (1 - xiNew)) / 2 - sigmaExtra) * dw;
 		st.crack += dw;
 		st.xi = xiNew;
 		return sigmaTrial - k.kn * dw;
@@ -190,9 +194,10 @@ namespace rdem {
 
 	/* One step of a softening spring: stresses for the segment's total opening u_n and shear displacement u_s [m]
 	   (eq. 14's measures; u_s in any fixed frame, the slip s is kept in the same), updating the history st and adding
-	   the step's dissipation to d. σ_extra: the normal stress the Poisson cells add to the face (doc/sphinx/rdemTheory.rst §5.6), in
-	   the criteria only. Normal: u = u_n + κ (the crushed length taken off); u ≥ w: spring k_n(u - w), tension cut-off;
-	   0 ≤ u < w: crack open, σ = 0; u < 0: crack closed, k_n u, compression cap. Then shear. */
+	   the step's dissipation to d. σ_extra: the normal stress the Poisson cells add to the face (doc/sphinx/rdemTheory.rst
+	   §5.6), in the criteria (the spring's own σ is returned, and the dissipation is the work of its own stresses).
+	   Normal: u = u_n + κ (the crushed length taken off); u ≥ w: spring k_n(u - w), tension cut-off; 0 ≤ u < w: crack
+	   open, σ = 0; u < 0: crack closed, k_n u, compression cap. Then shear. */
 	template <class S>
 	SofteningStress<S>
 	softeningStep(const SofteningConstants<S>& k, S un, const Eigen::Matrix<S, 3, 1>& us, S sigmaExtra, SofteningState<S>& st, SofteningDissipation<S>& d)
