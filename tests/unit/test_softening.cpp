@@ -195,7 +195,6 @@ TEST(Softening, CapUnderTheCellsStressBooksTheSpringsWork)
 		p.k.fc          = 10e6;
 		p.k.Gfc         = 5000;
 		p.k.residual    = 0.2;
-		p.k.c           = inf; // no Coulomb surface: a face barely pressed with cells that pull it is past its apex c/tanφ
 		p.extra         = extra;
 		const double ku = 1.25e-3;
 		p.to(-2 * ku, V::Zero(), 40000);
@@ -206,6 +205,22 @@ TEST(Softening, CapUnderTheCellsStressBooksTheSpringsWork)
 		EXPECT_NEAR(p.d.crushing, 5000 + (0.2 * 10e6 + extra) * p.st.crush, 1e-9 * 5000) << extra;
 		EXPECT_NEAR(p.work, p.d.crushing + p.stored(), 1e-3 * 5000) << extra;
 	}
+}
+
+TEST(Softening, NoTrialShearBeyondTheApexIsNoSlip)
+{
+	/* A face barely pressed while the cells pull it: σ + σ_extra beyond the Coulomb surface's apex c(1 - ξ)/tanφ with
+	   no shear displacement. The shear return has no direction to slip in: τ stays zero (finite), and neither slip nor
+	   softening nor dissipation follows from it. */
+	rdem::SofteningState<double>       st;
+	rdem::SofteningDissipation<double> d;
+	const auto                         r = rdem::softeningStep(joint(), -1e-9, V(V::Zero()), 1.5e6, st, d);
+	EXPECT_EQ(r.state, SegmentState::Intact);
+	EXPECT_TRUE(r.tau.allFinite());
+	EXPECT_EQ(r.tau.norm(), 0);
+	EXPECT_EQ(st.xi, 0);
+	EXPECT_EQ(st.slip.norm(), 0);
+	EXPECT_EQ(d.shear + d.friction, 0);
 }
 
 TEST(Softening, TensionUnderTheCellsStressBooksTheSpringsWork)

@@ -170,7 +170,9 @@ namespace rdem {
 		const S tn     = tauTrial.norm();
 		auto    tanPhi = [&](S xi) { return k.tanPhi + (k.tanPhiR - k.tanPhi) * xi; };
 		const S F      = tn - (k.c * (1 - st.xi) - sigma * tanPhi(st.xi));
-		if (!(F > 0)) return tauTrial;
+		// No trial shear: nothing to return and no direction to slip in. F > 0 then means σ beyond the surface's apex
+		// (the cells pulling a barely pressed face), a normal stress that the tension cut-off deals with, not slip.
+		if (!(F > 0) || !(tn > 0)) return tauTrial;
 		const S wII = finalOpening(k.c, k.GfII), H = (k.c + sigma * (k.tanPhiR - k.tanPhi)) / wII;
 		S       dk = k.ks > H ? F / (k.ks - H) : std::numeric_limits<S>::infinity();
 		if (!(st.xi + dk / wII < 1)) { // fully softened in this step: the exact rest of the two integrals, then residual
