@@ -73,9 +73,9 @@ namespace {
 	   of X that face Y take part (cosine c = -n_f·u > 0). Sample keys are ((which·6 + face)·(n+1)² + point), stable from
 	   step to step for the shear history. A face's samples are the points of the trapezoid rule (rdem::faceSamplePoints),
 	   tested in Y's frame, where they are affine in the face's centre and axes (rdem::sampleDepthLocal). With near (a sample
-	   certificate, nearSamples), only the samples whose bit is set are tested, visited by the set bits in ascending key
-	   order (the order of the full grid, which the law's history and sums follow) and each with the same arithmetic as
-	   in the full grid: the others cannot be inside Y. */
+	   certificate, nearSamples), only the samples whose bit is set are tested: the others cannot be inside Y. Samples are
+	   visited by the set bits of the certificate (or of all keys), in ascending key order, which the law's history and
+	   sums follow. */
 	void sampleInside(
 	        const Block&            X,
 	        const State&            sx,
@@ -140,33 +140,31 @@ namespace {
 			g.sampleDepth.push_back(hit.depth);
 			g.sampleArea.push_back(F.area * a.w * b.w * F.cosine / 2); // trapezoid weight; both blocks are sampled: half each
 		};
+		// The samples to test: the set bits of keys [which·6·perFace, (which + 1)·6·perFace) of the certificate, or all.
+		const int        lo = which * 6 * perFace, hi = lo + 6 * perFace;
+		vector<uint64_t> all;
 		if (!near) {
-			for (int face = 0; face < 6; ++face) {
-				const Face F = faceOf(face);
-				if (!F.open) continue;
-				const int first = (which * 6 + face) * perFace; // key of the face's first sample
-				for (int i = 0; i <= n; ++i)
-					for (int j = 0; j <= n; ++j)
-						sample(F, first + i * (n + 1) + j, i, j);
-			}
-			return;
+			all.assign(size_t(hi + 63) / 64, ~uint64_t(0));
+			near = &all;
 		}
-		// The certificate's samples of X: the set bits of keys [which·6·perFace, (which + 1)·6·perFace).
-		const int lo = which * 6 * perFace, hi = lo + 6 * perFace;
-		int       current = -1; // the face of F
-		Face      F {};
-		for (int w = lo / 64; w <= (hi - 1) / 64; ++w) {
-			uint64_t bits = (*near)[size_t(w)];
-			if (64 * w < lo) bits &= ~uint64_t(0) << (lo - 64 * w);
-			if (hi - 64 * w < 64) bits &= (uint64_t(1) << (hi - 64 * w)) - 1;
-			for (; bits; bits &= bits - 1) {
-				const int key = 64 * w + __builtin_ctzll(bits), face = key / perFace - which * 6, point = key % perFace;
-				if (face != current) {
-					F       = faceOf(face);
-					current = face;
-				}
-				if (F.open) sample(F, key, point / (n + 1), point % (n + 1));
+		// The first set key from `key` on (hi or more if none is left below hi).
+		auto next = [&](int key) {
+			while (key < hi) {
+				const uint64_t bits = (*near)[size_t(key) / 64] >> (key % 64);
+				if (bits) return key + __builtin_ctzll(bits);
+				key = 64 * (key / 64 + 1);
 			}
+			return hi;
+		};
+		for (int key = next(lo); key < hi;) {
+			const int  face = key / perFace - which * 6, first = key - key % perFace, end = first + perFace;
+			const Face F = faceOf(face);
+			if (!F.open) {
+				key = next(end);
+				continue;
+			}
+			for (; key < end; key = next(key + 1))
+				sample(F, key, (key - first) / (n + 1), (key - first) % (n + 1));
 		}
 	}
 
