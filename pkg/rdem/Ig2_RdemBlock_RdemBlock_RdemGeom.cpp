@@ -41,15 +41,10 @@ namespace {
 	/// positions of blocks laid side by side, 1e-6 of the smaller half-extent [m].
 	Real faceTouchTolerance(const Block& A, const Block& B) { return 1e-6 * math::min(A.half.minCoeff(), B.half.minCoeff()); }
 
-	/* A sample certificate (RdemGeom::nearSamples): word 0 has bit f set if face f = which·6 + face (sampleInside) has a
-	   sample in the certificate; the words from 1 on have bit `key` set for each such sample. */
-	bool nearFace(const vector<uint64_t>& near, int f) { return (near[0] >> f) & 1; }
-	bool nearSample(const vector<uint64_t>& near, int key) { return (near[1 + size_t(key) / 64] >> (size_t(key) % 64)) & 1; }
-
 	/* The samples of block X (which = 0 for body 1, 1 for body 2; keys as in sampleInside, all six faces) that lie less
-	   than skin outside block Y (rdem::sampleOutside), marked in near: the only ones that can enter Y while the blocks'
-	   travels add up to less than skin less rdem::separationMargin. Their points in Y's frame are computed as in
-	   sampleInside. */
+	   than skin outside block Y (rdem::sampleOutside), marked in near, a sample certificate (RdemGeom::nearSamples: bit
+	   `key` set for each such sample): the only ones that can enter Y while the blocks' travels add up to less than skin
+	   less rdem::separationMargin. Their points in Y's frame are computed as in sampleInside. */
 	void markNearSamples(const Block& X, const Block& Y, int which, int n, Real skin, vector<uint64_t>& near)
 	{
 		const int      perFace = (n + 1) * (n + 1);
@@ -64,10 +59,8 @@ namespace {
 					const Vector3r qa = qc + X.half[k1] * rdem::trapezoidNode<Real>(i, n).x * q1;
 					for (int j = 0; j <= n; ++j) {
 						const int key = first + i * (n + 1) + j;
-						if (rdem::sampleOutside<Real>(Y.half, qa + X.half[k2] * rdem::trapezoidNode<Real>(j, n).x * q2) < skin) {
-							near[1 + size_t(key) / 64] |= uint64_t(1) << (size_t(key) % 64);
-							near[0] |= uint64_t(1) << (which * 6 + 2 * k + side);
-						}
+						if (rdem::sampleOutside<Real>(Y.half, qa + X.half[k2] * rdem::trapezoidNode<Real>(j, n).x * q2) < skin)
+							near[size_t(key) / 64] |= uint64_t(1) << (size_t(key) % 64);
 					}
 				}
 			}
@@ -80,7 +73,9 @@ namespace {
 	   of X that face Y take part (cosine c = -n_f·u > 0). Sample keys are ((which·6 + face)·(n+1)² + point), stable from
 	   step to step for the shear history. A face's samples are the points of the trapezoid rule (rdem::faceSamplePoints),
 	   tested in Y's frame, where they are affine in the face's centre and axes (rdem::sampleDepthLocal). With near (a sample
-	   certificate, nearSamples), only the samples whose bit is set are tested: the others cannot be inside Y. */
+	   certificate, nearSamples), only the samples whose bit is set are tested: the others cannot be inside Y. Samples are
+	   visited by the set bits of the certificate (or of all keys), in ascending key order, which the law's history and
+	   sums follow. */
 	void sampleInside(
 	        const Block&            X,
 	        const State&            sx,
@@ -100,54 +95,88 @@ namespace {
 		const State&   s2      = which == 0 ? sy : sx;
 		const Vector3r x1      = which == 0 ? X.pos : Y.pos;
 		const Vector3r x2      = which == 0 ? Y.pos : X.pos;
-		for (int k = 0; k < 3; ++k) {
-			if (near && !nearFace(*near, which * 6 + 2 * k) && !nearFace(*near, which * 6 + 2 * k + 1)) continue; // neither face along k may enter
-			const int      k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-			const Vector3r t1 = X.rot.col(k1), t2 = X.rot.col(k2);
-			const Vector3r q1 = toY * t1, q2 = toY * t2;                        // the face's in-plane axes in Y's frame
-			const Real     area = rdem::segmentArea(X.half[k1], X.half[k2], n); // of a segment of these faces [m²]
-			for (int side = 0; side < 2; ++side) {
-				const int face = 2 * k + side, first = (which * 6 + face) * perFace; // key of the face's first sample
-				if (near && !nearFace(*near, which * 6 + face)) continue;
-				const Real     s      = side ? 1 : -1;
-				const Vector3r nf     = s * X.rot.col(k);
-				const Real     cosine = -nf.dot(u);
-				if (!(cosine > 0)) continue;
-				const Vector3r fc = X.pos + X.half[k] * nf;
-				const Vector3r qc = toY * (fc - Y.pos); // the face centre in Y's frame
-				if (!rdem::faceMayEnterLocal<Real>(Y.half, qc, q1, q2, X.half[k1], X.half[k2])) continue;
-				for (int i = 0; i <= n; ++i) {
-					const auto     a  = rdem::trapezoidNode<Real>(i, n);
-					const Real     sa = X.half[k1] * a.x;
-					const Vector3r qa = qc + sa * q1;
-					for (int j = 0; j <= n; ++j) {
-						const int key = first + i * (n + 1) + j;
-						if (near && !nearSample(*near, key)) continue;
-						const auto b   = rdem::trapezoidNode<Real>(j, n);
-						const Real rb  = X.half[k2] * b.x;
-						const auto hit = rdem::sampleDepthLocal<Real>(Y.half, qa + rb * q2, uq);
-						if (!hit.hit) continue;
-						const Vector3r point = fc + sa * t1 + rb * t2 + (hit.depth / 2) * u;
-						g.sampleKey.push_back(key);
-						g.samplePoint.push_back(point);
-						g.sampleNormal.push_back(normal);
-						g.sampleVel.push_back(pointVelocity(s2, x2, point) - pointVelocity(s1, x1, point));
-						g.sampleDepth.push_back(hit.depth);
-						g.sampleArea.push_back(area * a.w * b.w * cosine / 2); // trapezoid weight; both blocks are sampled: half each
-					}
-				}
+		// One face of X (face = 2k + side): its axes and centre, globally and in Y's frame, whether it may have a sample
+		// inside Y (it faces Y and rdem::faceMayEnterLocal), and its samples' area before the trapezoid weight.
+		struct Face {
+			int      k1, k2;
+			Vector3r t1, t2, q1, q2, fc, qc;
+			Real     area, cosine;
+			bool     open;
+		};
+		auto faceOf = [&](int face) {
+			Face      F;
+			const int k       = face / 2;
+			F.k1              = (k + 1) % 3;
+			F.k2              = (k + 2) % 3;
+			F.t1              = X.rot.col(F.k1);
+			F.t2              = X.rot.col(F.k2);
+			F.q1              = toY * F.t1; // the face's in-plane axes in Y's frame
+			F.q2              = toY * F.t2;
+			F.area            = rdem::segmentArea(X.half[F.k1], X.half[F.k2], n); // of a segment of the face [m²]
+			const Real     s  = face % 2 ? 1 : -1;
+			const Vector3r nf = s * X.rot.col(k);
+			F.cosine          = -nf.dot(u);
+			F.open            = F.cosine > 0;
+			if (!F.open) return F;
+			F.fc   = X.pos + X.half[k] * nf;
+			F.qc   = toY * (F.fc - Y.pos); // the face centre in Y's frame
+			F.open = rdem::faceMayEnterLocal<Real>(Y.half, F.qc, F.q1, F.q2, X.half[F.k1], X.half[F.k2]);
+			return F;
+		};
+		// Sample (i, j) of face F, key `key`, if inside Y.
+		auto sample = [&](const Face& F, int key, int i, int j) {
+			const auto     a   = rdem::trapezoidNode<Real>(i, n);
+			const Real     sa  = X.half[F.k1] * a.x;
+			const Vector3r qa  = F.qc + sa * F.q1;
+			const auto     b   = rdem::trapezoidNode<Real>(j, n);
+			const Real     rb  = X.half[F.k2] * b.x;
+			const auto     hit = rdem::sampleDepthLocal<Real>(Y.half, qa + rb * F.q2, uq);
+			if (!hit.hit) return;
+			const Vector3r point = F.fc + sa * F.t1 + rb * F.t2 + (hit.depth / 2) * u;
+			g.sampleKey.push_back(key);
+			g.samplePoint.push_back(point);
+			g.sampleNormal.push_back(normal);
+			g.sampleVel.push_back(pointVelocity(s2, x2, point) - pointVelocity(s1, x1, point));
+			g.sampleDepth.push_back(hit.depth);
+			g.sampleArea.push_back(F.area * a.w * b.w * F.cosine / 2); // trapezoid weight; both blocks are sampled: half each
+		};
+		// The samples to test: the set bits of keys [which·6·perFace, (which + 1)·6·perFace) of the certificate, or all.
+		const int        lo = which * 6 * perFace, hi = lo + 6 * perFace;
+		vector<uint64_t> all;
+		if (!near) {
+			all.assign(size_t(hi + 63) / 64, ~uint64_t(0));
+			near = &all;
+		}
+		// The first set key from `key` on (hi or more if none is left below hi).
+		auto next = [&](int key) {
+			while (key < hi) {
+				const uint64_t bits = (*near)[size_t(key) / 64] >> (key % 64);
+				if (bits) return key + __builtin_ctzll(bits);
+				key = 64 * (key / 64 + 1);
 			}
+			return hi;
+		};
+		for (int key = next(lo); key < hi;) {
+			const int  face = key / perFace - which * 6, first = key - key % perFace, end = first + perFace;
+			const Face F = faceOf(face);
+			if (!F.open) {
+				key = next(end);
+				continue;
+			}
+			for (; key < end; key = next(key + 1))
+				sample(F, key, (key - first) / (n + 1), (key - first) % (n + 1));
 		}
 	}
 
 	/// Edge-to-edge contact of the pair (rdem::edgeEdgeContact), appended to geom with the key after all face samples.
 	/// Its area is that of a corner sample of the smaller block, a quarter of a segment: a penalty for the contact of
 	/// two edges, which carries no area of its own.
-	void edgeInside(const rdem::BlockPair<Real>& pair, const State& s1, const State& s2, Real tol, int n, RdemGeom& g)
+	void
+	edgeInside(const rdem::BlockPair<Real>& pair, const rdem::SeparatingAxes<Real>& sat, const State& s1, const State& s2, Real tol, int n, RdemGeom& g)
 	{
 		const Block& A   = pair.A;
 		const Block& B   = pair.B;
-		const auto   hit = rdem::edgeEdgeContact<Real>(pair, tol);
+		const auto   hit = rdem::edgeEdgeContact<Real>(pair, sat, tol);
 		if (!hit.hit) return;
 		Real segArea = std::numeric_limits<Real>::infinity();
 		for (const Block* X : { &A, &B })
@@ -162,16 +191,23 @@ namespace {
 	}
 
 	/// Face samples of both blocks inside each other along the pair's contact normal, then the edge-to-edge contact; with
-	/// near, only the samples of that certificate (sampleInside).
+	/// near, only the samples of that certificate (sampleInside). sat: the pair's overlaps on the separating axes.
 	void sampleContacts(
-	        const rdem::BlockPair<Real>& pair, const State& s1, const State& s2, Real tol, int n, RdemGeom& g, const vector<uint64_t>* near = nullptr)
+	        const rdem::BlockPair<Real>&      pair,
+	        const rdem::SeparatingAxes<Real>& sat,
+	        const State&                      s1,
+	        const State&                      s2,
+	        Real                              tol,
+	        int                               n,
+	        RdemGeom&                         g,
+	        const vector<uint64_t>*           near = nullptr)
 	{
 		const Block&   A      = pair.A;
 		const Block&   B      = pair.B;
-		const Vector3r normal = rdem::contactFaceAxis<Real>(pair).normal;
+		const Vector3r normal = rdem::contactFaceAxis<Real>(pair, sat).normal;
 		sampleInside(A, s1, B, s2, 0, n, normal, g, near);
 		sampleInside(B, s2, A, s1, 1, n, normal, g, near);
-		edgeInside(pair, s1, s2, tol, n, g);
+		edgeInside(pair, sat, s1, s2, tol, n, g);
 	}
 
 	/* The contact points of the last step whose history (RdemPhys::contactShear, contactDashpot, contactOffset, in the
@@ -363,16 +399,17 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 			return true;
 		}
 	}
-	RdemGeom probe;
+	const rdem::SeparatingAxes<Real> sat(pair);
+	RdemGeom                         probe;
 	probe.samplesPerEdge = contactSamples();
-	sampleContacts(pair, s1, s2, tol, contactSamples(), probe);
+	sampleContacts(pair, sat, s1, s2, tol, contactSamples(), probe);
 	if (probe.sampleKey.empty() && contactSamples() == 1 && segmentsPerEdge > 1 && rdem::facesCross<Real>(A, B, faceTouchTolerance(A, B))) {
 		/* Vertices only, and no vertex of either block in or on the other although they overlap: faces that cross (a beam
 		   across a wall). The contact then samples the face grid of segmentsPerEdge for its life; its samples count from
 		   the depth at which they enter (δ₀), so the switch adds no energy. Blocks side by side with coincident faces (a
 		   course's head joints) have their vertices on each other's edges and keep the vertex samples. */
 		probe.samplesPerEdge = segmentsPerEdge;
-		sampleContacts(pair, s1, s2, tol, segmentsPerEdge, probe);
+		sampleContacts(pair, sat, s1, s2, tol, segmentsPerEdge, probe);
 	}
 	if (probe.sampleKey.empty()) return false;
 	auto g  = shared_ptr<RdemGeom>(new RdemGeom(probe));
@@ -387,7 +424,7 @@ const vector<uint64_t>* Ig2_RdemBlock_RdemBlock_RdemGeom::nearSamples(const rdem
 {
 	const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr; // recorded by RdemContactGate
 	if (!skipApart || !travel || !travel->currentFor(*scene)) return nullptr;
-	const int  n = g.samplesPerEdge, words = 1 + (2 * 6 * (n + 1) * (n + 1) + 63) / 64;
+	const int  n = g.samplesPerEdge, words = (2 * 6 * (n + 1) * (n + 1) + 63) / 64;
 	const Real t = travel->travel[size_t(I.getId1())] + travel->travel[size_t(I.getId2())];
 	if (g.sampleEpoch == travel->epoch && t < g.sampleReach && g.nearSamples.size() == size_t(words)) return &g.nearSamples;
 	// A new certificate; this step tests every sample. None for blocks so slender that the skin is within the margin.
@@ -497,11 +534,13 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	const Block B { state2.pos + shift2, state2.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape2.get())->extents };
 	if (!I->phys) return force ? bond(A, B, I) : findContact(A, B, state1, state2, I);
 
-	const rdem::BlockPair<Real> pair(A, B);
-	const Real                  tol     = touchTolerance(A, B);
-	RdemGeom&                   g       = *static_cast<RdemGeom*>(I->geom.get());
-	RdemPhys&                   p       = *static_cast<RdemPhys*>(I->phys.get());
-	const bool                  overlap = rdem::blocksOverlap<Real>(pair, tol);
+	// A real contact needs every separating axis's overlap when it overlaps (normal, edge-to-edge test): computed once.
+	const rdem::BlockPair<Real>      pair(A, B);
+	const rdem::SeparatingAxes<Real> sat(pair);
+	const Real                       tol     = touchTolerance(A, B);
+	RdemGeom&                        g       = *static_cast<RdemGeom*>(I->geom.get());
+	RdemPhys&                        p       = *static_cast<RdemPhys*>(I->phys.get());
+	const bool                       overlap = rdem::blocksOverlap<Real>(sat, tol);
 	/* A sampled contact whose faces were found not to meet face to face (two grid neighbours along an edge, blocks tilted
 	   against each other) is not tested again before the blocks have moved by patchTravel relative to each other since:
 	   the same tolerance as a patch's, by which the patch found later lags (markDerived). */
@@ -514,7 +553,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	if (g.nPatch() > 0) g.clearPatch(); // and the configuration it was derived in
 	if (tried) markDerived(A, B, state1.ori, state2.ori, g);
 	g.clearSamples();
-	if (overlap) sampleContacts(pair, state1, state2, tol, g.samplesPerEdge, g, nearSamples(pair, *I, g));
+	if (overlap) sampleContacts(pair, sat, state1, state2, tol, g.samplesPerEdge, g, nearSamples(pair, *I, g));
 	if (!from.pos.empty()) handOverToSamples(from, g, p);
 	return true; // a real interaction stays; the law erases it when no sample is in contact
 }

@@ -117,8 +117,8 @@ public:
 		.def("segDisp",&RdemGeom::segDispPy,(py::arg("state1"),py::arg("state2")),"Relative displacement $\\mathbf{P}_2-\\mathbf{P}_1$ of each bonded segment's material points (global) [m] for the given states of body 1 and body 2, e.g. ``I.geom.segDisp(O.bodies[I.id1].state, O.bodies[I.id2].state)`` (without the periodic cell shift).")
 	);
 	// clang-format on
-	/* A sampled contact's sample certificate (Ig2_RdemBlock_RdemBlock_RdemGeom, rdem::sampleOutside): a bit per face that
-	   has such a sample (first word), then a bit per sample key, set for the samples that may enter the other block while
+	/* A sampled contact's sample certificate (Ig2_RdemBlock_RdemBlock_RdemGeom, rdem::sampleOutside): a bit per sample
+	   key (bit key % 64 of word key / 64), set for the samples that may enter the other block while
 	   the two blocks' travels (RdemContactGate) add up to less than sampleReach in the travel record sampleEpoch; only
 	   they are tested. Not saved (a loaded scene makes it
 	   again); at the end of the object, away from what a bond's law reads. */

@@ -461,6 +461,59 @@ TEST(BlockGeometry, BlocksOverlapAgreesWithAVertexBasedSeparatingAxisTest)
 	EXPECT_GE(apart, 50);
 }
 
+// Whether A and B overlap by more than tol (blocksOverlap of the pair, with its early return), after checking that the
+// table of the pair's 15 overlaps holds BlockPair's values to the bit and blocksOverlap from it decides the same.
+bool overlapCheckedAgainstTheTable(const Block& A, const Block& B, Scalar tol)
+{
+	const rdem::BlockPair<Scalar>      pair(A, B);
+	const rdem::SeparatingAxes<Scalar> sat(pair);
+	for (int i = 0; i < 3; ++i) {
+		EXPECT_EQ(sat.face[i], pair.overlapA(i));
+		EXPECT_EQ(sat.face[i + 3], pair.overlapB(i));
+		for (int j = 0; j < 3; ++j) {
+			EXPECT_EQ(sat.crossLength[3 * i + j], pair.crossLength(i, j));
+			EXPECT_EQ(sat.crossScaled[3 * i + j], pair.crossOverlapScaled(i, j));
+		}
+	}
+	const bool overlap = rdem::blocksOverlap<Scalar>(pair, tol);
+	EXPECT_EQ(rdem::blocksOverlap<Scalar>(sat, tol), overlap);
+	return overlap;
+}
+
+TEST(BlockGeometry, SeparatingAxesTableGivesTheSameDecisionsToTheBit)
+{
+	// The table of a pair's 15 overlaps (SeparatingAxes), made once for a sampled contact, holds BlockPair's values to the
+	// bit, and blocksOverlap from it (no early return) decides as blocksOverlap from the pair (early return at the first
+	// separating axis), on 400 random pairs (general rotations, both outcomes) and on 400 grid neighbours of a wall: blocks
+	// of 0.25 × 0.12 × 0.055 m half-extents offset across an edge, a corner or a face, strained into each other or apart by
+	// up to 1e-6 m and turned by up to 1e-4 rad (the pairs of tests/yade that are sampled every step). The
+	// tolerance is the functor's 1e-9 of the smaller half-extent; pairs on the threshold are included: the decisions must
+	// agree exactly, since both compare the same numbers.
+	std::mt19937 gen(20261127);
+	auto         uniform     = [&gen](Scalar lo, Scalar hi) { return lo + (hi - lo) * (gen() / 4294967296.0); };
+	int          overlapping = 0, apart = 0;
+	for (int k = 0; k < 400; ++k) {
+		const Block A = randomBlock(gen, 0.0), B = randomBlock(gen, 2.0);
+		(overlapCheckedAgainstTheTable(A, B, 1e-3) ? overlapping : apart)++;
+	}
+	const V3 h(0.25, 0.12, 0.055);
+	for (int k = 0; k < 400; ++k) {
+		V3 offset, strain, axis;
+		for (int i = 0; i < 3; ++i) // -1, 0 or 1 block along each axis; along the course also half a block
+			offset[i] = 2 * h[i] * (int(gen() % 3) - 1) / (i == 0 && gen() % 2 ? 2 : 1);
+		for (int i = 0; i < 3; ++i)
+			strain[i] = uniform(-1e-6, 1e-6);
+		for (int i = 0; i < 3; ++i)
+			axis[i] = uniform(-1, 1);
+		const Scalar angle = uniform(0, 1e-4);
+		const Block  A { V3(0.3, -0.2, 1.1), M3::Identity(), h };
+		const Block  B { A.pos + offset + strain, Eigen::AngleAxis<Scalar>(angle, axis.normalized()).toRotationMatrix(), h };
+		(overlapCheckedAgainstTheTable(A, B, 1e-9 * h.minCoeff()) ? overlapping : apart)++;
+	}
+	EXPECT_GE(overlapping, 100);
+	EXPECT_GE(apart, 100);
+}
+
 // ------------------------------------------------------------------------------------------------ contactFaceAxis
 
 TEST(BlockGeometry, ContactFaceAxisOfStackedBlocks)

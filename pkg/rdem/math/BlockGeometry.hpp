@@ -151,6 +151,29 @@ namespace rdem {
 		}
 	};
 
+	/* The projection overlaps of a pair on all 15 axes of the separating-axis test, each computed once by BlockPair's
+	   formulas: a sampled contact needs every one of them in each step, for the overlap test (blocksOverlap), the pair's
+	   normal (contactFaceAxis) and the edge-to-edge contact (edgeEdgeContact), which computed them again each (with a
+	   square root per edge pair). The functions given this table do the same operations on the same numbers as those
+	   given the BlockPair alone, so their results are the same to the bit (tests/unit/test_block_geometry.cpp). */
+	template <class S> struct SeparatingAxes {
+		S face[6];        ///< overlapA(i) for i < 3, overlapB(i - 3) for i ≥ 3 [m]
+		S crossLength[9]; ///< crossLength(i, j) at 3i + j
+		S crossScaled[9]; ///< crossOverlapScaled(i, j) at 3i + j [m]
+
+		explicit SeparatingAxes(const BlockPair<S>& pair)
+		{
+			for (int i = 0; i < 3; ++i) {
+				face[i]     = pair.overlapA(i);
+				face[i + 3] = pair.overlapB(i);
+				for (int j = 0; j < 3; ++j) {
+					crossLength[3 * i + j] = pair.crossLength(i, j);
+					crossScaled[3 * i + j] = pair.crossOverlapScaled(i, j);
+				}
+			}
+		}
+	};
+
 	/// The contact normal of two overlapping blocks (see contactFaceAxis).
 	template <class S> struct FaceAxis {
 		S                      overlap = 0;                              ///< overlap of the projections along the normal [m]
@@ -167,17 +190,16 @@ namespace rdem {
 	   unless another is within the fraction blend of it. The default 1 % blends the faces of aligned blocks (their
 	   overlaps differ by round-off) and keeps the band between perpendicular axes narrow, where the turning normal
 	   acts as a transverse stiffness of order k_nA/blend that the time step does not include. For blocks that overlap (o_min > 0); oriented from A to B. */
-	template <class S> FaceAxis<S> contactFaceAxis(const BlockPair<S>& pair, S blend = S(1e-2))
+	template <class S> FaceAxis<S> contactFaceAxis(const BlockPair<S>& pair, const SeparatingAxes<S>& sat, S blend = S(1e-2))
 	{
 		using V = Eigen::Matrix<S, 3, 1>;
-		V axes[6];
-		S overlaps[6];
-		S least = std::numeric_limits<S>::infinity();
+		V        axes[6];
+		const S* overlaps = sat.face;
+		S        least    = std::numeric_limits<S>::infinity();
 		for (int i = 0; i < 6; ++i) {
-			const V a   = (i < 3 ? pair.A : pair.B).rot.col(i % 3);
-			axes[i]     = (i < 3 ? pair.t[i] : pair.offsetB(i - 3)) >= 0 ? a : V(-a);
-			overlaps[i] = i < 3 ? pair.overlapA(i) : pair.overlapB(i - 3);
-			least       = std::min(least, overlaps[i]);
+			const V a = (i < 3 ? pair.A : pair.B).rot.col(i % 3);
+			axes[i]   = (i < 3 ? pair.t[i] : pair.offsetB(i - 3)) >= 0 ? a : V(-a);
+			least     = std::min(least, overlaps[i]);
 		}
 		V       sum  = V::Zero();
 		const S band = blend * least;
@@ -187,6 +209,11 @@ namespace rdem {
 		axis.normal  = sum.normalized();
 		axis.overlap = projectionOverlap(pair.A, pair.B, axis.normal);
 		return axis;
+	}
+
+	template <class S> FaceAxis<S> contactFaceAxis(const BlockPair<S>& pair, S blend = S(1e-2))
+	{
+		return contactFaceAxis(pair, SeparatingAxes<S>(pair), blend);
 	}
 
 	template <class S> FaceAxis<S> contactFaceAxis(const OrientedBlock<S>& A, const OrientedBlock<S>& B, S blend = S(1e-2))
@@ -299,6 +326,20 @@ namespace rdem {
 
 	template <class S> bool blocksOverlap(const OrientedBlock<S>& A, const OrientedBlock<S>& B, S tol) { return blocksOverlap(BlockPair<S>(A, B), tol); }
 
+	/// blocksOverlap from the pair's table of overlaps (the same decision, without the early return at the first
+	/// separating axis: for a pair that needs the table anyway).
+	template <class S> bool blocksOverlap(const SeparatingAxes<S>& sat, S tol)
+	{
+		for (int i = 0; i < 3; ++i)
+			if (!(sat.face[i] > tol) || !(sat.face[i + 3] > tol)) return false;
+		for (int k = 0; k < 9; ++k) {
+			const S len = sat.crossLength[k];
+			if (len < S(1e-9)) continue; // parallel edges: the face axes already cover this direction
+			if (!(sat.crossScaled[k] > tol * len)) return false;
+		}
+		return true;
+	}
+
 	/// An edge of one block crossing an edge of the other (see edgeEdgeContact).
 	template <class S> struct EdgeHit {
 		bool                   hit    = false;
@@ -312,7 +353,7 @@ namespace rdem {
 	   generation of ODE's dBoxBox), if the axis of least overlap is the cross product of an edge direction of A and one of
 	   B, and its overlap is clearly smaller than that of every face axis (margin 0.95), the contact is at the closest
 	   points of A's edge farthest along that axis and B's edge farthest against it, if both lie within their edges. */
-	template <class S> EdgeHit<S> edgeEdgeContact(const BlockPair<S>& pair, S tol)
+	template <class S> EdgeHit<S> edgeEdgeContact(const BlockPair<S>& pair, const SeparatingAxes<S>& sat, S tol)
 	{
 		using std::abs;
 		using V                         = Eigen::Matrix<S, 3, 1>;
@@ -320,16 +361,16 @@ namespace rdem {
 		const OrientedBlock<S>& B       = pair.B;
 		S                       faceMin = std::numeric_limits<S>::infinity();
 		for (int i = 0; i < 3; ++i)
-			faceMin = std::min(faceMin, std::min(pair.overlapA(i), pair.overlapB(i)));
+			faceMin = std::min(faceMin, std::min(sat.face[i], sat.face[i + 3]));
 		EdgeHit<S> hit;
 		if (!(faceMin > tol)) return hit;
 		int i0 = -1, j0 = -1;
 		S   best = faceMin, bestLength = 0;
 		for (int i = 0; i < 3; ++i)
 			for (int j = 0; j < 3; ++j) {
-				const S len = pair.crossLength(i, j);
+				const S len = sat.crossLength[3 * i + j];
 				if (len < S(1e-6)) continue;
-				const S o = pair.crossOverlapScaled(i, j) / len;
+				const S o = sat.crossScaled[3 * i + j] / len;
 				if (!(o > tol)) return hit; // separated along this axis
 				if (o < S(0.95) * best) {
 					best       = o;
@@ -357,6 +398,8 @@ namespace rdem {
 		hit.point  = (pA + sA * ea + pB + tB * eb) / 2;
 		return hit;
 	}
+
+	template <class S> EdgeHit<S> edgeEdgeContact(const BlockPair<S>& pair, S tol) { return edgeEdgeContact(pair, SeparatingAxes<S>(pair), tol); }
 
 	template <class S> EdgeHit<S> edgeEdgeContact(const OrientedBlock<S>& A, const OrientedBlock<S>& B, S tol)
 	{
