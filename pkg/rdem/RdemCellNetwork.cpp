@@ -16,6 +16,7 @@
 #include <pkg/rdem/math/GroupByKey.hpp>
 #include <algorithm>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <unordered_map>
 
@@ -203,6 +204,20 @@ void RdemCellNetwork::setStrain(size_t i, const Vector3r& eps, Real scale)
 	st.cellStress = scale * (stiffness[i] * st.strain);
 }
 
+namespace {
+	/// The rows of a table gathered over the ranks (`width` reals per row: a cell's id, the other block's id, then its
+	/// terms) in the order of (cell, other block): the order in which one rank sums a cell's bonds.
+	vector<size_t> rowsByCellAndBlock(const vector<Real>& all, size_t width)
+	{
+		vector<size_t> row(all.size() / width);
+		std::iota(row.begin(), row.end(), size_t(0));
+		std::sort(row.begin(), row.end(), [&](size_t x, size_t y) {
+			return std::make_pair(all[x * width], all[x * width + 1]) < std::make_pair(all[y * width], all[y * width + 1]);
+		});
+		return row;
+	}
+}
+
 long RdemCellNetwork::reduceMasterStrains(Scene* scene)
 {
 	/* The terms updateStrains sums for a cell on the master, of the bonds to this rank's own blocks (each bond is on the
@@ -230,11 +245,8 @@ long RdemCellNetwork::reduceMasterStrains(Scene* scene)
 	}
 	const vector<Real> all = rdem::gatherOverRanks(*scene, mine);
 	// each cell's terms in the order of the other block's id, as updateStrains sums them on one rank
-	vector<size_t> term(all.size() / width);
-	for (size_t t = 0; t < term.size(); ++t)
-		term[t] = t;
-	const auto at = [&all](size_t t, size_t k) { return all[t * width + k]; };
-	std::sort(term.begin(), term.end(), [&](size_t x, size_t y) { return std::make_pair(at(x, 0), at(x, 1)) < std::make_pair(at(y, 0), at(y, 1)); });
+	const vector<size_t>                   term = rowsByCellAndBlock(all, width);
+	const auto                             at   = [&all](size_t t, size_t k) { return all[t * width + k]; };
 	std::unordered_map<Body::id_t, size_t> compact;
 	for (size_t i = 0; i < body.size(); ++i)
 		if (hasCell[i] && rdem::onMaster(*scene, *Body::byId(body[i], scene))) compact.emplace(body[i], i);
@@ -273,12 +285,9 @@ long RdemCellNetwork::reduceMasterStresses(Scene* scene)
 			mine.insert(mine.end(), { Real(body[i]), Real(body[other]), g[0], g[1], g[2] });
 		}
 	}
-	const vector<Real> all = rdem::gatherOverRanks(*scene, mine);
-	vector<size_t>     term(all.size() / width);
-	for (size_t t = 0; t < term.size(); ++t)
-		term[t] = t;
-	const auto at = [&all](size_t t, size_t k) { return all[t * width + k]; };
-	std::sort(term.begin(), term.end(), [&](size_t x, size_t y) { return std::make_pair(at(x, 0), at(x, 1)) < std::make_pair(at(y, 0), at(y, 1)); });
+	const vector<Real>   all  = rdem::gatherOverRanks(*scene, mine);
+	const vector<size_t> term = rowsByCellAndBlock(all, width);
+	const auto           at   = [&all](size_t t, size_t k) { return all[t * width + k]; };
 	for (size_t i = 0; i < body.size(); ++i) {
 		if (!hasCell[i] || !rdem::onMaster(*scene, *Body::byId(body[i], scene))) continue;
 		// the cell's terms (a binary search on the sorted ids), summed as applyForces sums them on one rank
