@@ -308,36 +308,43 @@ namespace rdem {
 		return faceMayEnterLocal<S>(Y.half, Y.rot.transpose() * (c - Y.pos), Y.rot.transpose() * t1, Y.rot.transpose() * t2, h1, h2, tol);
 	}
 
+	/* The decision of the separating-axis test (blocksOverlap) from the projections' overlaps on its 15 axes [m]:
+	   face(i) on the face normals (i < 3: A's, else B's), and for the 9 edge cross products k = 3i + j their length
+	   length(k) and scaled overlap scaled(k) (BlockPair::crossLength, crossOverlapScaled). Each is asked for only until an
+	   axis separates the blocks, in the same order whatever supplies them (a BlockPair computing them, or a
+	   SeparatingAxes table), so that both give the same decision. */
+	template <class S, class Face, class Length, class Scaled> bool projectionsOverlap(Face face, Length length, Scaled scaled, S tol)
+	{
+		for (int i = 0; i < 3; ++i)
+			if (!(face(i) > tol) || !(face(i + 3) > tol)) return false;
+		for (int k = 0; k < 9; ++k) {
+			const S len = length(k);
+			if (len < S(1e-9)) continue; // parallel edges: the face axes already cover this direction
+			if (!(scaled(k) > tol * len)) return false;
+		}
+		return true;
+	}
+
 	/* Separating-axis test of two oriented blocks (Gottschalk, Lin & Manocha, SIGGRAPH 1996): true if their projections
 	   overlap by more than tol [m] on all 15 candidate axes (3 + 3 face normals, 9 edge cross products; see BlockPair).
 	   Blocks that are apart or only touch (grid neighbours along an edge) return false, usually at the first face axis. */
 	template <class S> bool blocksOverlap(const BlockPair<S>& pair, S tol)
 	{
-		for (int i = 0; i < 3; ++i)
-			if (!(pair.overlapA(i) > tol) || !(pair.overlapB(i) > tol)) return false;
-		for (int i = 0; i < 3; ++i)
-			for (int j = 0; j < 3; ++j) {
-				const S len = pair.crossLength(i, j);
-				if (len < S(1e-9)) continue; // parallel edges: the face axes already cover this direction
-				if (!(pair.crossOverlapScaled(i, j) > tol * len)) return false;
-			}
-		return true;
+		return projectionsOverlap<S>(
+		        [&](int i) { return i < 3 ? pair.overlapA(i) : pair.overlapB(i - 3); },
+		        [&](int k) { return pair.crossLength(k / 3, k % 3); },
+		        [&](int k) { return pair.crossOverlapScaled(k / 3, k % 3); },
+		        tol);
 	}
 
 	template <class S> bool blocksOverlap(const OrientedBlock<S>& A, const OrientedBlock<S>& B, S tol) { return blocksOverlap(BlockPair<S>(A, B), tol); }
 
-	/// blocksOverlap from the pair's table of overlaps (the same decision, without the early return at the first
-	/// separating axis: for a pair that needs the table anyway).
+	/// blocksOverlap from the pair's table of overlaps (the same decision on the same numbers: for a pair that needs the
+	/// table anyway).
 	template <class S> bool blocksOverlap(const SeparatingAxes<S>& sat, S tol)
 	{
-		for (int i = 0; i < 3; ++i)
-			if (!(sat.face[i] > tol) || !(sat.face[i + 3] > tol)) return false;
-		for (int k = 0; k < 9; ++k) {
-			const S len = sat.crossLength[k];
-			if (len < S(1e-9)) continue; // parallel edges: the face axes already cover this direction
-			if (!(sat.crossScaled[k] > tol * len)) return false;
-		}
-		return true;
+		return projectionsOverlap<S>(
+		        [&](int i) { return sat.face[i]; }, [&](int k) { return sat.crossLength[k]; }, [&](int k) { return sat.crossScaled[k]; }, tol);
 	}
 
 	/// An edge of one block crossing an edge of the other (see edgeEdgeContact).
