@@ -141,14 +141,10 @@ namespace {
 			g.sampleArea.push_back(F.area * a.w * b.w * F.cosine / 2); // trapezoid weight; both blocks are sampled: half each
 		};
 		// The samples to test: the set bits of keys [which·6·perFace, (which + 1)·6·perFace) of the certificate, or all.
-		const int        lo = which * 6 * perFace, hi = lo + 6 * perFace;
-		vector<uint64_t> all;
-		if (!near) {
-			all.assign(size_t(hi + 63) / 64, ~uint64_t(0));
-			near = &all;
-		}
-		// The first set key from `key` on (hi or more if none is left below hi).
+		const int lo = which * 6 * perFace, hi = lo + 6 * perFace;
+		// The first key to test from `key` on (hi or more if none is left below hi).
 		auto next = [&](int key) {
+			if (!near) return key < hi ? key : hi;
 			while (key < hi) {
 				const uint64_t bits = (*near)[size_t(key) / 64] >> (key % 64);
 				if (bits) return key + __builtin_ctzll(bits);
