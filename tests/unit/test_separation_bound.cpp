@@ -142,6 +142,14 @@ TEST(SeparationBound, AFaceAxisThatCertifiesGivesItsOwnSlack)
 	EXPECT_EQ(rdem::separationSlack(pair, tol), face - 1e-6 * (A.half.norm() + B.half.norm()));
 }
 
+/// A block with its centre in [-c, c]³ m, a random rotation and half-extents in [0.2, 1] m.
+Block randomBlock(std::mt19937& gen, double c)
+{
+	return Block { V3(uniform(gen, -c, c), uniform(gen, -c, c), uniform(gen, -c, c)),
+		       randomRotation(gen).toRotationMatrix(),
+		       V3(uniform(gen, 0.2, 1), uniform(gen, 0.2, 1), uniform(gen, 0.2, 1)) };
+}
+
 // Moves a block rigidly: its centre by `shift`, its orientation by q, about its centre.
 Block moved(const Block& b, const V3& shift, const Q& q) { return Block { b.pos + shift, q.toRotationMatrix() * b.rot, b.half }; }
 
@@ -154,12 +162,8 @@ TEST(SeparationBound, CertifiedPairsStayApartUnderAnyMotionWithinTheSlack)
 	std::mt19937 gen(17);
 	int          certified = 0;
 	for (int k = 0; k < 4000; ++k) {
-		const Block                   A { V3(uniform(gen, -0.5, 0.5), uniform(gen, -0.5, 0.5), uniform(gen, -0.5, 0.5)),
-                                randomRotation(gen).toRotationMatrix(),
-                                V3(uniform(gen, 0.2, 1), uniform(gen, 0.2, 1), uniform(gen, 0.2, 1)) };
-		const Block                   B { V3(uniform(gen, -2, 2), uniform(gen, -2, 2), uniform(gen, -2, 2)),
-                                randomRotation(gen).toRotationMatrix(),
-                                V3(uniform(gen, 0.2, 1), uniform(gen, 0.2, 1), uniform(gen, 0.2, 1)) };
+		const Block                   A = randomBlock(gen, 0.5);
+		const Block                   B = randomBlock(gen, 2);
 		const rdem::BlockPair<double> pair(A, B);
 		const double                  slack = rdem::separationSlack(pair, tol);
 		if (!(slack > 0)) continue;
@@ -217,9 +221,7 @@ TEST(SeparationBound, ASampleOutsideByMoreThanTheTravelsStaysOutside)
 	std::mt19937 gen(2026);
 	int          tested = 0;
 	for (int k = 0; k < 3000; ++k) {
-		const Block  Y { V3(uniform(gen, -0.5, 0.5), uniform(gen, -0.5, 0.5), uniform(gen, -0.5, 0.5)),
-                                randomRotation(gen).toRotationMatrix(),
-                                V3(uniform(gen, 0.2, 1), uniform(gen, 0.2, 1), uniform(gen, 0.2, 1)) };
+		const Block  Y = randomBlock(gen, 0.5);
 		const V3     hX(uniform(gen, 0.2, 1), uniform(gen, 0.2, 1), uniform(gen, 0.2, 1));
 		const V3     xX = Y.pos + Y.rot * V3(uniform(gen, -1.5, 1.5), uniform(gen, -1.5, 1.5), uniform(gen, -1.5, 1.5));
 		const Q      qX = randomRotation(gen);
