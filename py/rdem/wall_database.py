@@ -213,15 +213,35 @@ def model(row):
 	            measured=measured(row), statics=staticsCheck(row))
 
 
-def rockingBound(N, W, length, height, shearSpan):
+def sectionMoment(P, length, thickness=None, compressiveStrength=math.inf):
+	"""The largest moment [N m] about its centre line that a bed-joint section of length $L$ and thickness $t$ [m]
+	carries under an axial compression ``P`` [N] when it takes no tension and crushes at ``compressiveStrength``
+	$f_m$ [Pa] (rigid-perfectly-plastic in compression: [Heyman1966]_'s no-tension material with a finite strength):
+	the compressed zone is a stress block $f_m$ deep $a = P/(f_m t)$ at the compressed edge, so
+	$M = P (L - a)/2 = (P L/2)(1 - P/(f_m L t))$; $P L/2$ for $f_m = \infty$ (the resultant at the corner).
+	ValueError if $P > f_m L t$ (the section crushes under $P$ alone)."""
+	if math.isinf(compressiveStrength):
+		return P * length / 2
+	if not (thickness and thickness > 0 and compressiveStrength > 0):
+		raise ValueError('thickness = %r, compressiveStrength = %r: both must be > 0 [m, Pa] for a finite strength' % (thickness, compressiveStrength))
+	squash = compressiveStrength * length * thickness
+	if P > squash:
+		raise ValueError('P = %r N exceeds the squash load f_m L t = %r N: the section crushes under its axial force alone' % (P, squash))
+	return P * length / 2 * (1 - P / squash)
+
+
+def rockingBound(N, W, length, height, shearSpan, thickness=None, compressiveStrength=math.inf):
 	"""The largest shear $V$ [N] a wall of rigid blocks can carry under a constant axial force ``N`` [N] at its top and
-	its own weight ``W`` [N] (no tension, unlimited compression: the resultant inside the section), length $L$,
-	height $H$ [m] and shear span ratio $H_0/H$:
+	its own weight ``W`` [N] (no tension; the resultant inside the section), length $L$, height $H$ [m] and shear span
+	ratio $H_0/H$, from the moments $M(P)$ its bed-joint sections carry (:func:`sectionMoment`: $P L/2$ with unlimited
+	compression; with ``compressiveStrength`` $f_m$ [Pa] and ``thickness`` $t$ [m], the stress block that crushes
+	at $f_m$):
 
 	* $H_0/H = 0.5$, both ends fixed (the top kept horizontal, the moments at the top and the base not controlled):
-	  the panel rocks about opposite corners, $V H = N L/2 + (N + W) L/2$, so $V \\le (2N + W) L/(2H)$ (:ref:`validation <rdem-validation>`);
-	* otherwise the top carries the moment $V (H_0 - H)$ as in the test: the base section $V H_0 \\le (N + W) L/2$ and,
-	  for $H_0 \\ne H$, the top section $V |H - H_0| \\le N L/2$.
+	  the panel rocks about opposite corners, $V H = M(N) + M(N + W)$; with unlimited compression
+	  $V \le (2N + W) L/(2H)$ (:ref:`validation <rdem-validation>`);
+	* otherwise the top carries the moment $V (H_0 - H)$ as in the test: the base section $V H_0 \le M(N + W)$ and,
+	  for $H_0 \ne H$, the top section $V |H - H_0| \le M(N)$.
 
 	ValueError naming the argument if one is out of range."""
 	for name, v in (('N', N), ('W', W)):
@@ -230,30 +250,43 @@ def rockingBound(N, W, length, height, shearSpan):
 	for name, v in (('length', length), ('height', height), ('shearSpan', shearSpan)):
 		if not (math.isfinite(v) and v > 0):
 			raise ValueError('%s = %r: must be finite and > 0' % (name, v))
+
+	def M(P):
+		return sectionMoment(P, length, thickness, compressiveStrength)
+
 	if shearSpan == 0.5:
-		return (2 * N + W) * length / (2 * height)
+		return (M(N) + M(N + W)) / height
 	H0 = shearSpan * height
-	bound = (N + W) * length / (2 * H0)
+	bound = M(N + W) / H0
 	if abs(height - H0) > 1e-12 * height:
-		bound = min(bound, N * length / (2 * abs(height - H0)))
+		bound = min(bound, M(N) / abs(height - H0))
 	return bound
 
 
 def staticsCheck(row):
-	"""The statics check of a row (:ref:`validation <rdem-validation>`): the tested geometry, $N = \\sigma_0 L t$, the masonry's weight
+	"""The statics check of a row (:ref:`validation <rdem-validation>`): the tested geometry, $N = \sigma_0 L t$, the masonry's weight
 	$W$ at the rule set's density, the :func:`rockingBound`; ``ratio`` = measured mean peak / bound, ``passes`` = ratio
-	< 1 (a model of constant axial load can reach the measured peak), ``sigma0Needed`` [Pa]: the $\\sigma_0$ at which
-	the bound equals the measured mean."""
+	< 1 (a model of constant axial load can reach the measured peak), ``sigma0Needed`` [Pa]: the $\sigma_0$ at which
+	the bound equals the measured mean. Also the bound of bed joints that crush at the table's $f_m$
+	(``crushingBound`` [N], ``crushingRatio`` = measured mean / it) and that bound for the model's wall (``modelCrushingBound``
+	[N]: :func:`geometry`'s length, height and thickness), which a model whose bed joints crush at $f_m$ cannot exceed
+	unless its joints carry tension."""
 	L, H, t = row['L [m]'], row['H [m]'], row['t [m]']
 	density = rule('solidDensity') * (1 - (row['Void Ratio [%]'] or 0.0))
-	N = row['sigma0 [MPa]'] * 1e6 * L * t
+	sigma0, fm = row['sigma0 [MPa]'] * 1e6, row['fm_c [MPa]'] * 1e6
+	N = sigma0 * L * t
 	W = density * GRAVITY * L * H * t
 	span = row['H0/H [-]']
 	bound = rockingBound(N, W, L, H, span)
 	mean = measured(row)['mean']
 	perStress = (rockingBound(N + 1e6 * L * t, W, L, H, span) - bound) / 1e6  # the bound is linear in N
+	crushing = rockingBound(N, W, L, H, span, t, fm)
+	g = geometry(row)
+	Lm, Hm, tm = g['length'], g['height'], g['thickness']
+	modelCrushing = rockingBound(sigma0 * Lm * tm, density * GRAVITY * Lm * Hm * tm, Lm, Hm, span, tm, fm)
 	return dict(axialForce=N, weight=W, bound=bound, measuredMean=mean, ratio=mean / bound, passes=mean < bound,
-	            sigma0Needed=row['sigma0 [MPa]'] * 1e6 + (mean - bound) / perStress)
+	            sigma0Needed=sigma0 + (mean - bound) / perStress, crushingBound=crushing, crushingRatio=mean / crushing,
+	            modelCrushingBound=modelCrushing)
 
 
 def failureClass(horizontalTensionArea, coreCourses, coreCoursesCracked, jointArea):

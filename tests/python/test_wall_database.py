@@ -109,6 +109,29 @@ class Statics(unittest.TestCase):
 			with self.assertRaisesRegex(ValueError, '^' + name):
 				db.rockingBound(*args)
 
+	def testCrushingBound(self):
+		# worked by hand: N = 100, W = 10, L = 2, H = 1, t = 1, f_m = 100: squash load f_m L t = 200,
+		# M(100) = 100 * 2/2 * (1 - 100/200) = 50, M(110) = 110 * (1 - 110/200) = 49.5
+		self.assertAlmostEqual(db.sectionMoment(100, 2, 1, 100), 50, delta=1e-12)
+		self.assertAlmostEqual(db.sectionMoment(100, 2), 100, delta=1e-12)  # unlimited compression: the resultant at the corner
+		self.assertAlmostEqual(db.rockingBound(100, 10, 2, 1, 0.5, 1, 100), 50 + 49.5, delta=1e-12)  # (M(N) + M(N + W)) / H
+		self.assertAlmostEqual(db.rockingBound(100, 10, 2, 1, 1.0, 1, 100), 49.5, delta=1e-12)  # M(N + W) / H0
+		self.assertAlmostEqual(db.rockingBound(100, 10, 2, 1, 0.4, 1, 100), 50 / 0.6, delta=1e-12)  # the top governs: 83.3 < 123.75
+		with self.assertRaisesRegex(ValueError, '^P = '):
+			db.sectionMoment(201, 2, 1, 100)  # more than the squash load
+		with self.assertRaisesRegex(ValueError, '^thickness'):
+			db.sectionMoment(1, 2, None, 100)
+		# CS06 (L 1.25, H 2.5, t 0.175 m, sigma0 1 MPa, f_m 19.397 MPa, a cantilever): N = 218.75 kN, W = 1800 * 9.81 *
+		# 1.25 * 2.5 * 0.175 = 9.657 kN, V = (N + W) L/2 (1 - (N + W)/(f_m L t)) / H = 54.03 kN; the test carried 0.77 of it
+		check = db.staticsCheck(db.readTable()['CS06'])
+		P = 218.75e3 + 1800 * 9.81 * 1.25 * 2.5 * 0.175
+		self.assertAlmostEqual(check['crushingBound'], P * 1.25 / 2 * (1 - P / (19.39744268e6 * 1.25 * 0.175)) / 2.5, delta=1e-6)
+		self.assertAlmostEqual(check['crushingBound'], 54.03e3, delta=0.01e3)
+		self.assertAlmostEqual(check['crushingRatio'], 41.615e3 / check['crushingBound'], delta=1e-12)
+		# the model's wall, 1.248 m long (:func:`geometry`), has its own bound, slightly lower
+		self.assertLess(check['modelCrushingBound'], check['crushingBound'])
+		self.assertGreater(check['modelCrushingBound'], 0.99 * check['crushingBound'])
+
 	def testCrackBandRule(self):
 		# one rule for every wall: on, with its source (tests/yade/test_wall_database.py builds every wall with it)
 		self.assertIs(db.rule('crackBand'), True)
