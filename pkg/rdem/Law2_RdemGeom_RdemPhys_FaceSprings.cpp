@@ -174,6 +174,13 @@ namespace {
 		/// A broken segment is in contact while its material points overlap and face each other (slid less than the
 		/// smaller half-size of a segment).
 		bool touching(Real un, const Vector3r& us) const { return un < 0 && us.norm() < g.segHalfSizes().minCoeff(); }
+		/* Opening of broken segment i's contact spring [m] for the segment's opening un (eq. 14, positive in tension): un,
+		   plus, for a softening bond, the closure κ that its compression cap crushed off while it was intact
+		   (RdemPhys::segCrush; rdem::softeningStep's u = u_n + κ). The crushed material is gone: the contact spring takes
+		   over the softening spring's σ = k̄_n u (u < 0, crack closed) without a jump, and is apart while the crack is open
+		   (u ≥ 0). Counted from u_n alone, a segment crushed by κ that broke in tension at u_n < 0 pushed back at once
+		   with k_n(-u_n), and the elastic energy of that spring came out of nothing. */
+		Real contactOpening(const RdemPhys& p, size_t i, Real un) const { return p.softening ? un + p.segCrush[i] : un; }
 		/// Sum of the areas of the broken segments in contact [m²].
 		Real brokenContactArea(const RdemPhys& p) const
 		{
@@ -182,7 +189,7 @@ namespace {
 				if (p.segState[i] == int(rdem::SegmentState::Intact)) return;
 				const Vector3r d  = kin.displacement(s, r);
 				const Real     un = d.dot(n);
-				if (touching(un, d - un * n)) area += A;
+				if (touching(contactOpening(p, i, un), d - un * n)) area += A;
 			});
 			return area;
 		}
@@ -261,7 +268,7 @@ namespace {
 		else
 			breaks.shear += 1;
 		const Vector3r us = ust + (withCells ? b.slip : Vector3r::Zero());
-		if (b.touching(un, us)) p.segShear[i] = tau / k.ks; // the contact spring carries on with the residual friction
+		if (b.touching(b.contactOpening(p, i, un), us)) p.segShear[i] = tau / k.ks; // the contact spring carries on with the residual friction
 		else {
 			p.segShear[i] = Vector3r::Zero();
 			e.bondBreak += elastic;
@@ -269,11 +276,13 @@ namespace {
 		return false;
 	}
 
-	/* The contact spring of broken segment i at (s, r) with opening un and shear displacement us [m] (eqs. 13, 17,
-	   rdem::contactSpringForce) while it touches; zero otherwise. Its dashpot force is kept for the energy balance (the
+	/* The contact spring of broken segment i at (s, r) with the segment's opening segmentOpening (its spring's:
+	   BondStep::contactOpening) and shear displacement us [m] (eqs. 13, 17, rdem::contactSpringForce) while it touches;
+	   zero otherwise. Its dashpot force is kept for the energy balance (the
 	   array is sized here, not for every bond and step: an intact bond never reads its header). */
-	void brokenSegment(BondStep& b, RdemPhys& p, size_t i, Real s, Real r, Real un, const Vector3r& us, Energies& e)
+	void brokenSegment(BondStep& b, RdemPhys& p, size_t i, Real s, Real r, Real segmentOpening, const Vector3r& us, Energies& e)
 	{
+		const Real   un   = b.contactOpening(p, i, segmentOpening);
 		const size_t nSeg = b.g.nSegments();
 		if (p.segDashpot.size() != nSeg) p.segDashpot.resize(nSeg, Vector3r::Zero());
 		if (!b.touching(un, us)) {
