@@ -575,13 +575,15 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	                                      : sampledContactForces(g, p, pair, e, on2);
 	if (breaks.tension) shared->tensionBreaks += breaks.tension;
 	if (breaks.shear) shared->shearBreaks += breaks.shear;
+	// Booked also for a bond released in this step: the elastic energy its last segments released as they broke
+	// (rdemBondBreak) and a softening spring's last fracture work were lost from the balance with the interaction.
+	if (pair.trackEnergy) bookEnergies(shareOf(e, rdem::energyShare(*scene, *Body::byId(I->getId1(), scene), *Body::byId(I->getId2(), scene))));
 	if (!keep) {
 		if (deferForces) shared->activeSetChanges += 1;
 		if (g.bonded) recordRelease(*I, g, p);
 		return false;
 	}
 	applyForces(*I, p, on2.f, on2.t, pair.x2 - pair.x1);
-	if (pair.trackEnergy) bookEnergies(shareOf(e, rdem::energyShare(*scene, *Body::byId(I->getId1(), scene), *Body::byId(I->getId2(), scene))));
 	return true;
 }
 
