@@ -174,6 +174,13 @@ namespace {
 		/// A broken segment is in contact while its material points overlap and face each other (slid less than the
 		/// smaller half-size of a segment).
 		bool touching(Real un, const Vector3r& us) const { return un < 0 && us.norm() < g.segHalfSizes().minCoeff(); }
+		/* Opening of broken segment i's contact spring [m] for the segment's opening un (eq. 14, positive in tension): un,
+		   plus, for a softening bond, the closure κ that its compression cap crushed off while it was intact
+		   (RdemPhys::segCrush; rdem::softeningStep's u = u_n + κ). The crushed material is gone: the contact spring takes
+		   over the softening spring's σ = k̄_n u (u < 0, crack closed) without a jump, and is apart while the crack is open
+		   (u ≥ 0). Counted from u_n alone, a segment crushed by κ that broke in tension at u_n < 0 pushed back at once
+		   with k_n(-u_n), and the elastic energy of that spring came out of nothing. */
+		Real contactOpening(const RdemPhys& p, size_t i, Real un) const { return p.softening ? un + p.segCrush[i] : un; }
 		/// Sum of the areas of the broken segments in contact [m²].
 		Real brokenContactArea(const RdemPhys& p) const
 		{
@@ -182,7 +189,7 @@ namespace {
 				if (p.segState[i] == int(rdem::SegmentState::Intact)) return;
 				const Vector3r d  = kin.displacement(s, r);
 				const Real     un = d.dot(n);
-				if (touching(un, d - un * n)) area += A;
+				if (touching(contactOpening(p, i, un), d - un * n)) area += A;
 			});
 			return area;
 		}
@@ -261,7 +268,7 @@ namespace {
 		else
 			breaks.shear += 1;
 		const Vector3r us = ust + (withCells ? b.slip : Vector3r::Zero());
-		if (b.touching(un, us)) p.segShear[i] = tau / k.ks; // the contact spring carries on with the residual friction
+		if (b.touching(b.contactOpening(p, i, un), us)) p.segShear[i] = tau / k.ks; // the contact spring carries on with the residual friction
 		else {
 			p.segShear[i] = Vector3r::Zero();
 			e.bondBreak += elastic;
@@ -269,11 +276,13 @@ namespace {
 		return false;
 	}
 
-	/* The contact spring of broken segment i at (s, r) with opening un and shear displacement us [m] (eqs. 13, 17,
-	   rdem::contactSpringForce) while it touches; zero otherwise. Its dashpot force is kept for the energy balance (the
+	/* The contact spring of broken segment i at (s, r) with the segment's opening segmentOpening (its spring's:
+	   BondStep::contactOpening) and shear displacement us [m] (eqs. 13, 17, rdem::contactSpringForce) while it touches;
+	   zero otherwise. Its dashpot force is kept for the energy balance (the
 	   array is sized here, not for every bond and step: an intact bond never reads its header). */
-	void brokenSegment(BondStep& b, RdemPhys& p, size_t i, Real s, Real r, Real un, const Vector3r& us, Energies& e)
+	void brokenSegment(BondStep& b, RdemPhys& p, size_t i, Real s, Real r, Real segmentOpening, const Vector3r& us, Energies& e)
 	{
+		const Real   un   = b.contactOpening(p, i, segmentOpening);
 		const size_t nSeg = b.g.nSegments();
 		if (p.segDashpot.size() != nSeg) p.segDashpot.resize(nSeg, Vector3r::Zero());
 		if (!b.touching(un, us)) {
@@ -566,13 +575,15 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	                                      : sampledContactForces(g, p, pair, e, on2);
 	if (breaks.tension) shared->tensionBreaks += breaks.tension;
 	if (breaks.shear) shared->shearBreaks += breaks.shear;
+	// Booked also for a bond released in this step: the elastic energy its last segments released as they broke
+	// (rdemBondBreak) and a softening spring's last fracture work were lost from the balance with the interaction.
+	if (pair.trackEnergy) bookEnergies(shareOf(e, rdem::energyShare(*scene, *Body::byId(I->getId1(), scene), *Body::byId(I->getId2(), scene))));
 	if (!keep) {
 		if (deferForces) shared->activeSetChanges += 1;
 		if (g.bonded) recordRelease(*I, g, p);
 		return false;
 	}
 	applyForces(*I, p, on2.f, on2.t, pair.x2 - pair.x1);
-	if (pair.trackEnergy) bookEnergies(shareOf(e, rdem::energyShare(*scene, *Body::byId(I->getId1(), scene), *Body::byId(I->getId2(), scene))));
 	return true;
 }
 

@@ -61,6 +61,18 @@ class Breakage(unittest.TestCase):
 		segs = rdem.brokenSegments(snapshot)
 		self.assertEqual([(s['state'], s['released']) for s in segs], [(1, True)] * 4)
 
+	def testReleasedBondBooksItsElasticEnergy(self):
+		"""A bond whose four springs break in one step and open is released in that step; the elastic energy they held,
+		A w_n σ²/(2 k_n) at σ = k_n u (eq. 14), is booked as rdemBondBreak (it was lost with the interaction)."""
+		self.build(ft=1e6)
+		wn = O.interactions[0, 1].phys.weightNormal
+		O.trackEnergy = True
+		sigma = 2e6
+		self.place(Vector3(sigma / KN, 0, 0))  # sigma = 2 f_t: all four springs break in tension and the faces are apart
+		self.assertFalse(O.interactions[0, 1].isReal)
+		# round-off: u = P2 - P1 (6.7e-5 m) from points 2 cm from the origin, 1e-16 relative to them: about 1e-12 in u²
+		self.assertAlmostEqual(O.energy['rdemBondBreak'] / (AREA * wn * sigma**2 / (2 * KN)), 1, delta=1e-10)
+
 	def testBrokenTransmitsCompressionOnly(self):
 		self.build(ft=1e6)
 		self.place(Vector3(2e6 / KN, 0, 0))  # break

@@ -17,6 +17,16 @@ area is the fracture energy, measured from the work done on the blocks (issue #1
   W = 4.31 J, rdemCrushing 8.21 J against the cap's 3.82 J, rdemPoisson -4.61 J, balance -0.3 % of W; booking the
   cap's work instead, as before, left the balance off by +102 %).
 
+* A crushed joint that breaks (PUP1's failure, doc/validation.md): two 5 cm blocks stacked along z, the joint with a
+  compression cap (f_c = 10 MPa, G_fc = 500 J/m², r = 0.2), both blocks moved by prescribed velocities: pushed down at
+  5 cm/s until the joint has crushed κ = 2.5 κ_u, then pulled up until it breaks in tension (at u_n = w - κ < 0), or
+  moved along x until it breaks in shear (closed, under r f_c). The broken segments' contact springs count from the
+  crushed closure (u_n + κ): the tension break leaves no force, the shear break the same normal force as the step
+  before (k_n u, continuous), and the balance holds to 1e-4 of W (a kink of the law costs at most k_n A Δu² = 1.3e-6 J,
+  with Δu = vΔt = 5e-8 m; the last step of residual sliding F_s vΔt = 1.5e-4 J is booked before the work measures it:
+  2.7e-5 of W). Counted from u_n alone, the contact came back at once with k_n(-u_n)A: 86.6 kN after the tension
+  break and an elastic energy of 2.6 times W out of nothing (balance -2.67).
+
 Each case measures the work W done on the blocks by the prescribed motion and the constant force (trapezoid rule on the
 forces of successive steps) and the energy still stored at the end (springs and kinetic); W minus that is what the
 model dissipated. Checks: (1) the booked O.energy['rdemFractureTension'] (or 'rdemFractureShear') per unit area equals
@@ -172,6 +182,57 @@ class Softening(unittest.TestCase):
 		bookedAll = booked('rdemFractureTension', 'rdemFractureShear', 'rdemFriction', 'rdemDashpot', 'rdemBondBreak', 'rdemCrushing', 'rdemPoissonRelease')
 		self.assertAlmostEqual((w.W - stored - bookedAll) / w.W, 0, delta=0.01, msg='W %g, kinetic %g, elastic %g, cells %g, crushing %g (the cap\'s %g)' %
 		                       (w.W, kinetic(), booked('rdemElastic'), booked('rdemPoisson'), crushing, cap * area))
+
+	def crushedJoint(self):
+		"""Two 5 cm blocks, both moved by prescribed velocities, and a crushable softening joint pushed down until it has
+		crushed 2.5 κ_u: (the joint's phys, the work meter, the top block's state)."""
+		harness.freshScene()
+		h, fc, Gfc, r = 0.025, 10e6, 500.0, 0.2
+		mat = O.materials.append(RdemMat(young=10e9, poisson=0.2, density=2000, tensileStrength=float('inf'), label='block'))
+		O.engines = rdem.engines(formulation=None, recontact=False, softening=True)
+		O.bodies.append([rdem.block((0, 0, 2 * h * i), (h, h, h), mat) for i in range(2)])
+		rdem.bond([0, 1], joint=joint(compressiveStrength=fc, compressiveFractureEnergy=Gfc, compressiveResidual=r))
+		O.bodies[0].state.blockedDOFs = O.bodies[1].state.blockedDOFs = 'xyzXYZ'
+		O.dt = 1e-6  # no free block: any step; Δu = vΔt = 5e-8 m
+		top, p = O.bodies[1].state, O.interactions[0, 1].phys
+		O.trackEnergy = True
+		w = Work(lambda: {1: -p.force})  # the force that moves block 1 (block 0 does not move)
+		top.vel = Vector3(0, 0, -0.05)
+		ku = 2 * Gfc / ((1 - r) * fc)
+		while min(p.segCrush) < 2.5 * ku:
+			w.step()
+			self.assertLess(O.iter, 10000)
+		return p, w, top
+
+	def assertBalances(self, w):
+		stored = kinetic() + booked('rdemElastic')
+		bookedAll = booked('rdemFractureTension', 'rdemFractureShear', 'rdemFriction', 'rdemDashpot', 'rdemBondBreak', 'rdemCrushing')
+		self.assertAlmostEqual((w.W - stored - bookedAll) / w.W, 0, delta=1e-4, msg='W %g, elastic %g, booked %g' % (w.W, booked('rdemElastic'), bookedAll))
+
+	def testCrushedJointBrokenInTensionLeavesNoForce(self):
+		p, w, top = self.crushedJoint()
+		top.vel = Vector3(0, 0, 0.05)
+		while rdem.breakCounts()[0] < 4:
+			w.step()
+			self.assertLess(O.iter, 20000)
+		self.assertLess(top.pos[2] - top.vel[2] * O.dt - 0.05, -1e-4)  # broken at u_n = w - κ < 0: the segments' faces overlap
+		for _ in range(10):
+			w.step()
+		self.assertEqual(O.forces.f(1).norm(), 0)  # the crack is open (u = u_n + κ > 0): no contact
+		self.assertBalances(w)
+
+	def testCrushedJointBrokenInShearKeepsItsNormalForce(self):
+		p, w, top = self.crushedJoint()
+		top.vel = Vector3(0.05, 0, 0)
+		while rdem.breakCounts()[1] < 4:
+			before = p.force[2]
+			w.step()
+			self.assertLess(O.iter, 30000)
+		self.assertEqual(p.segState, [2] * 4)
+		self.assertAlmostEqual(p.force[2] / before, 1, delta=1e-12)  # k_n u of the softening spring, now the contact spring's
+		for _ in range(200):  # sliding on the residual friction
+			w.step()
+		self.assertBalances(w)
 
 	def testSnapBackRefusedAtSetUp(self):
 		# A 1 m block pair of E = 10 GPa: k_n = E/(1-ν²)/1 m ≈ 1.04e10 N/m³; f_t = 2 MPa with G_f = 18 J/m² needs
