@@ -273,22 +273,6 @@ void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom
 		        "Ig2_RdemBlock_RdemBlock_RdemGeom.prefetchDistance = " + std::to_string(prefetchDistance) + ": must be -1 (automatic), 0 (off) or > 0");
 }
 
-const rdem::OrientedBlock<Real>&
-Ig2_RdemBlock_RdemBlock_RdemGeom::blockOf(Body::id_t id, const Vector3r& x, const State& s, const Shape& shape, rdem::OrientedBlock<Real>& own) const
-{
-	const Vector3r& half = static_cast<const RdemBlock&>(shape).extents;
-	if (shared) return shared->travel.blockAt(id, x, s.ori, half, own);
-	own = Block { x, s.ori.toRotationMatrix(), half };
-	return own;
-}
-
-const Matrix3r& Ig2_RdemBlock_RdemBlock_RdemGeom::rotationOf(Body::id_t id, const State& s, Matrix3r& own) const
-{
-	if (shared) return shared->travel.rotation(id, s.ori, own);
-	own = s.ori.toRotationMatrix();
-	return own;
-}
-
 bool Ig2_RdemBlock_RdemBlock_RdemGeom::stillApart(const Interaction& I) const
 {
 	const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr; // recorded by RdemContactGate
@@ -465,9 +449,8 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	// A real interaction has the RdemGeom this functor made; a potential one has no geometry or an RdemGap.
 	if (I->phys && static_cast<RdemGeom*>(I->geom.get())->bonded) {
 		// bonded: this step's face normal and segment kinematics (paper eq. 14), from the blocks' states
-		Matrix3r own1, own2;
 		static_cast<RdemGeom*>(I->geom.get())
-		        ->updateBond(rotationOf(I->getId1(), state1, own1), rotationOf(I->getId2(), state2, own2), state2.pos + shift2 - state1.pos);
+		        ->updateBond(rotation(I->getId1(), state1.ori), rotation(I->getId2(), state2.ori), state2.pos + shift2 - state1.pos);
 		return true;
 	}
 	if (!I->phys && !force && stillApart(*I)) {
@@ -481,9 +464,8 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 		g.normal    = (state1.ori * g.segNormal1 - state2.ori * g.segNormal2).normalized();
 		return true;
 	}
-	Block        own1, own2;
-	const Block& A = blockOf(I->getId1(), state1.pos, state1, *shape1, own1);
-	const Block& B = blockOf(I->getId2(), state2.pos + shift2, state2, *shape2, own2);
+	const Block A { state1.pos, rotation(I->getId1(), state1.ori), static_cast<RdemBlock*>(shape1.get())->extents };
+	const Block B { state2.pos + shift2, rotation(I->getId2(), state2.ori), static_cast<RdemBlock*>(shape2.get())->extents };
 	if (!I->phys) return force ? bond(A, B, I) : findContact(A, B, state1, state2, I);
 
 	// A real contact needs every separating axis's overlap when it overlaps (normal, edge-to-edge test): computed once.

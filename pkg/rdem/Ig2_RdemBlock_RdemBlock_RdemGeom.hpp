@@ -85,10 +85,8 @@ Not for periodic cells with shear (``shift2`` of the cell is honoured, the cell'
 	DECLARE_LOGGER;
 
 private:
-	/// The block of body id (shape, state s) with its centroid at x (rdem::BodyTravel::blockAt: recorded, or made in own).
-	const rdem::OrientedBlock<Real>& blockOf(Body::id_t id, const Vector3r& x, const State& s, const Shape& shape, rdem::OrientedBlock<Real>& own) const;
-	/// The rotation matrix of body id in state s (rdem::BodyTravel::rotation: recorded, or made in own).
-	const Matrix3r& rotationOf(Body::id_t id, const State& s, Matrix3r& own) const;
+	/// q.toRotationMatrix() of body id at orientation q, from the blocks' travel record if it holds it (rdem::BodyTravel::rotation).
+	Matrix3r rotation(Body::id_t id, const Quaternionr& q) const { return shared ? shared->travel.rotation(id, q) : q.toRotationMatrix(); }
 	/// Whether I is a pair found apart whose RdemGap still holds for the blocks' travel in this step.
 	bool stillApart(const Interaction& I) const;
 	/// Bonding (utils.createInteraction): the shared face of A and B cut into segmentsPerEdge² segments; false if none.

@@ -71,15 +71,9 @@ namespace {
 		const rdem::BodyTravel& travel;
 		Body::id_t              id1, id2;
 
-		/// The rotation matrices of body 1 and body 2 (Quaternion::toRotationMatrix of their orientations; own: see
-		/// rdem::BodyTravel::rotation).
-		const Matrix3r& rot1(Matrix3r& own) const { return travel.rotation(id1, s1.ori, own); }
-		const Matrix3r& rot2(Matrix3r& own) const { return travel.rotation(id2, s2.ori, own); }
-		Matrix3r        rot1() const
-		{
-			Matrix3r own;
-			return rot1(own);
-		}
+		/// The rotation matrices of body 1 and body 2 (Quaternion::toRotationMatrix of their orientations).
+		Matrix3r rot1() const { return travel.rotation(id1, s1.ori); }
+		Matrix3r rot2() const { return travel.rotation(id2, s2.ori); }
 
 		/// Velocity of body 2 relative to body 1 at the point x₂ + r₂ [m/s].
 		Vector3r relativeVelocity(const Vector3r& r2) const { return s2.vel + s2.angVel.cross(r2) - s1.vel - s1.angVel.cross(r2 + x2 - x1); }
@@ -362,8 +356,7 @@ namespace {
 		b.contactArea = b.brokenContactArea(p);
 		// Bonds whose centroids are offset along the face (cells only): the intact shear springs measure d_t - slip.
 		const bool     offset = p.offsetCorrection;
-		Matrix3r       own2;
-		const Matrix3r R12 = offset ? Matrix3r(b.R1.transpose() * pair.rot2(own2)) : Matrix3r::Identity();
+		const Matrix3r R12    = offset ? Matrix3r(b.R1.transpose() * pair.rot2()) : Matrix3r::Identity();
 		// the face centre's offsets from the centroids along the face (rdem::offsetSlip's a₁, a₂), for the slip and its gradient
 		const Vector3r a1    = offset ? rdem::alongFace<Real>(g.faceCentre1, g.segNormal1) : Vector3r::Zero();
 		const Vector3r a2    = offset ? rdem::alongFace<Real>(g.faceCentre2, g.segNormal2) : Vector3r::Zero();
@@ -486,8 +479,7 @@ namespace {
 			p.contactDashpot.assign(n, Vector3r::Zero());
 			p.contactOffset.assign(n, Real(-1));
 		}
-		Matrix3r        own1, own2;
-		const Matrix3r &R1 = pair.rot1(own1), &R2 = pair.rot2(own2);
+		const Matrix3r  R1 = pair.rot1(), R2 = pair.rot2();
 		const Vector3r& nrm = g.normal;
 		const Vector3r  dx  = pair.x2 - pair.x1;
 		// Two passes over the springs, both from the stored points (no buffer): the area in contact, for the dashpot caps'

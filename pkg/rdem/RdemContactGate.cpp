@@ -51,9 +51,9 @@ void RdemContactGate::updateTravel(rdem::BodyTravel& t)
 		t.body.assign(size_t(nBodiesNow), nullptr);
 		t.shape.assign(size_t(nBodiesNow), nullptr);
 		t.pos.resize(size_t(nBodiesNow));
-		// No orientation yet (NaN, unlike any body's): BodyTravel::blockAt finds no block until one is recorded.
+		// No orientation yet (NaN, unlike any body's): BodyTravel::rotation finds no matrix until one is recorded.
 		t.ori.assign(size_t(nBodiesNow), Quaternionr(Vector4r::Constant(std::numeric_limits<Real>::quiet_NaN())));
-		t.block.resize(size_t(nBodiesNow));
+		t.rot.resize(size_t(nBodiesNow));
 		t.radius.assign(size_t(nBodiesNow), 0);
 	}
 	// A body or shape that is not the one seen in the last step (erased, replaced, first step) restarts the record.
@@ -80,14 +80,10 @@ void RdemContactGate::updateTravel(rdem::BodyTravel& t)
 		} else
 			t.travel[size_t(id)] += rdem::rigidTravel<Real>(t.pos[size_t(id)], t.ori[size_t(id)], s.pos, s.ori, t.radius[size_t(id)]);
 		t.pos[size_t(id)] = s.pos;
-		// The block at this configuration (BodyTravel::blockAt), its rotation matrix made again only if it turned.
-		rdem::OrientedBlock<Real>& block = t.block[size_t(id)];
-		if (!rdem::BodyTravel::sameBits(t.ori[size_t(id)], s.ori)) {
+		if (!rdem::BodyTravel::sameBits(t.ori[size_t(id)], s.ori)) { // rot holds ori's matrix (BodyTravel::rotation)
 			t.ori[size_t(id)] = s.ori;
-			block.rot         = s.ori.toRotationMatrix();
+			t.rot[size_t(id)] = s.ori.toRotationMatrix();
 		}
-		block.pos  = s.pos;
-		block.half = t.radius[size_t(id)] > 0 ? static_cast<const RdemBlock*>(b->shape.get())->extents : Vector3r::Zero();
 	}
 	if (restart || replaced) {
 		std::fill(t.travel.begin(), t.travel.end(), Real(0));

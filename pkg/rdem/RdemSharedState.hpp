@@ -12,7 +12,6 @@
 #include <core/Engine.hpp>
 #include <core/Interaction.hpp>
 #include <pkg/rdem/RdemStiffnessSource.hpp>
-#include <pkg/rdem/math/BlockGeometry.hpp>
 #include <boost/weak_ptr.hpp>
 #include <cstring>
 #include <functional>
@@ -30,44 +29,31 @@ namespace rdem {
 	   read by Ig2_RdemBlock_RdemBlock_RdemGeom to know when a pair found apart must be tested again
 	   (math/SeparationBound.hpp). */
 	struct BodyTravel {
-		long                        iter  = -1; ///< the step whose configurations travel is up to date with (-1: none yet)
-		long                        epoch = -1; ///< changes whenever the record restarts: a certificate of another epoch is void
-		vector<Real>                travel;     ///< by body id [m]
-		vector<const Body*>         body;       ///< by body id: the configuration last seen (body, its shape, position, orientation)
-		vector<const Shape*>        shape;
-		vector<Vector3r>            pos;
-		vector<Quaternionr>         ori;
-		vector<Real>                radius; ///< circumradius of the block about its centroid, 0 for other shapes [m]
-		vector<OrientedBlock<Real>> block;  ///< by body id: the block at pos, ori (rotation matrix), its extents (0: not a block)
+		long                 iter  = -1; ///< the step whose configurations travel is up to date with (-1: none yet)
+		long                 epoch = -1; ///< changes whenever the record restarts: a certificate of another epoch is void
+		vector<Real>         travel;     ///< by body id [m]
+		vector<const Body*>  body;       ///< by body id: the configuration last seen (body, its shape, position, orientation)
+		vector<const Shape*> shape;
+		vector<Vector3r>     pos;
+		vector<Quaternionr>  ori;
+		vector<Real>         radius; ///< circumradius of the block about its centroid, 0 for other shapes [m]
+		vector<Matrix3r>     rot;    ///< by body id: ori's rotation matrix (Quaternion::toRotationMatrix)
 		/// Whether the record holds the configurations of step iter of a scene that is not periodic.
 		bool currentFor(const Scene& scene) const;
-		/* Body id as a block at x with orientation q and half-extents half, {x, q.toRotationMatrix(), half}: the one
-		   recorded with the configuration last seen if x, q and half are the recorded ones to the bit (RdemContactGate
-		   records it once per body and step of contact detection, for the geometry functor and the law, which need it for
-		   every interaction of the body), else made in own. The same bits either way, whatever step the record is of. */
-		const OrientedBlock<Real>& blockAt(Body::id_t id, const Vector3r& x, const Quaternionr& q, const Vector3r& half, OrientedBlock<Real>& own) const
+		/* The rotation matrix of body id at orientation q, q.toRotationMatrix(): the one recorded with the configuration
+		   last seen if q is that orientation to the bit (RdemContactGate records it once per body and step of contact
+		   detection, for the geometry functor and the law, which need it for every interaction of the body), else made
+		   here. The same bits either way, whatever step the record is of. */
+		Matrix3r rotation(Body::id_t id, const Quaternionr& q) const
 		{
-			if (size_t(id) < block.size() && sameBits(ori[size_t(id)], q) && sameBits(block[size_t(id)].pos, x)
-			    && sameBits(block[size_t(id)].half, half))
-				return block[size_t(id)];
-			own = OrientedBlock<Real> { x, q.toRotationMatrix(), half };
-			return own;
+			if (__builtin_expect(size_t(id) < rot.size() && sameBits(ori[size_t(id)], q), 1)) return rot[size_t(id)];
+			return q.toRotationMatrix();
 		}
-		/// The rotation matrix of body id at orientation q, q.toRotationMatrix(): the recorded one if q is the recorded
-		/// orientation to the bit, else made in own (as blockAt).
-		const Matrix3r& rotation(Body::id_t id, const Quaternionr& q, Matrix3r& own) const
+		/// Whether a and b are the same orientation to the bit (their four coefficients; -0 is not 0).
+		static bool sameBits(const Quaternionr& a, const Quaternionr& b)
 		{
-			if (size_t(id) < block.size() && sameBits(ori[size_t(id)], q)) return block[size_t(id)].rot;
-			own = q.toRotationMatrix();
-			return own;
-		}
-		/// Whether two orientations (positions) have the same coefficients to the bit (-0 is not 0).
-		static bool sameBits(const Quaternionr& a, const Quaternionr& b) { return sameReals(a.coeffs().data(), b.coeffs().data(), 4); }
-		static bool sameBits(const Vector3r& a, const Vector3r& b) { return sameReals(a.data(), b.data(), 3); }
-		static bool sameReals(const Real* a, const Real* b, size_t n)
-		{
-			static_assert(std::is_trivially_copyable<Real>::value, "coordinates are compared bit for bit");
-			return std::memcmp(a, b, n * sizeof(Real)) == 0;
+			static_assert(std::is_trivially_copyable<Real>::value, "orientations are compared bit for bit");
+			return std::memcmp(a.coeffs().data(), b.coeffs().data(), 4 * sizeof(Real)) == 0;
 		}
 	};
 
