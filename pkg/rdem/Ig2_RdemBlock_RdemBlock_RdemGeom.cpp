@@ -273,6 +273,11 @@ void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom
 		        "Ig2_RdemBlock_RdemBlock_RdemGeom.prefetchDistance = " + std::to_string(prefetchDistance) + ": must be -1 (automatic), 0 (off) or > 0");
 }
 
+Matrix3r Ig2_RdemBlock_RdemBlock_RdemGeom::rotation(Body::id_t id, const Quaternionr& q) const
+{
+	return shared ? shared->travel.rotation(id, q) : q.toRotationMatrix();
+}
+
 bool Ig2_RdemBlock_RdemBlock_RdemGeom::stillApart(const Interaction& I) const
 {
 	const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr; // recorded by RdemContactGate

@@ -46,7 +46,7 @@ namespace rdem {
 		   here. The same bits either way, whatever step the record is of. */
 		Matrix3r rotation(Body::id_t id, const Quaternionr& q) const
 		{
-			if (__builtin_expect(size_t(id) < rot.size() && sameBits(ori[size_t(id)], q), 1)) return rot[size_t(id)];
+			if (size_t(id) < rot.size() && sameBits(ori[size_t(id)], q)) return rot[size_t(id)];
 			return q.toRotationMatrix();
 		}
 		/// Whether a and b are the same orientation to the bit (their four coefficients; -0 is not 0).
