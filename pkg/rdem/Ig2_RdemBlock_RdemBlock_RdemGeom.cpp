@@ -273,11 +273,6 @@ void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom
 		        "Ig2_RdemBlock_RdemBlock_RdemGeom.prefetchDistance = " + std::to_string(prefetchDistance) + ": must be -1 (automatic), 0 (off) or > 0");
 }
 
-Matrix3r Ig2_RdemBlock_RdemBlock_RdemGeom::rotation(Body::id_t id, const Quaternionr& q) const
-{
-	return shared ? shared->travel.rotation(id, q) : q.toRotationMatrix();
-}
-
 bool Ig2_RdemBlock_RdemBlock_RdemGeom::stillApart(const Interaction& I) const
 {
 	const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr; // recorded by RdemContactGate
@@ -455,7 +450,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	if (I->phys && static_cast<RdemGeom*>(I->geom.get())->bonded) {
 		// bonded: this step's face normal and segment kinematics (paper eq. 14), from the blocks' states
 		static_cast<RdemGeom*>(I->geom.get())
-		        ->updateBond(rotation(I->getId1(), state1.ori), rotation(I->getId2(), state2.ori), state2.pos + shift2 - state1.pos);
+		        ->updateBond(state1.ori.toRotationMatrix(), state2.ori.toRotationMatrix(), state2.pos + shift2 - state1.pos);
 		return true;
 	}
 	if (!I->phys && !force && stillApart(*I)) {
@@ -469,8 +464,8 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 		g.normal    = (state1.ori * g.segNormal1 - state2.ori * g.segNormal2).normalized();
 		return true;
 	}
-	const Block A { state1.pos, rotation(I->getId1(), state1.ori), static_cast<RdemBlock*>(shape1.get())->extents };
-	const Block B { state2.pos + shift2, rotation(I->getId2(), state2.ori), static_cast<RdemBlock*>(shape2.get())->extents };
+	const Block A { state1.pos, state1.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape1.get())->extents };
+	const Block B { state2.pos + shift2, state2.ori.toRotationMatrix(), static_cast<RdemBlock*>(shape2.get())->extents };
 	if (!I->phys) return force ? bond(A, B, I) : findContact(A, B, state1, state2, I);
 
 	// A real contact needs every separating axis's overlap when it overlaps (normal, edge-to-edge test): computed once.

@@ -85,8 +85,6 @@ Not for periodic cells with shear (``shift2`` of the cell is honoured, the cell'
 	DECLARE_LOGGER;
 
 private:
-	/// q.toRotationMatrix() of body id at orientation q, from the blocks' travel record if it holds it (rdem::BodyTravel::rotation).
-	Matrix3r rotation(Body::id_t id, const Quaternionr& q) const;
 	/// Whether I is a pair found apart whose RdemGap still holds for the blocks' travel in this step.
 	bool stillApart(const Interaction& I) const;
 	/// Bonding (utils.createInteraction): the shared face of A and B cut into segmentsPerEdge² segments; false if none.

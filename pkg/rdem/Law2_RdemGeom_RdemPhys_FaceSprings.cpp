@@ -67,13 +67,6 @@ namespace {
 		Vector3r     x1, x2;
 		Real         dt;
 		bool         trackEnergy;
-		/// The blocks' travel record, which holds their rotation matrices in this step (rdem::BodyTravel::rotation).
-		const rdem::BodyTravel& travel;
-		Body::id_t              id1, id2;
-
-		/// The rotation matrices of body 1 and body 2 (Quaternion::toRotationMatrix of their orientations).
-		Matrix3r rot1() const { return travel.rotation(id1, s1.ori); }
-		Matrix3r rot2() const { return travel.rotation(id2, s2.ori); }
 
 		/// Velocity of body 2 relative to body 1 at the point x₂ + r₂ [m/s].
 		Vector3r relativeVelocity(const Vector3r& r2) const { return s2.vel + s2.angVel.cross(r2) - s1.vel - s1.angVel.cross(r2 + x2 - x1); }
@@ -160,7 +153,7 @@ namespace {
 		BondStep(const Pair& pr, RdemGeom& geom, const RdemPhys& p)
 		        : pair(pr)
 		        , g(geom)
-		        , R1(p.softening || p.offsetCorrection ? pr.rot1() : Matrix3r::Identity())
+		        , R1(p.softening || p.offsetCorrection ? pr.s1.ori.toRotationMatrix() : Matrix3r::Identity())
 		        , n(geom.normal)
 		        , kin(geom.kin)
 		        , A(geom.segmentArea())
@@ -356,7 +349,7 @@ namespace {
 		b.contactArea = b.brokenContactArea(p);
 		// Bonds whose centroids are offset along the face (cells only): the intact shear springs measure d_t - slip.
 		const bool     offset = p.offsetCorrection;
-		const Matrix3r R12    = offset ? Matrix3r(b.R1.transpose() * pair.rot2()) : Matrix3r::Identity();
+		const Matrix3r R12    = offset ? Matrix3r(b.R1.transpose() * pair.s2.ori.toRotationMatrix()) : Matrix3r::Identity();
 		// the face centre's offsets from the centroids along the face (rdem::offsetSlip's a₁, a₂), for the slip and its gradient
 		const Vector3r a1    = offset ? rdem::alongFace<Real>(g.faceCentre1, g.segNormal1) : Vector3r::Zero();
 		const Vector3r a2    = offset ? rdem::alongFace<Real>(g.faceCentre2, g.segNormal2) : Vector3r::Zero();
@@ -479,7 +472,7 @@ namespace {
 			p.contactDashpot.assign(n, Vector3r::Zero());
 			p.contactOffset.assign(n, Real(-1));
 		}
-		const Matrix3r  R1 = pair.rot1(), R2 = pair.rot2();
+		const Matrix3r  R1 = pair.s1.ori.toRotationMatrix(), R2 = pair.s2.ori.toRotationMatrix();
 		const Vector3r& nrm = g.normal;
 		const Vector3r  dx  = pair.x2 - pair.x1;
 		// Two passes over the springs, both from the stored points (no buffer): the area in contact, for the dashpot caps'
@@ -562,15 +555,9 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	RdemPhys&    p  = *static_cast<RdemPhys*>(ip.get());
 	const State& s1 = *Body::byId(I->getId1(), scene)->state;
 	const State& s2 = *Body::byId(I->getId2(), scene)->state;
-	const Pair   pair { s1,
-                          s2,
-                          s1.pos,
-                          scene->isPeriodic ? Vector3r(s2.pos + scene->cell->hSize * I->cellDist.cast<Real>()) : s2.pos,
-                          scene->dt,
-                          scene->trackEnergy,
-                          shared->travel,
-                          I->getId1(),
-                          I->getId2() };
+	const Pair   pair { s1,        s2,
+                          s1.pos,    scene->isPeriodic ? Vector3r(s2.pos + scene->cell->hSize * I->cellDist.cast<Real>()) : s2.pos,
+                          scene->dt, scene->trackEnergy };
 	Energies     e;
 	Breaks       breaks;
 	ForceOnBody2 on2;

@@ -14,7 +14,6 @@
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/math/SeparationBound.hpp>
 #include <atomic>
-#include <limits>
 #include <numeric>
 
 namespace yade {
@@ -51,9 +50,7 @@ void RdemContactGate::updateTravel(rdem::BodyTravel& t)
 		t.body.assign(size_t(nBodiesNow), nullptr);
 		t.shape.assign(size_t(nBodiesNow), nullptr);
 		t.pos.resize(size_t(nBodiesNow));
-		// No orientation yet (NaN, unlike any body's): BodyTravel::rotation finds no matrix until one is recorded.
-		t.ori.assign(size_t(nBodiesNow), Quaternionr(Vector4r::Constant(std::numeric_limits<Real>::quiet_NaN())));
-		t.rot.resize(size_t(nBodiesNow));
+		t.ori.resize(size_t(nBodiesNow));
 		t.radius.assign(size_t(nBodiesNow), 0);
 	}
 	// A body or shape that is not the one seen in the last step (erased, replaced, first step) restarts the record.
@@ -80,10 +77,7 @@ void RdemContactGate::updateTravel(rdem::BodyTravel& t)
 		} else
 			t.travel[size_t(id)] += rdem::rigidTravel<Real>(t.pos[size_t(id)], t.ori[size_t(id)], s.pos, s.ori, t.radius[size_t(id)]);
 		t.pos[size_t(id)] = s.pos;
-		if (!rdem::BodyTravel::sameBits(t.ori[size_t(id)], s.ori)) { // rot holds ori's matrix (BodyTravel::rotation)
-			t.ori[size_t(id)] = s.ori;
-			t.rot[size_t(id)] = s.ori.toRotationMatrix();
-		}
+		t.ori[size_t(id)] = s.ori;
 	}
 	if (restart || replaced) {
 		std::fill(t.travel.begin(), t.travel.end(), Real(0));

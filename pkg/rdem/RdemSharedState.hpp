@@ -13,10 +13,8 @@
 #include <core/Interaction.hpp>
 #include <pkg/rdem/RdemStiffnessSource.hpp>
 #include <boost/weak_ptr.hpp>
-#include <cstring>
 #include <functional>
 #include <mutex>
-#include <type_traits>
 
 namespace yade {
 
@@ -37,24 +35,8 @@ namespace rdem {
 		vector<Vector3r>     pos;
 		vector<Quaternionr>  ori;
 		vector<Real>         radius; ///< circumradius of the block about its centroid, 0 for other shapes [m]
-		vector<Matrix3r>     rot;    ///< by body id: ori's rotation matrix (Quaternion::toRotationMatrix)
 		/// Whether the record holds the configurations of step iter of a scene that is not periodic.
 		bool currentFor(const Scene& scene) const;
-		/* The rotation matrix of body id at orientation q, q.toRotationMatrix(): the one recorded with the configuration
-		   last seen if q is that orientation to the bit (RdemContactGate records it once per body and step of contact
-		   detection, for the geometry functor and the law, which need it for every interaction of the body), else made
-		   here. The same bits either way, whatever step the record is of. */
-		Matrix3r rotation(Body::id_t id, const Quaternionr& q) const
-		{
-			if (size_t(id) < rot.size() && sameBits(ori[size_t(id)], q)) return rot[size_t(id)];
-			return q.toRotationMatrix();
-		}
-		/// Whether a and b are the same orientation to the bit (their four coefficients; -0 is not 0).
-		static bool sameBits(const Quaternionr& a, const Quaternionr& b)
-		{
-			static_assert(std::is_trivially_copyable<Real>::value, "orientations are compared bit for bit");
-			return std::memcmp(a.coeffs().data(), b.coeffs().data(), 4 * sizeof(Real)) == 0;
-		}
 	};
 
 	/// O.engines as last seen, without owning the engines (an engine that held the list it is in would never be freed).
