@@ -18,7 +18,6 @@
 #include <pkg/rdem/math/BlockGeometry.hpp>
 #include <pkg/rdem/math/SegmentGrid.hpp>
 #include <Eigen/Core>
-#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -62,8 +61,7 @@ namespace rdem {
 	   key / 64), only the samples whose bit is set are tested; nullptr: all. The same points, depths and areas, to the
 	   bit, as testing every sample of every face of X that faces Y with sampleDepthLocal (tests/unit/test_face_samples.cpp):
 	   the faces that cannot reach Y (faceMayEnterLocal) and those turned away from u are skipped before their samples are
-	   made, X's axes are turned into Y's frame once per call, the trapezoid nodes made once (TrapezoidNodes), and the
-	   samples to test visited by the set bits of each face's keys, 64 at a time. */
+	   made, X's axes are turned into Y's frame once per call, and the trapezoid nodes made once (TrapezoidNodes). */
 	template <class S, class Emit>
 	void faceSamplesInside(
 	        const OrientedBlock<S>&       X,
@@ -90,53 +88,48 @@ namespace rdem {
                         }
                         return axisInY[k];
 		};
-		// The samples to test among keys [key, key + count), count ≤ 64, as bits from bit 0: the certificate's, or all.
-		auto bitsAt = [&](int key, int count) {
-			const std::uint64_t all = count < 64 ? (std::uint64_t(1) << count) - 1 : ~std::uint64_t(0);
-			if (!near) return all;
-			const int     off  = key % 64;
-			std::uint64_t bits = near[std::size_t(key) / 64] >> off;
-			if (off + count > 64) bits |= near[std::size_t(key) / 64 + 1] << (64 - off);
-			return bits & all;
+		// The samples to test: the set bits of keys [lo, hi) of the certificate, or all of them.
+		const int lo = firstKey, hi = lo + 6 * perFace;
+		// The first key to test from `key` on (hi if none is left below hi).
+		auto next = [&](int key) {
+			if (!near) return key < hi ? key : hi;
+			while (key < hi) {
+				const std::uint64_t bits = near[std::size_t(key) / 64] >> (key % 64);
+				if (bits) return key + __builtin_ctzll(bits);
+				key = 64 * (key / 64 + 1);
+			}
+			return hi;
 		};
 		static constexpr int following[3][2] = { { 1, 2 }, { 2, 0 }, { 0, 1 } }; // (k + 1) % 3, (k + 2) % 3
-		for (int face = 0; face < 6; ++face) {
-			// The face's keys [first, end), in chunks of 64 from first: the first chunk with a sample to test, if any.
-			const int     first = firstKey + face * perFace, end = first + perFace;
-			int           chunk = first;
-			std::uint64_t bits  = bitsAt(chunk, std::min(64, end - chunk));
-			while (!bits && chunk + 64 < end) {
-				chunk += 64;
-				bits = bitsAt(chunk, std::min(64, end - chunk));
-			}
-			if (!bits) continue;
+		for (int key = next(lo); key < hi;) {
+			const int face = (key - lo) / perFace, first = lo + face * perFace, end = first + perFace;
 			const int k = face / 2, k1 = following[k][0], k2 = following[k][1];
 			// The face's outward normal and its cosine with -u: a face turned away from u has no sample in contact.
 			const S s      = face % 2 ? 1 : -1;
 			const V nf     = s * X.rot.col(k);
 			const S cosine = -nf.dot(u);
-			if (!(cosine > 0)) continue;
+			if (!(cosine > 0)) {
+				key = next(end);
+				continue;
+			}
 			const V  fc = X.pos + X.half[k] * nf;
 			const V  qc = toY * (fc - Y.pos); // the face centre in Y's frame
 			const V &q1 = axis(k1), &q2 = axis(k2);
-			if (!faceMayEnterLocal<S>(Y.half, qc, q1, q2, X.half[k1], X.half[k2])) continue;
+			if (!faceMayEnterLocal<S>(Y.half, qc, q1, q2, X.half[k1], X.half[k2])) {
+				key = next(end);
+				continue;
+			}
 			const V t1 = X.rot.col(k1), t2 = X.rot.col(k2);
 			const S area = segmentArea(X.half[k1], X.half[k2], n); // of a segment of the face [m²]
-			for (;;) {
-				for (; bits; bits &= bits - 1) {
-					const int               key = chunk + __builtin_ctzll(bits), point = key - first;
-					const TrapezoidNode<S>& a   = node[point / (n + 1)];
-					const TrapezoidNode<S>& b   = node[point % (n + 1)];
-					const S                 sa  = X.half[k1] * a.x;
-					const V                 qa  = qc + sa * q1;
-					const S                 rb  = X.half[k2] * b.x;
-					const auto              hit = sampleDepthLocal<S>(Y.half, qa + rb * q2, uq);
-					if (!hit.hit) continue;
-					emit(FaceSampleHit<S> { key, fc + sa * t1 + rb * t2 + (hit.depth / 2) * u, hit.depth, area * a.w * b.w * cosine / 2 });
-				}
-				chunk += 64;
-				if (chunk >= end) break;
-				bits = bitsAt(chunk, std::min(64, end - chunk));
+			for (; key < end; key = next(key + 1)) {
+				const TrapezoidNode<S>& a   = node[(key - first) / (n + 1)];
+				const TrapezoidNode<S>& b   = node[(key - first) % (n + 1)];
+				const S                 sa  = X.half[k1] * a.x;
+				const V                 qa  = qc + sa * q1;
+				const S                 rb  = X.half[k2] * b.x;
+				const auto              hit = sampleDepthLocal<S>(Y.half, qa + rb * q2, uq);
+				if (!hit.hit) continue;
+				emit(FaceSampleHit<S> { key, fc + sa * t1 + rb * t2 + (hit.depth / 2) * u, hit.depth, area * a.w * b.w * cosine / 2 });
 			}
 		}
 	}
