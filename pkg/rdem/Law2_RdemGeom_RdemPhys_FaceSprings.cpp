@@ -525,16 +525,13 @@ namespace {
 Vector2r Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(
         const State& s1, const Vector3r& x1, const State& s2, const Vector3r& x2, const Vector3r& C, const Vector3r& n, Real share, Real dt)
 {
-	Real       invN = 0, invS = 0;
-	const auto add = [&](const State& s, const Vector3r& x) { // body 1, then body 2
-		if (s.blockedDOFs == State::DOF_ALL) return;
-		const Vector3r r       = C - x;
-		const Real     invMass = 1 / s.mass, inertia = s.inertia.minCoeff();
-		invN += invMass + r.cross(n).squaredNorm() / inertia;
-		invS += invMass + r.squaredNorm() / inertia;
-	};
-	add(s1, x1);
-	add(s2, x2);
+	Real invN = 0, invS = 0;
+	for (const auto& sx : { std::make_pair(&s1, x1), std::make_pair(&s2, x2) }) {
+		if (sx.first->blockedDOFs == State::DOF_ALL) continue;
+		const Vector3r r = C - sx.second;
+		invN += 1 / sx.first->mass + r.cross(n).squaredNorm() / sx.first->inertia.minCoeff();
+		invS += 1 / sx.first->mass + r.squaredNorm() / sx.first->inertia.minCoeff();
+	}
 	const Real inf = std::numeric_limits<Real>::infinity();
 	return Vector2r(invN > 0 ? share / (invN * dt) : inf, invS > 0 ? share / (invS * dt) : inf);
 }
