@@ -9,6 +9,7 @@
 #include <pkg/rdem/RdemPrefetch.hpp>
 #include <pkg/rdem/math/BlockGeometry.hpp>
 #include <pkg/rdem/math/FacePatch.hpp>
+#include <pkg/rdem/math/FaceSamples.hpp>
 #include <pkg/rdem/math/SegmentGrid.hpp>
 #include <pkg/rdem/math/SeparationBound.hpp>
 #include <limits>
@@ -67,101 +68,37 @@ namespace {
 		}
 	}
 
-	/* Sample points of block X (which = 0 for body 1, 1 for body 2) that entered block Y, appended to geom. normal is the
-	   pair's contact normal from body 1 to body 2 (rdem::contactFaceAxis); X separates from Y along u = -normal (body 1)
-	   or +normal (body 2), and a sample's depth is its distance to Y's surface along u (rdem::sampleDepth). Only the faces
-	   of X that face Y take part (cosine c = -n_f·u > 0). Sample keys are ((which·6 + face)·(n+1)² + point), stable from
-	   step to step for the shear history. A face's samples are the points of the trapezoid rule (rdem::faceSamplePoints),
-	   tested in Y's frame, where they are affine in the face's centre and axes (rdem::sampleDepthLocal). With near (a sample
-	   certificate, nearSamples), only the samples whose bit is set are tested: the others cannot be inside Y. Samples are
-	   visited by the set bits of the certificate (or of all keys), in ascending key order, which the law's history and
-	   sums follow. */
+	/* Sample points of block X (which = 0 for body 1, 1 for body 2) that entered block Y, appended to geom
+	   (rdem::faceSamplesInside). normal is the pair's contact normal from body 1 to body 2 (rdem::contactNormal); X
+	   separates from Y along u = -normal (body 1) or +normal (body 2). Sample keys are ((which·6 + face)·(n+1)² + point),
+	   ascending, which the law's history and sums follow. With near (a sample certificate, nearSamples), only the samples
+	   whose bit is set are tested: the others cannot be inside Y. node: the trapezoid rule of n. */
 	void sampleInside(
-	        const Block&            X,
-	        const State&            sx,
-	        const Block&            Y,
-	        const State&            sy,
-	        int                     which,
-	        int                     n,
-	        const Vector3r&         normal,
-	        RdemGeom&               g,
-	        const vector<uint64_t>* near)
+	        const Block&                      X,
+	        const State&                      sx,
+	        const Block&                      Y,
+	        const State&                      sy,
+	        int                               which,
+	        int                               n,
+	        const Vector3r&                   normal,
+	        const rdem::TrapezoidNodes<Real>& node,
+	        RdemGeom&                         g,
+	        const vector<uint64_t>*           near)
 	{
-		const int      perFace = (n + 1) * (n + 1);
-		const Vector3r u       = which == 0 ? Vector3r(-normal) : normal;
-		const Matrix3r toY     = Y.rot.transpose();
-		const Vector3r uq      = toY * u; // u in Y's frame (rdem::sampleDepthLocal)
-		const State&   s1      = which == 0 ? sx : sy;
-		const State&   s2      = which == 0 ? sy : sx;
-		const Vector3r x1      = which == 0 ? X.pos : Y.pos;
-		const Vector3r x2      = which == 0 ? Y.pos : X.pos;
-		// One face of X (face = 2k + side): its axes and centre, globally and in Y's frame, whether it may have a sample
-		// inside Y (it faces Y and rdem::faceMayEnterLocal), and its samples' area before the trapezoid weight.
-		struct Face {
-			int      k1, k2;
-			Vector3r t1, t2, q1, q2, fc, qc;
-			Real     area, cosine;
-			bool     open;
-		};
-		auto faceOf = [&](int face) {
-			Face      F;
-			const int k       = face / 2;
-			F.k1              = (k + 1) % 3;
-			F.k2              = (k + 2) % 3;
-			F.t1              = X.rot.col(F.k1);
-			F.t2              = X.rot.col(F.k2);
-			F.q1              = toY * F.t1; // the face's in-plane axes in Y's frame
-			F.q2              = toY * F.t2;
-			F.area            = rdem::segmentArea(X.half[F.k1], X.half[F.k2], n); // of a segment of the face [m²]
-			const Real     s  = face % 2 ? 1 : -1;
-			const Vector3r nf = s * X.rot.col(k);
-			F.cosine          = -nf.dot(u);
-			F.open            = F.cosine > 0;
-			if (!F.open) return F;
-			F.fc   = X.pos + X.half[k] * nf;
-			F.qc   = toY * (F.fc - Y.pos); // the face centre in Y's frame
-			F.open = rdem::faceMayEnterLocal<Real>(Y.half, F.qc, F.q1, F.q2, X.half[F.k1], X.half[F.k2]);
-			return F;
-		};
-		// Sample (i, j) of face F, key `key`, if inside Y.
-		auto sample = [&](const Face& F, int key, int i, int j) {
-			const auto     a   = rdem::trapezoidNode<Real>(i, n);
-			const Real     sa  = X.half[F.k1] * a.x;
-			const Vector3r qa  = F.qc + sa * F.q1;
-			const auto     b   = rdem::trapezoidNode<Real>(j, n);
-			const Real     rb  = X.half[F.k2] * b.x;
-			const auto     hit = rdem::sampleDepthLocal<Real>(Y.half, qa + rb * F.q2, uq);
-			if (!hit.hit) return;
-			const Vector3r point = F.fc + sa * F.t1 + rb * F.t2 + (hit.depth / 2) * u;
-			g.sampleKey.push_back(key);
-			g.samplePoint.push_back(point);
-			g.sampleNormal.push_back(normal);
-			g.sampleVel.push_back(pointVelocity(s2, x2, point) - pointVelocity(s1, x1, point));
-			g.sampleDepth.push_back(hit.depth);
-			g.sampleArea.push_back(F.area * a.w * b.w * F.cosine / 2); // trapezoid weight; both blocks are sampled: half each
-		};
-		// The samples to test: the set bits of keys [which·6·perFace, (which + 1)·6·perFace) of the certificate, or all.
-		const int lo = which * 6 * perFace, hi = lo + 6 * perFace;
-		// The first key to test from `key` on (hi or more if none is left below hi).
-		auto next = [&](int key) {
-			if (!near) return key < hi ? key : hi;
-			while (key < hi) {
-				const uint64_t bits = (*near)[size_t(key) / 64] >> (key % 64);
-				if (bits) return key + __builtin_ctzll(bits);
-				key = 64 * (key / 64 + 1);
-			}
-			return hi;
-		};
-		for (int key = next(lo); key < hi;) {
-			const int  face = key / perFace - which * 6, first = key - key % perFace, end = first + perFace;
-			const Face F = faceOf(face);
-			if (!F.open) {
-				key = next(end);
-				continue;
-			}
-			for (; key < end; key = next(key + 1))
-				sample(F, key, (key - first) / (n + 1), (key - first) % (n + 1));
-		}
+		const Vector3r u  = which == 0 ? Vector3r(-normal) : normal;
+		const State&   s1 = which == 0 ? sx : sy;
+		const State&   s2 = which == 0 ? sy : sx;
+		const Vector3r x1 = which == 0 ? X.pos : Y.pos;
+		const Vector3r x2 = which == 0 ? Y.pos : X.pos;
+		rdem::faceSamplesInside<Real>(
+		        X, Y, u, n, which * 6 * (n + 1) * (n + 1), near ? near->data() : nullptr, node, [&](const rdem::FaceSampleHit<Real>& hit) {
+			        g.sampleKey.push_back(hit.key);
+			        g.samplePoint.push_back(hit.point);
+			        g.sampleNormal.push_back(normal);
+			        g.sampleVel.push_back(pointVelocity(s2, x2, hit.point) - pointVelocity(s1, x1, hit.point));
+			        g.sampleDepth.push_back(hit.depth);
+			        g.sampleArea.push_back(hit.area);
+		        });
 	}
 
 	/// Edge-to-edge contact of the pair (rdem::edgeEdgeContact), appended to geom with the key after all face samples.
@@ -198,11 +135,12 @@ namespace {
 	        RdemGeom&                         g,
 	        const vector<uint64_t>*           near = nullptr)
 	{
-		const Block&   A      = pair.A;
-		const Block&   B      = pair.B;
-		const Vector3r normal = rdem::contactFaceAxis<Real>(pair, sat).normal;
-		sampleInside(A, s1, B, s2, 0, n, normal, g, near);
-		sampleInside(B, s2, A, s1, 1, n, normal, g, near);
+		const Block&                     A      = pair.A;
+		const Block&                     B      = pair.B;
+		const Vector3r                   normal = rdem::contactNormal<Real>(pair, sat);
+		const rdem::TrapezoidNodes<Real> node(n);
+		sampleInside(A, s1, B, s2, 0, n, normal, node, g, near);
+		sampleInside(B, s2, A, s1, 1, n, normal, node, g, near);
 		edgeInside(pair, sat, s1, s2, tol, n, g);
 	}
 

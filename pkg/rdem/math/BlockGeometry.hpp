@@ -189,8 +189,9 @@ namespace rdem {
 	   (turned from A to B) weighted by w_i = max(0, 1 - (o_i - o_min)/(blend·o_min)): only the least overlapped one
 	   unless another is within the fraction blend of it. The default 1 % blends the faces of aligned blocks (their
 	   overlaps differ by round-off) and keeps the band between perpendicular axes narrow, where the turning normal
-	   acts as a transverse stiffness of order k_nA/blend that the time step does not include. For blocks that overlap (o_min > 0); oriented from A to B. */
-	template <class S> FaceAxis<S> contactFaceAxis(const BlockPair<S>& pair, const SeparatingAxes<S>& sat, S blend = S(1e-2))
+	   acts as a transverse stiffness of order k_nA/blend that the time step does not include. For blocks that overlap (o_min > 0); oriented from A to B.
+	   contactNormal gives the normal alone (what the sampled contact needs), contactFaceAxis with the overlap along it. */
+	template <class S> Eigen::Matrix<S, 3, 1> contactNormal(const BlockPair<S>& pair, const SeparatingAxes<S>& sat, S blend = S(1e-2))
 	{
 		using V = Eigen::Matrix<S, 3, 1>;
 		V        axes[6];
@@ -205,8 +206,14 @@ namespace rdem {
 		const S band = blend * least;
 		for (int i = 0; i < 6; ++i)
 			sum += (band > 0 ? std::max(S(0), 1 - (overlaps[i] - least) / band) : S(overlaps[i] == least)) * axes[i];
+		return sum.normalized();
+	}
+
+	/// The contact normal (contactNormal) with the overlap of the blocks' projections along it.
+	template <class S> FaceAxis<S> contactFaceAxis(const BlockPair<S>& pair, const SeparatingAxes<S>& sat, S blend = S(1e-2))
+	{
 		FaceAxis<S> axis;
-		axis.normal  = sum.normalized();
+		axis.normal  = contactNormal(pair, sat, blend);
 		axis.overlap = projectionOverlap(pair.A, pair.B, axis.normal);
 		return axis;
 	}
