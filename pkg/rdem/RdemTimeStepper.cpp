@@ -159,22 +159,34 @@ Real RdemTimeStepper::lanczos(Scene* sc)
 		for (size_t k = 0; k < 6; ++k)
 			mask[6 * b + k] = scale[b].free[k];
 	vector<Real> w(n);
-	const auto   largest = [&](const rdem::BlockStiffness<Real>& X, vector<Real>& start) { // λ_max of P S X S P
-                auto apply = [&](const Real* x, Real* y) {
+	const auto   normalised = [&](const rdem::BlockStiffness<Real>& X) { // y = P S X S P x
+                return [&](const Real* x, Real* y) {
                         w.assign(x, x + n);
                         rdem::scaleDofs(scale, w.data());
                         X.multiply(w.data(), y);
                         rdem::scaleDofs(scale, y);
                 };
-                // warm start mixed with 10 % of a generic vector: a new stiff spot (a contact) far from the old mode is still found
-                return rdem::lanczosLargest<Real>(apply, n, mask, start, 2, lanczosMaxSteps, lanczosTolerance, Real(0.1));
+	};
+	const auto largest = [&](const rdem::BlockStiffness<Real>& X, vector<Real>& start) { // λ_max of P S X S P
+		// warm start mixed with 10 % of a generic vector: a new stiff spot (a contact) far from the old mode is still found
+		return rdem::lanczosLargest<Real>(normalised(X), n, mask, start, 2, lanczosMaxSteps, lanczosTolerance, Real(0.1));
 	};
 	const auto est   = largest(K, ritzVector);
 	lanczosSteps     = est.steps;
 	lanczosResidual  = est.ritz > 0 ? est.residual / est.ritz : Real(0);
 	dashpotRate      = C.empty() ? Real(0) : largest(C, dashpotRitzVector).upper();
 	springCriticalDt = est.upper() > 0 ? 2 / math::sqrt(est.upper()) : std::numeric_limits<Real>::infinity();
-	return rdem::dampedCriticalStep(est.upper(), dashpotRate);
+	/* The root of λ_max(Δt²K̃ + 2ΔtC̃) = 4 itself, not its bound from λ_K and λ_C (exact only where the stiffest mode is the
+	   most damped), from the sum of the two Ritz vectors (the mode of the limit mixes the two; nothing more is saved). */
+	vector<Real> start(n, 0);
+	if (dashpotRate > 0)
+		for (size_t i = 0; i < n; ++i)
+			start[i] = ritzVector[i] + dashpotRitzVector[i];
+	const auto damped = rdem::dampedCriticalStepOf<Real>(
+	        normalised(K), normalised(C), n, mask, start, est.upper(), dashpotRate, lanczosMaxSteps, lanczosTolerance, 8);
+	dampedRounds     = damped.rounds;
+	dampedRitzVector = damped.rounds > 0 ? start : vector<Real>();
+	return damped.step;
 }
 
 vector<Real> RdemTimeStepper::springSignature(Scene* sc)
