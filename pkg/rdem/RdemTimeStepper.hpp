@@ -59,7 +59,7 @@ On a distributed run (:ref:`mpy`, YADE built with ``ENABLE_MPI``) each rank esti
 		((int,dampedRounds,0,(Attr::readonly|Attr::noSave),"Lanczos runs on $\\Delta t^2\\tilde{K}+2\\Delta t\\tilde{C}$ that found the damped limit at the last estimate (0: no dashpot acts, the limit is $2/\\omega_{max}$)."))
 		((Real,dashpotRate,0,(Attr::readonly|Attr::noSave),"$\\lambda_C$ of the last Lanczos estimate: largest eigenvalue of the mass-normalised contact dashpots [1/s]; 0 when no dashpot acts (a bonded assembly before it cracks)."))
 		((vector<Real>,lastSignature,,(Attr::hidden|Attr::readonly),"What the springs were at the last Lanczos estimate (reuseUnchanged; saved, so that a reloaded run takes the same decisions)."))
-		((int,reused,0,Attr::readonly,"Updates that kept the last Lanczos estimate since it was made (``reuseUnchanged``)."))
+		((int,reused,0,Attr::readonly,"Updates since the last estimate of $\\lambda_K$ that kept it (``reuseUnchanged``): those that kept the whole estimate, and those after a break that redid only the dashpots' part."))
 		((Real,checkedDt,0,(Attr::hidden|Attr::readonly),"The fixed ``O.dt`` last checked against the limit [s] (saved, as everything the next steps depend on: a reloaded run takes the same decisions)."))
 		((long,brokenAtEstimate,0,(Attr::hidden|Attr::readonly),"Springs broken when the last estimate was made (a break triggers a new one; saved)."))
 		((bool,contactBound,false,,"Also allow for the contacts that blocks can still make (scenes with a collider, ``rdem.engines(recontact=True)``): every free block that carries no bond gets the terms of a flush contact on each of its six faces, at its own stiffness per area (:ref:`theory §6 <rdem-theory-6>`). Without it the step follows only the contacts that exist: none for a falling block, and a step set while a corner touches is unstable once a face lands."))
@@ -79,7 +79,10 @@ On a distributed run (:ref:`mpy`, YADE built with ``ENABLE_MPI``) each rank esti
 
 private:
 	Real gershgorin(Scene* scene);
-	Real lanczos(Scene* scene);
+	/// keepStiffest: take λ_K and its Ritz vector from the last estimate (springCriticalDt), redo the dashpots' λ_C and the damped limit.
+	Real lanczos(Scene* scene, bool keepStiffest = false);
+	/// Whether only broken springs differ between two spring signatures (a break changes the dashpots, not K: onlyBreaks).
+	static bool onlyBreaks(const vector<Real>& signature, const vector<Real>& last);
 	/// Refuse or warn about a fixed O.dt above the scene's limits (over all ranks of a distributed run) [s].
 	void checkFixedDt(Scene* scene, Real criticalDtAll, Real springCriticalDtAll);
 	/// The step for which the dashpots are capped as the law caps them (Law2…::dashpotCap): O.dt when the estimate

@@ -122,12 +122,16 @@ namespace rdem {
 			if (open.springs == 0) return; // nothing added: no block for the pair
 			/* M = Σ J(r1)ᵀK_s J(r1); with r2 = r1 - d, J(r2) = J(r1) T, T = [[I, [d]×], [0, I]], so that
 			   Σ J(r1)ᵀK_s J(r2) = M T and Σ J(r2)ᵀK_s J(r2) = Tᵀ M T. */
-			const M6 M                        = open.moments.block();
-			M6       T                        = M6::Identity();
-			T.template topRightCorner<3, 3>() = cross(open.d);
-			const M6 MT                       = M * T;
+			const M6 M = open.moments.block();
+			const M3 D = cross(open.d);
+			M6       MT; // M T, T = [[I, D], [0, I]]: by 3×3 blocks
+			MT.template leftCols<3>()              = M.template leftCols<3>();
+			MT.template topRightCorner<3, 3>()     = M.template topLeftCorner<3, 3>() * D + M.template topRightCorner<3, 3>();
+			MT.template bottomRightCorner<3, 3>()  = M.template bottomLeftCorner<3, 3>() * D + M.template bottomRightCorner<3, 3>();
+			M6 TtMT                                = MT; // Tᵀ M T: Tᵀ = [[I, 0], [Dᵀ, I]]
+			TtMT.template bottomRows<3>()         += D.transpose() * MT.template topRows<3>();
 			diag[size_t(open.b1)] += M;
-			diag[size_t(open.b2)] += T.transpose() * MT;
+			diag[size_t(open.b2)] += TtMT;
 			pairs.push_back({ open.b1, open.b2 });
 			offDiag.push_back(-MT);
 		}
