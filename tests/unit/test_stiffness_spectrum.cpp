@@ -413,7 +413,7 @@ TEST(StiffnessSpectrum, DampedStepOfIsTheRootOfTheDampedLimit)
 	   bracket it stops on; tol = 1e-3, the stepper's lanczosTolerance); and far above the bound dampedCriticalStep on
 	   some of them. */
 	std::srand(17);
-	const double tol = 1e-3;
+	const double tol    = 1e-3;
 	double       gained = 1;
 	for (int trial = 0; trial < 40; ++trial) {
 		const MX   A = MX::Random(30, 30), B = MX::Random(30, 2) * (0.5 + trial % 4);
@@ -421,15 +421,17 @@ TEST(StiffnessSpectrum, DampedStepOfIsTheRootOfTheDampedLimit)
 		const auto lambda = [](const MX& X) { return Eigen::SelfAdjointEigenSolver<MX>(X, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff(); };
 		double     lo = 0, hi = 2 / std::sqrt(lambda(K));
 		while (hi - lo > 1e-12 * hi) {
-			const double mid = (lo + hi) / 2;
+			const double mid                                    = (lo + hi) / 2;
 			(lambda(mid * mid * K + 2 * mid * C) > 4 ? hi : lo) = mid;
 		}
 		const auto applyOf = [](const MX& X) {
-			return [&X](const double* x, double* y) { Eigen::Map<Eigen::VectorXd>(y, X.rows()) = X * Eigen::Map<const Eigen::VectorXd>(x, X.rows()); };
+			return [&X](const double* x, double* y) {
+				Eigen::Map<Eigen::VectorXd>(y, X.rows()) = X * Eigen::Map<const Eigen::VectorXd>(x, X.rows());
+			};
 		};
-		std::vector<double> start;
+		std::vector<double>     start;
 		const std::vector<char> mask(30, 1);
-		const auto d = rdem::dampedCriticalStepOf<double>(applyOf(K), applyOf(C), 30, mask, start, lambda(K), lambda(C), 60, tol, 8);
+		const auto              d = rdem::dampedCriticalStepOf<double>(applyOf(K), applyOf(C), 30, mask, start, lambda(K), lambda(C), 60, tol, 8);
 		EXPECT_LE(d.step, lo * (1 + 1e-9)) << trial;
 		EXPECT_GT(d.step, (1 - 2 * tol) * lo) << trial;
 		EXPECT_GE(d.upper, lo * (1 - 1e-9)) << trial;

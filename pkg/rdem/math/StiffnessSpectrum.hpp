@@ -80,6 +80,9 @@ namespace rdem {
 		/// Whether nothing nonzero was added (then K x = 0 for every x).
 		bool empty() const { return !anyTerm; }
 
+		/// Body b's diagonal 6×6 block of the point springs (Poisson elements and cells not included).
+		const M6& diagonal(size_t b) const { return diag[b]; }
+
 		/// Opens the pair (b1, b2) for addPointSpring (b1 ≠ b2, both ≥ 0) until endPair; springs to a fixed point need none.
 		void beginPair(long b1, long b2)
 		{
@@ -125,11 +128,11 @@ namespace rdem {
 			const M6 M = open.moments.block();
 			const M3 D = cross(open.d);
 			M6       MT; // M T, T = [[I, D], [0, I]]: by 3×3 blocks
-			MT.template leftCols<3>()              = M.template leftCols<3>();
-			MT.template topRightCorner<3, 3>()     = M.template topLeftCorner<3, 3>() * D + M.template topRightCorner<3, 3>();
-			MT.template bottomRightCorner<3, 3>()  = M.template bottomLeftCorner<3, 3>() * D + M.template bottomRightCorner<3, 3>();
-			M6 TtMT                                = MT; // Tᵀ M T: Tᵀ = [[I, 0], [Dᵀ, I]]
-			TtMT.template bottomRows<3>()         += D.transpose() * MT.template topRows<3>();
+			MT.template leftCols<3>()             = M.template leftCols<3>();
+			MT.template topRightCorner<3, 3>()    = M.template topLeftCorner<3, 3>() * D + M.template topRightCorner<3, 3>();
+			MT.template bottomRightCorner<3, 3>() = M.template bottomLeftCorner<3, 3>() * D + M.template bottomRightCorner<3, 3>();
+			M6 TtMT                               = MT; // Tᵀ M T: Tᵀ = [[I, 0], [Dᵀ, I]]
+			TtMT.template bottomRows<3>() += D.transpose() * MT.template topRows<3>();
 			diag[size_t(open.b1)] += M;
 			diag[size_t(open.b2)] += TtMT;
 			pairs.push_back({ open.b1, open.b2 });
@@ -368,6 +371,39 @@ namespace rdem {
 		}
 	}
 
+	/* The unit vector (6 values per body) of the body whose mass-normalised diagonal block P S D_b S P (D_b = block(b),
+	   a 6×6 symmetric matrix) has the largest eigenvalue, along that block's eigenvector: a principal submatrix, so
+	   its eigenvalue bounds λ_max of the whole from below. Added to a warm start, it puts a new local stiff or damped
+	   spot (a block that a break or a new contact made the heaviest) into the Krylov space from the first step, where a
+	   warm start far from it would let Lanczos converge on an older mode. Empty if no block is nonzero. */
+	template <class S, class Block> std::vector<S> heaviestBlockVector(Block&& block, const std::vector<BodyScale<S>>& scale)
+	{
+		using M6                    = Eigen::Matrix<S, 6, 6>;
+		S                      best = 0;
+		size_t                 at   = 0;
+		Eigen::Matrix<S, 6, 1> vec;
+		for (size_t b = 0; b < scale.size(); ++b) {
+			M6 Sb = M6::Zero();
+			Sb.template topLeftCorner<3, 3>().diagonal().setConstant(scale[b].invSqrtMass);
+			Sb.template bottomRightCorner<3, 3>() = scale[b].invSqrtInertia;
+			for (int k = 0; k < 6; ++k)
+				if (!scale[b].free[size_t(k)]) Sb.row(k).setZero();
+			const M6 A = Sb * block(b) * Sb.transpose();
+			if (!(A.trace() > best)) continue; // the trace bounds the largest eigenvalue from above: skip lighter blocks
+			Eigen::SelfAdjointEigenSolver<M6> eig(A);
+			if (eig.eigenvalues()[5] > best) {
+				best = eig.eigenvalues()[5];
+				at   = b;
+				vec  = eig.eigenvectors().col(5);
+			}
+		}
+		if (!(best > 0)) return {};
+		std::vector<S> out(6 * scale.size(), S(0));
+		for (int k = 0; k < 6; ++k)
+			out[6 * at + size_t(k)] = vec[k];
+		return out;
+	}
+
 	/// Result of lanczosLargest: the largest Ritz value θ [1/s²], its residual norm r (an eigenvalue of A lies in
 	/// [θ - r, θ + r]), and the Lanczos steps taken.
 	template <class S> struct LargestEigenvalue {
@@ -497,9 +533,9 @@ namespace rdem {
 	{
 		using std::sqrt;
 		DampedStep<S> res;
-		res.step = dampedCriticalStep(lambdaK, lambdaC);
-		res.upper
-		        = std::min(lambdaK > 0 ? 2 / sqrt(lambdaK) : std::numeric_limits<S>::infinity(), lambdaC > 0 ? 2 / lambdaC : std::numeric_limits<S>::infinity());
+		res.step  = dampedCriticalStep(lambdaK, lambdaC);
+		res.upper = std::min(
+		        lambdaK > 0 ? 2 / sqrt(lambdaK) : std::numeric_limits<S>::infinity(), lambdaC > 0 ? 2 / lambdaC : std::numeric_limits<S>::infinity());
 		if (!(lambdaC > 0) || !(lambdaK > 0)) { // one of the two alone: the bound is the root
 			res.upper = res.step;
 			return res;
