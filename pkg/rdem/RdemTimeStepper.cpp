@@ -270,7 +270,12 @@ Real RdemTimeStepper::estimate(Scene* sc)
 Real RdemTimeStepper::estimatePy(const string& how)
 {
 	if (how.empty()) return estimate(Omega::instance().getScene().get());
-	if (how != "lanczos" && how != "gershgorin") throw std::invalid_argument("method = '" + how + "': must be 'lanczos' or 'gershgorin'");
+	if (how == "dashpots") { // what an update for a break alone computes
+		Scene* sc = Omega::instance().getScene().get();
+		capDt     = sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0);
+		return lanczos(sc, true);
+	}
+	if (how != "lanczos" && how != "gershgorin") throw std::invalid_argument("method = '" + how + "': must be 'lanczos', 'gershgorin' or 'dashpots'");
 	const string saved = method;
 	method             = how;
 	const Real dt      = estimate(Omega::instance().getScene().get());

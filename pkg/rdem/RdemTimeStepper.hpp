@@ -25,7 +25,7 @@ public:
 	void postLoad(RdemTimeStepper&);
 	/// The estimate itself, Δt_crit [s] (2/ω_max without dashpots; no safety factor), by ``method``; inf if nothing is elastic yet.
 	Real estimate(Scene* scene);
-	/// Python: the estimate by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``).
+	/// Python: the estimate by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``, ``'dashpots'``: λ_K kept).
 	Real estimatePy(const string& method);
 	/// Python: K·x, K the linear stiffness the estimate uses (assemble), x 6 values per body (u [m], θ [rad]) [N, N·m].
 	vector<Real> stiffnessTimes(const vector<Real>& x);
@@ -71,7 +71,7 @@ On a distributed run (:ref:`mpy`, YADE built with ``ENABLE_MPI``) each rank esti
 		((bool,warned,false,(Attr::readonly|Attr::noSave),"Whether the too-large ``O.dt`` warning was printed (once per engine)."))
 		,
 		/* ctor */,
-		.def("estimate",&RdemTimeStepper::estimatePy,(py::arg("method")=""),"Critical time step of the current scene [s], without the safety factor, by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``).")
+		.def("estimate",&RdemTimeStepper::estimatePy,(py::arg("method")=""),"Critical time step of the current scene [s], without the safety factor, by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``; ``'dashpots'``: as an update for a break alone, with $\\lambda_K$ and its Ritz vector kept from the last estimate).")
 		.def("stiffnessTimes",&RdemTimeStepper::stiffnessTimes,(py::arg("x")),"$K\\mathbf{x}$ [N, N·m], $K$ the linear stiffness of the current configuration that the estimate uses (the sources' terms, :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` and :yref:`RdemPoissonEngine`, plus the contacts to come with ``contactBound``), $\\mathbf{x}$ 6 values per body id: displacement [m] and small rotation [rad] in global axes (tests/yade/test_stiffness_source.py checks it against the forces).")
 	);
 	// clang-format on
