@@ -21,7 +21,6 @@
 #include <pkg/rdem/math/Elasticity.hpp>
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -168,23 +167,8 @@ Real RdemTimeStepper::lanczos(Scene* sc, bool keepStiffest)
                         rdem::scaleDofs(scale, y);
                 };
 	};
-	// the warm start (unit, or none) plus the heaviest block's vector (rdem::heaviestBlockVector of `block`)
-	const auto withHeaviest = [&](vector<Real>& start, const std::function<Eigen::Matrix<Real, 6, 6>(size_t)>& block) {
-		const vector<Real> hint = rdem::heaviestBlockVector<Real>(block, scale);
-		if (hint.empty()) return;
-		Real norm = 0;
-		for (Real x : start)
-			norm += x * x;
-		norm = math::sqrt(norm);
-		if (start.size() != n || !(norm > 0) || !math::isfinite(norm)) start.assign(n, Real(0));
-		for (size_t i = 0; i < n; ++i)
-			start[i] = (norm > 0 && math::isfinite(norm) ? start[i] / norm : start[i]) + hint[i];
-	};
 	const auto largest = [&](const rdem::BlockStiffness<Real>& X, vector<Real>& start) { // λ_max of P S X S P
-		/* warm start, plus the heaviest block's vector, plus 10 % of a generic vector: a new stiff or damped spot (a
-		   contact, a broken segment's dashpot) far from the old mode is still found; without the block's vector the
-		   residual test could stop on the old mode first (measured on a cracking cube: λ_C 6.2e4 against 7.7e4) */
-		withHeaviest(start, [&](size_t b) { return X.diagonal(b); });
+		// warm start mixed with 10 % of a generic vector: a new stiff spot (a contact) far from the old mode is still found
 		return rdem::lanczosLargest<Real>(normalised(X), n, mask, start, 2, lanczosMaxSteps, lanczosTolerance, Real(0.1));
 	};
 	/* After a break (keepStiffest), K is the same: a broken segment keeps its spring as a contact spring of the same k̄A
@@ -202,14 +186,13 @@ Real RdemTimeStepper::lanczos(Scene* sc, bool keepStiffest)
 	/* The root of λ_max(Δt²K̃ + 2ΔtC̃) = 4 itself, not its bound from λ_K and λ_C (exact only where the stiffest mode is the
 	   most damped), from the sum of the two Ritz vectors (the mode of the limit mixes the two; nothing more is saved). */
 	vector<Real> start(n, 0);
-	if (dashpotRate > 0) {
+	if (dashpotRate > 0)
 		for (size_t i = 0; i < n; ++i)
 			start[i] = ritzVector[i] + dashpotRitzVector[i];
-		const Real dt0 = rdem::dampedCriticalStep(est.upper(), dashpotRate);
-		withHeaviest(start, [&](size_t b) { return Eigen::Matrix<Real, 6, 6>(dt0 * dt0 * K.diagonal(b) + 2 * dt0 * C.diagonal(b)); });
-	}
+	// an automatic step under contactLimit is at most contactDt: a root above it need not be found closer
+	const Real enough = active && contactLimit ? rdem::criticallyDampedStep(springCriticalDt) : std::numeric_limits<Real>::infinity();
 	const auto damped = rdem::dampedCriticalStepOf<Real>(
-	        normalised(K), normalised(C), n, mask, start, est.upper(), dashpotRate, lanczosMaxSteps, lanczosTolerance, 8);
+	        normalised(K), normalised(C), n, mask, start, est.upper(), dashpotRate, lanczosMaxSteps, lanczosTolerance, 8, enough);
 	dampedRounds     = damped.rounds;
 	dampedRitzVector = damped.rounds > 0 ? start : vector<Real>();
 	return damped.step;

@@ -437,6 +437,12 @@ TEST(StiffnessSpectrum, DampedStepOfIsTheRootOfTheDampedLimit)
 		EXPECT_GE(d.upper, lo * (1 - 1e-9)) << trial;
 		EXPECT_LE(amplificationRadius(K, C, d.step), 1 + 1e-9) << trial;
 		EXPECT_LE(d.rounds, 8) << trial;
+		// with `enough` below the root: a lower bound at least that, found in no more rounds
+		std::vector<double> start2;
+		const auto e = rdem::dampedCriticalStepOf<double>(applyOf(K), applyOf(C), 30, mask, start2, lambda(K), lambda(C), 60, tol, 8, 0.9 * lo);
+		EXPECT_LE(e.step, lo * (1 + 1e-9)) << trial;
+		EXPECT_GE(e.step, 0.9 * lo) << trial;
+		EXPECT_LE(e.rounds, d.rounds) << trial;
 		gained = std::max(gained, d.step / rdem::dampedCriticalStep(lambda(K), lambda(C)));
 	}
 	EXPECT_GT(gained, 1.2); // the bound is far below the root where the modes differ

@@ -80,8 +80,6 @@ namespace rdem {
 		/// Whether nothing nonzero was added (then K x = 0 for every x).
 		bool empty() const { return !anyTerm; }
 
-		/// Body b's diagonal 6×6 block of the point springs (Poisson elements and cells not included).
-		const M6& diagonal(size_t b) const { return diag[b]; }
 
 		/// Opens the pair (b1, b2) for addPointSpring (b1 ≠ b2, both ≥ 0) until endPair; springs to a fixed point need none.
 		void beginPair(long b1, long b2)
@@ -371,39 +369,6 @@ namespace rdem {
 		}
 	}
 
-	/* The unit vector (6 values per body) of the body whose mass-normalised diagonal block P S D_b S P (D_b = block(b),
-	   a 6×6 symmetric matrix) has the largest eigenvalue, along that block's eigenvector: a principal submatrix, so
-	   its eigenvalue bounds λ_max of the whole from below. Added to a warm start, it puts a new local stiff or damped
-	   spot (a block that a break or a new contact made the heaviest) into the Krylov space from the first step, where a
-	   warm start far from it would let Lanczos converge on an older mode. Empty if no block is nonzero. */
-	template <class S, class Block> std::vector<S> heaviestBlockVector(Block&& block, const std::vector<BodyScale<S>>& scale)
-	{
-		using M6                    = Eigen::Matrix<S, 6, 6>;
-		S                      best = 0;
-		size_t                 at   = 0;
-		Eigen::Matrix<S, 6, 1> vec;
-		for (size_t b = 0; b < scale.size(); ++b) {
-			M6 Sb = M6::Zero();
-			Sb.template topLeftCorner<3, 3>().diagonal().setConstant(scale[b].invSqrtMass);
-			Sb.template bottomRightCorner<3, 3>() = scale[b].invSqrtInertia;
-			for (int k = 0; k < 6; ++k)
-				if (!scale[b].free[size_t(k)]) Sb.row(k).setZero();
-			const M6 A = Sb * block(b) * Sb.transpose();
-			if (!(A.trace() > best)) continue; // the trace bounds the largest eigenvalue from above: skip lighter blocks
-			Eigen::SelfAdjointEigenSolver<M6> eig(A);
-			if (eig.eigenvalues()[5] > best) {
-				best = eig.eigenvalues()[5];
-				at   = b;
-				vec  = eig.eigenvectors().col(5);
-			}
-		}
-		if (!(best > 0)) return {};
-		std::vector<S> out(6 * scale.size(), S(0));
-		for (int k = 0; k < 6; ++k)
-			out[6 * at + size_t(k)] = vec[k];
-		return out;
-	}
-
 	/// Result of lanczosLargest: the largest Ritz value θ [1/s²], its residual norm r (an eigenvalue of A lies in
 	/// [θ - r, θ + r]), and the Lanczos steps taken.
 	template <class S> struct LargestEigenvalue {
@@ -517,7 +482,8 @@ namespace rdem {
 	   dampedCriticalStep(k, c) (vᵀB v ≤ f for every unit v), which is the next trial step (a Newton step of the convex f
 	   on v's Rayleigh quotient: converges from above). Starts from dampedCriticalStep(lambdaK, lambdaC), the bound exact
 	   when the stiffest and the most damped mode are one; stops when the bounds are within 2·tol (a Lanczos estimate
-	   within tol of λ_max cannot bracket closer) or after maxRounds. start: warm start and new Ritz vector of B. */
+	   within tol of λ_max cannot bracket closer), once the lower bound reaches `enough` (a step the caller will not
+	   exceed), or after maxRounds. start: warm start and new Ritz vector of B. */
 	template <class S, class ApplyK, class ApplyC>
 	DampedStep<S> dampedCriticalStepOf(
 	        ApplyK&&                 applyK,
@@ -529,7 +495,8 @@ namespace rdem {
 	        S                        lambdaC,
 	        int                      maxSteps,
 	        S                        tol,
-	        int                      maxRounds)
+	        int                      maxRounds,
+	        S                        enough = std::numeric_limits<S>::infinity())
 	{
 		using std::sqrt;
 		DampedStep<S> res;
@@ -548,7 +515,7 @@ namespace rdem {
                         for (size_t i = 0; i < n; ++i)
                                 y[i] = dt * dt * kx[i] + 2 * dt * cx[i];
 		};
-		while (res.rounds < maxRounds && res.step < (1 - 2 * tol) * res.upper) {
+		while (res.rounds < maxRounds && res.step < (1 - 2 * tol) * res.upper && res.step < enough) {
 			// the first round mixes in a generic vector (a new damped spot far from the old mode); later ones start from v
 			const auto est = lanczosLargest<S>(apply, n, mask, start, 2, maxSteps, tol, S(res.rounds == 0 ? 0.1 : 0));
 			res.rounds += 1;
@@ -556,13 +523,11 @@ namespace rdem {
 			const S mu = est.upper();
 			if (!(mu > 0)) break;
 			res.step = std::max(res.step, mu > 4 ? dt * 4 / mu : dt * 2 / sqrt(mu));
-			applyK(start.data(), kx.data());
-			applyC(start.data(), cx.data());
-			S k = 0, c = 0;
-			for (size_t i = 0; i < n; ++i) {
+			applyK(start.data(), kx.data()); // vᵀK̃v; vᵀC̃v from the Ritz value θ = vᵀBv = Δt²vᵀK̃v + 2Δt vᵀC̃v
+			S k = 0;
+			for (size_t i = 0; i < n; ++i)
 				k += start[i] * kx[i];
-				c += start[i] * cx[i];
-			}
+			const S c = std::max(S(0), (est.ritz - dt * dt * k) / (2 * dt));
 			res.upper = std::min(res.upper, dampedCriticalStep(k, c));
 			dt        = std::max(res.upper, res.step); // the next trial: v's root (above Δt_c), not below what is proved
 		}
