@@ -656,11 +656,11 @@ namespace {
 		const auto&  p  = *static_cast<const RdemPhys*>(I.phys.get());
 		const State& s1 = *Body::byId(I.getId1(), sc)->state;
 		const State& s2 = *Body::byId(I.getId2(), sc)->state;
-		const long   b1 = I.getId1(), b2 = I.getId2();
-		const auto   dashpots = [&](const Vector3r& point, const Vector3r& n, Real a, Real share) {
+		const long        b1 = I.getId1(), b2 = I.getId2();
+		const DashpotCaps caps(s1, s1.pos, s2, s2.pos, capDt); // the pair's terms of dashpotCap, once
+		const auto        dashpots = [&](const Vector3r& point, const Vector3r& n, Real a, Real share) {
                         const Vector2r c(p.weightNormal * p.cn * a, p.weightShear * p.cs * a);
-                        return capDt > 0 ? Vector2r(c.cwiseMin(Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(s1, s1.pos, s2, s2.pos, point, n, share, capDt)))
-			                   : c;
+                        return capDt > 0 ? Vector2r(c.cwiseMin(caps.caps(point, n, share))) : c;
 		};
 		const Vector3r normal = g.normal.squaredNorm() > 0 ? g.normal : Vector3r(s1.ori * g.segNormal1);
 		const Real     A      = g.segmentArea();

@@ -147,7 +147,7 @@ void RdemTimeStepper::assemble(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::B
 	}
 }
 
-Real RdemTimeStepper::lanczos(Scene* sc)
+Real RdemTimeStepper::lanczos(Scene* sc, bool keepStiffest)
 {
 	const size_t                  nB = sc->bodies->size();
 	rdem::BlockStiffness<Real>    K(nB), C(nB);
@@ -159,22 +159,43 @@ Real RdemTimeStepper::lanczos(Scene* sc)
 		for (size_t k = 0; k < 6; ++k)
 			mask[6 * b + k] = scale[b].free[k];
 	vector<Real> w(n);
-	const auto   largest = [&](const rdem::BlockStiffness<Real>& X, vector<Real>& start) { // λ_max of P S X S P
-                auto apply = [&](const Real* x, Real* y) {
+	const auto   normalised = [&](const rdem::BlockStiffness<Real>& X) { // y = P S X S P x
+                return [&](const Real* x, Real* y) {
                         w.assign(x, x + n);
                         rdem::scaleDofs(scale, w.data());
                         X.multiply(w.data(), y);
                         rdem::scaleDofs(scale, y);
                 };
-                // warm start mixed with 10 % of a generic vector: a new stiff spot (a contact) far from the old mode is still found
-                return rdem::lanczosLargest<Real>(apply, n, mask, start, 2, lanczosMaxSteps, lanczosTolerance, Real(0.1));
 	};
-	const auto est   = largest(K, ritzVector);
-	lanczosSteps     = est.steps;
-	lanczosResidual  = est.ritz > 0 ? est.residual / est.ritz : Real(0);
-	dashpotRate      = C.empty() ? Real(0) : largest(C, dashpotRitzVector).upper();
-	springCriticalDt = est.upper() > 0 ? 2 / math::sqrt(est.upper()) : std::numeric_limits<Real>::infinity();
-	return rdem::dampedCriticalStep(est.upper(), dashpotRate);
+	const auto largest = [&](const rdem::BlockStiffness<Real>& X, vector<Real>& start) { // λ_max of P S X S P
+		// warm start mixed with 10 % of a generic vector: a new stiff spot (a contact) far from the old mode is still found
+		return rdem::lanczosLargest<Real>(normalised(X), n, mask, start, 2, lanczosMaxSteps, lanczosTolerance, Real(0.1));
+	};
+	/* After a break (keepStiffest), K is the same: a broken segment keeps its spring as a contact spring of the same k̄A
+	   (forPointSprings), and the Poisson cells' terms only scale down with the intact fraction (releaseOnCrack); its
+	   dashpot is new. So λ_K and its Ritz vector are kept (springCriticalDt, saved), and the dashpots' part is redone. */
+	const bool keep    = keepStiffest && ritzVector.size() == n && springCriticalDt > 0 && math::isfinite(springCriticalDt);
+	const Real lambdaK = keep ? Real(4) / (springCriticalDt * springCriticalDt) : Real(0);
+	const auto est     = keep ? rdem::LargestEigenvalue<Real> { lambdaK, 0, 0 } : largest(K, ritzVector);
+	if (!keep) {
+		lanczosSteps     = est.steps;
+		lanczosResidual  = est.ritz > 0 ? est.residual / est.ritz : Real(0);
+		springCriticalDt = est.upper() > 0 ? 2 / math::sqrt(est.upper()) : std::numeric_limits<Real>::infinity();
+	}
+	dashpotRate = C.empty() ? Real(0) : largest(C, dashpotRitzVector).upper();
+	/* The root of λ_max(Δt²K̃ + 2ΔtC̃) = 4 itself, not its bound from λ_K and λ_C (exact only where the stiffest mode is the
+	   most damped), from the sum of the two Ritz vectors (the mode of the limit mixes the two; nothing more is saved). */
+	vector<Real> start(n, 0);
+	if (dashpotRate > 0)
+		for (size_t i = 0; i < n; ++i)
+			start[i] = ritzVector[i] + dashpotRitzVector[i];
+	// an automatic step under contactLimit is at most contactDt: a root above it need not be found closer
+	const Real enough = active && contactLimit ? rdem::criticallyDampedStep(springCriticalDt) : std::numeric_limits<Real>::infinity();
+	const auto damped = rdem::dampedCriticalStepOf<Real>(
+	        normalised(K), normalised(C), n, mask, start, est.upper(), dashpotRate, lanczosMaxSteps, lanczosTolerance, 8, enough);
+	dampedRounds     = damped.rounds;
+	dampedRitzVector = damped.rounds > 0 ? start : vector<Real>();
+	return damped.step;
 }
 
 vector<Real> RdemTimeStepper::springSignature(Scene* sc)
@@ -214,6 +235,12 @@ bool RdemTimeStepper::contactsPossible(Scene* sc)
 	return false;
 }
 
+bool RdemTimeStepper::onlyBreaks(const vector<Real>& signature, const vector<Real>& last)
+{
+	return !signature.empty() && signature.size() == last.size() && std::equal(signature.begin(), signature.end() - 1, last.begin())
+	        && signature.back() != last.back();
+}
+
 Real RdemTimeStepper::estimate(Scene* sc)
 {
 	springCriticalDt = std::numeric_limits<Real>::infinity();                   // set by the Lanczos estimate; the Gershgorin bound is one value
@@ -226,7 +253,12 @@ Real RdemTimeStepper::estimate(Scene* sc)
 Real RdemTimeStepper::estimatePy(const string& how)
 {
 	if (how.empty()) return estimate(Omega::instance().getScene().get());
-	if (how != "lanczos" && how != "gershgorin") throw std::invalid_argument("method = '" + how + "': must be 'lanczos' or 'gershgorin'");
+	if (how == "dashpots") { // what an update for a break alone computes
+		Scene* sc = Omega::instance().getScene().get();
+		capDt     = sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0);
+		return lanczos(sc, true);
+	}
+	if (how != "lanczos" && how != "gershgorin") throw std::invalid_argument("method = '" + how + "': must be 'lanczos', 'gershgorin' or 'dashpots'");
 	const string saved = method;
 	method             = how;
 	const Real dt      = estimate(Omega::instance().getScene().get());
@@ -299,8 +331,17 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 		throw std::invalid_argument(
 		        "O.dt = " + rdem::numberText(sc->dt) + ": the time step must be finite and > 0 [s] (or O.dt = -1 to let RdemTimeStepper choose it)");
 	const vector<Real> signature = method == "lanczos" && reuseUnchanged ? springSignature(sc) : vector<Real>();
-	if (!signature.empty() && signature == lastSignature && reused < 99 && criticalDt > 0) ++reused;
-	else {
+	const bool         young     = reused < 99 && criticalDt > 0; // a fresh estimate at least every 100 updates
+	// an update for a break alone (not one of the regular ones): what the break changes, the dashpots; K's changes since
+	// the last estimate (poses, contacts) are taken at the next regular update, as without the break
+	const bool breakOnly = sc->iter % timeStepUpdateInterval != 0 && brokenSprings(sc) != brokenAtEstimate;
+	if (young && !signature.empty() && signature == lastSignature) ++reused;
+	else if (young && !signature.empty() && (breakOnly || onlyBreaks(signature, lastSignature))) {
+		capDt         = sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0);
+		criticalDt    = lanczos(sc, true);
+		lastSignature = signature;
+		++reused;
+	} else {
 		criticalDt    = estimate(sc);
 		lastSignature = signature;
 		reused        = 0;

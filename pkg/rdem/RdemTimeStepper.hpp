@@ -25,7 +25,7 @@ public:
 	void postLoad(RdemTimeStepper&);
 	/// The estimate itself, Δt_crit [s] (2/ω_max without dashpots; no safety factor), by ``method``; inf if nothing is elastic yet.
 	Real estimate(Scene* scene);
-	/// Python: the estimate by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``).
+	/// Python: the estimate by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``, ``'dashpots'``: λ_K kept).
 	Real estimatePy(const string& method);
 	/// Python: K·x, K the linear stiffness the estimate uses (assemble), x 6 values per body (u [m], θ [rad]) [N, N·m].
 	vector<Real> stiffnessTimes(const vector<Real>& x);
@@ -36,7 +36,7 @@ public:
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemTimeStepper,TimeStepper,R"""(Time step for the refined DEM with the Poisson effect: ``O.dt = safety·Δt_crit``.
 
-YADE's :yref:`PWaveTimeStep<yade.utils.PWaveTimeStep>` ignores boxes and :yref:`GlobalStiffnessTimeStepper` assumes sphere contacts, so this stepper finds the highest eigenfrequency $\omega_{max}$ of the assembly itself; $\Delta t_{crit}=2/\omega_{max}$ (central differences) while no contact dashpot acts. The contact dashpots of eq. 13 act on the mid-step velocity and lower the limit: leapfrog is stable while $\lambda_{max}(\Delta t^2\tilde{K}+2\Delta t\tilde{C})\le 4$ ($\tilde{K}$, $\tilde{C}$ the mass-normalised stiffness and dashpots), which holds for $\Delta t_{crit}=4/(\lambda_C+\sqrt{\lambda_C^2+4\lambda_K})$, $\lambda_K=\omega_{max}^2$, $\lambda_C$ the largest eigenvalue of $\tilde{C}$ (``rdem::dampedCriticalStep``; for one oscillator $(2/\omega)(\sqrt{1+\zeta^2}-\zeta)$ [Belytschko2000]_, 0.41 of $2/\omega$ at critical damping). $\tilde{C}$ holds the dashpots of the contact samples, and of the broken segments that touch, capped as the law caps them for the current ``O.dt`` (a larger step lowers the caps); the contacts to come (``contactBound``) add their springs only.
+YADE's :yref:`PWaveTimeStep<yade.utils.PWaveTimeStep>` ignores boxes and :yref:`GlobalStiffnessTimeStepper` assumes sphere contacts, so this stepper finds the highest eigenfrequency $\omega_{max}$ of the assembly itself; $\Delta t_{crit}=2/\omega_{max}$ (central differences) while no contact dashpot acts. The contact dashpots of eq. 13 act on the mid-step velocity and lower the limit: leapfrog is stable while $\lambda_{max}(\Delta t^2\tilde{K}+2\Delta t\tilde{C})\le 4$ ($\tilde{K}$, $\tilde{C}$ the mass-normalised stiffness and dashpots). ``criticalDt`` is the root of $\lambda_{max}(\Delta t^2\tilde{K}+2\Delta t\tilde{C})=4$, found by Lanczos runs on that matrix (``rdem::dampedCriticalStepOf``, bracketed to $2\cdot$ ``lanczosTolerance``, the lower end taken) from its lower bound $4/(\lambda_C+\sqrt{\lambda_C^2+4\lambda_K})$, $\lambda_K=\omega_{max}^2$, $\lambda_C$ the largest eigenvalue of $\tilde{C}$ (``rdem::dampedCriticalStep``; for one oscillator $(2/\omega)(\sqrt{1+\zeta^2}-\zeta)$ [Belytschko2000]_, 0.41 of $2/\omega$ at critical damping), which is exact only where the stiffest mode is the most damped (MI1 at its peak: 14.48 µs against the bound's 13.65 µs). $\tilde{C}$ holds the dashpots of the contact samples, and of the broken segments that touch, capped as the law caps them for the current ``O.dt`` (a larger step lowers the caps); the contacts to come (``contactBound``) add their springs only.
 
 *Lanczos* (``method='lanczos'``, the default): $\omega_{max}^2=\lambda_{max}$ of $A=PSKSP$, $K$ the linear stiffness of the current configuration (every segment spring of a bond, every contact sample, the contacts blocks can still make with ``contactBound``, the Poisson elements and cells with the offset correction of the shear springs (:yref:`RdemPhys::offsetCorrection`), without the geometric stiffness), $S$ the inverse square root of each block's mass and rotated inertia, $P$ its free DOFs; by Lanczos iterations with full reorthogonalisation, warm-started from the last estimate's Ritz vector, until the residual of the largest Ritz value $\theta$ is below ``lanczosTolerance``·$\theta$; $\lambda_{max}\approx\theta+r$ [Parlett1998]_ [ZhouLi2011]_. Measured against the exact limit: 0.02–0.05 % below it. $\lambda_C$ the same way, from its own Ritz vector, when a dashpot acts.
 
@@ -53,23 +53,25 @@ On a distributed run (:ref:`mpy`, YADE built with ``ENABLE_MPI``) each rank esti
 		((bool,refuseUnstableDt,true,,"Refuse a fixed ``O.dt`` above the Lanczos estimate when it is first seen (see above); false: only warn (to measure instability on purpose)."))
 		((int,lanczosSteps,0,(Attr::readonly|Attr::noSave),"Lanczos steps of the last estimate."))
 		((Real,lanczosResidual,0,(Attr::readonly|Attr::noSave),"Residual $r/\\theta$ of the last Lanczos estimate."))
-		((vector<Real>,ritzVector,,(Attr::hidden|Attr::readonly),"The last estimate's Ritz vector, 6 values per body (saved: the next estimate starts from it, also after ``O.load``)."))
-		((vector<Real>,dashpotRitzVector,,(Attr::hidden|Attr::readonly),"As ``ritzVector``, of the dashpots' $\\lambda_C$."))
+		((vector<Real>,ritzVector,,Attr::readonly,"The last estimate's Ritz vector of $A$, 6 values per body id, mass-normalised (saved: the next estimate starts from it, also after ``O.load``): the stiffest mode (its motion is $S$ times it)."))
+		((vector<Real>,dashpotRitzVector,,Attr::readonly,"As ``ritzVector``, of the dashpots' $\\lambda_C$: the most damped mode."))
+		((vector<Real>,dampedRitzVector,,(Attr::readonly|Attr::noSave),"As ``ritzVector``, of $\\Delta t^2\\tilde{K}+2\\Delta t\\tilde{C}$ at the damped limit: the mode that sets ``criticalDt`` while dashpots act (empty otherwise; not saved: made from the two above)."))
+		((int,dampedRounds,0,(Attr::readonly|Attr::noSave),"Lanczos runs on $\\Delta t^2\\tilde{K}+2\\Delta t\\tilde{C}$ that found the damped limit at the last estimate (0: no dashpot acts, the limit is $2/\\omega_{max}$)."))
 		((Real,dashpotRate,0,(Attr::readonly|Attr::noSave),"$\\lambda_C$ of the last Lanczos estimate: largest eigenvalue of the mass-normalised contact dashpots [1/s]; 0 when no dashpot acts (a bonded assembly before it cracks)."))
 		((vector<Real>,lastSignature,,(Attr::hidden|Attr::readonly),"What the springs were at the last Lanczos estimate (reuseUnchanged; saved, so that a reloaded run takes the same decisions)."))
-		((int,reused,0,Attr::readonly,"Updates that kept the last Lanczos estimate since it was made (``reuseUnchanged``)."))
+		((int,reused,0,Attr::readonly,"Updates since the last estimate of $\\lambda_K$ that kept it (``reuseUnchanged``): those that kept the whole estimate, and those after a break that redid only the dashpots' part."))
 		((Real,checkedDt,0,(Attr::hidden|Attr::readonly),"The fixed ``O.dt`` last checked against the limit [s] (saved, as everything the next steps depend on: a reloaded run takes the same decisions)."))
 		((long,brokenAtEstimate,0,(Attr::hidden|Attr::readonly),"Springs broken when the last estimate was made (a break triggers a new one; saved)."))
 		((bool,contactBound,false,,"Also allow for the contacts that blocks can still make (scenes with a collider, ``rdem.engines(recontact=True)``): every free block that carries no bond gets the terms of a flush contact on each of its six faces, at its own stiffness per area (:ref:`theory §6 <rdem-theory-6>`). Without it the step follows only the contacts that exist: none for a falling block, and a step set while a corner touches is unstable once a face lands."))
 		((shared_ptr<RdemSharedState>,shared,,,"What the plugin's engines share (:yref:`RdemSharedState`: a spring that breaks triggers a new estimate; handed by ``rdem.engines()``; None: the law's, taken at the first step)."))
-		((Real,criticalDt,0,Attr::readonly,"Last estimate of the critical time step, without the safety factor [s]."))
+		((Real,criticalDt,0,Attr::readonly,"Last estimate of the critical time step, without the safety factor [s]; while dashpots act and ``contactLimit`` applies to an automatic step, a lower bound of it once that reaches ``contactDt`` (the step cannot be larger)."))
 		((bool,contactLimit,true,,"While contacts act or can form (a contact sample, a broken spring, or with ``contactBound`` a free block without bonds), keep the automatic step below the limit of a critically damped stiffest mode too: ``O.dt = safety·min(criticalDt, contactDt)`` with ``contactDt`` $=(\\sqrt{2}-1)\\,2/\\omega_{max}$ [Belytschko2000]_ (``rdem::criticallyDampedStep`` of ``springCriticalDt``). Contacts that form between two estimates bring their critical dashpots (eq. 13, $h=1$), which the estimate has not seen; on the stiffest mode they lower its limit to 0.41 of the undamped one. At 0.8 of the Lanczos limit the law's dashpot caps bind on such contacts and the contact dynamics change with the step (measured: a rocking block that no longer overturns, a dry wall that falls below its tilt limit). A bonded assembly before its first break keeps the tight step."))
 		((Real,contactDt,0,(Attr::readonly|Attr::noSave),"The limit applied by ``contactLimit`` at the last automatic step, $(\\sqrt{2}-1)$ ``springCriticalDt`` [s]; inf while no contact can act (not computed for a fixed ``O.dt``)."))
 		((Real,springCriticalDt,0,Attr::readonly,"Critical step of the springs alone, $2/\\omega_{max}$, of the last estimate [s]: a fixed ``O.dt`` above it is refused; one between ``criticalDt`` (with the contact dashpots) and it only warns."))
 		((bool,warned,false,(Attr::readonly|Attr::noSave),"Whether the too-large ``O.dt`` warning was printed (once per engine)."))
 		,
 		/* ctor */,
-		.def("estimate",&RdemTimeStepper::estimatePy,(py::arg("method")=""),"Critical time step of the current scene [s], without the safety factor, by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``).")
+		.def("estimate",&RdemTimeStepper::estimatePy,(py::arg("method")=""),"Critical time step of the current scene [s], without the safety factor, by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``; ``'dashpots'``: as an update for a break alone, with $\\lambda_K$ and its Ritz vector kept from the last estimate).")
 		.def("stiffnessTimes",&RdemTimeStepper::stiffnessTimes,(py::arg("x")),"$K\\mathbf{x}$ [N, N·m], $K$ the linear stiffness of the current configuration that the estimate uses (the sources' terms, :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` and :yref:`RdemPoissonEngine`, plus the contacts to come with ``contactBound``), $\\mathbf{x}$ 6 values per body id: displacement [m] and small rotation [rad] in global axes (tests/yade/test_stiffness_source.py checks it against the forces).")
 	);
 	// clang-format on
@@ -77,7 +79,10 @@ On a distributed run (:ref:`mpy`, YADE built with ``ENABLE_MPI``) each rank esti
 
 private:
 	Real gershgorin(Scene* scene);
-	Real lanczos(Scene* scene);
+	/// keepStiffest: take λ_K and its Ritz vector from the last estimate (springCriticalDt), redo the dashpots' λ_C and the damped limit.
+	Real lanczos(Scene* scene, bool keepStiffest = false);
+	/// Whether only broken springs differ between two spring signatures (a break changes the dashpots, not K: onlyBreaks).
+	static bool onlyBreaks(const vector<Real>& signature, const vector<Real>& last);
 	/// Refuse or warn about a fixed O.dt above the scene's limits (over all ranks of a distributed run) [s].
 	void checkFixedDt(Scene* scene, Real criticalDtAll, Real springCriticalDtAll);
 	/// The step for which the dashpots are capped as the law caps them (Law2…::dashpotCap): O.dt when the estimate

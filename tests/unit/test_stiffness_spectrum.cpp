@@ -405,4 +405,54 @@ TEST(StiffnessSpectrum, DampedStepIsALowerBoundOfTheLimitOfCoupledSystems)
 	}
 }
 
+TEST(StiffnessSpectrum, DampedStepOfIsTheRootOfTheDampedLimit)
+{
+	/* dampedCriticalStepOf against the exact root of λ_max(Δt²K + 2ΔtC) = 4 (bisected on dense eigenvalues to 1e-12) on
+	   random coupled systems where the stiffest and the most damped modes differ (C of rank 2, dashpots at a few
+	   points): not above the root (the leapfrog's amplification at it has radius ≤ 1), and within 2·tol of it (the
+	   bracket it stops on; tol = 1e-3, the stepper's lanczosTolerance); and far above the bound dampedCriticalStep on
+	   some of them. */
+	std::srand(17);
+	const double tol    = 1e-3;
+	double       gained = 1;
+	for (int trial = 0; trial < 40; ++trial) {
+		const MX   A = MX::Random(30, 30), B = MX::Random(30, 2) * (0.5 + trial % 4);
+		const MX   K = A * A.transpose(), C = B * B.transpose();
+		const auto lambda = [](const MX& X) { return Eigen::SelfAdjointEigenSolver<MX>(X, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff(); };
+		double     lo = 0, hi = 2 / std::sqrt(lambda(K));
+		while (hi - lo > 1e-12 * hi) {
+			const double mid                                    = (lo + hi) / 2;
+			(lambda(mid * mid * K + 2 * mid * C) > 4 ? hi : lo) = mid;
+		}
+		const auto applyOf = [](const MX& X) {
+			return [&X](const double* x, double* y) {
+				Eigen::Map<Eigen::VectorXd>(y, X.rows()) = X * Eigen::Map<const Eigen::VectorXd>(x, X.rows());
+			};
+		};
+		std::vector<double>     start;
+		const std::vector<char> mask(30, 1);
+		const auto              d = rdem::dampedCriticalStepOf<double>(applyOf(K), applyOf(C), 30, mask, start, lambda(K), lambda(C), 60, tol, 8);
+		EXPECT_LE(d.step, lo * (1 + 1e-9)) << trial;
+		EXPECT_GT(d.step, (1 - 2 * tol) * lo) << trial;
+		EXPECT_GE(d.upper, lo * (1 - 1e-9)) << trial;
+		EXPECT_LE(amplificationRadius(K, C, d.step), 1 + 1e-9) << trial;
+		EXPECT_LE(d.rounds, 8) << trial;
+		// with `enough` below the root: a lower bound at least that, found in no more rounds
+		std::vector<double> start2;
+		const auto e = rdem::dampedCriticalStepOf<double>(applyOf(K), applyOf(C), 30, mask, start2, lambda(K), lambda(C), 60, tol, 8, 0.9 * lo);
+		EXPECT_LE(e.step, lo * (1 + 1e-9)) << trial;
+		EXPECT_GE(e.step, 0.9 * lo) << trial;
+		EXPECT_LE(e.rounds, d.rounds) << trial;
+		gained = std::max(gained, d.step / rdem::dampedCriticalStep(lambda(K), lambda(C)));
+	}
+	EXPECT_GT(gained, 1.2); // the bound is far below the root where the modes differ
+	// no dashpots: 2/ω; no stiffness: 2/λ_C
+	std::vector<double>     start;
+	const std::vector<char> mask(1, 1);
+	const auto              none = [](const double*, double* y) { y[0] = 0; };
+	const auto              one  = [](const double* x, double* y) { y[0] = 4 * x[0]; };
+	EXPECT_DOUBLE_EQ(rdem::dampedCriticalStepOf<double>(one, none, 1, mask, start, 4.0, 0.0, 60, tol, 8).step, 1.0);
+	EXPECT_DOUBLE_EQ(rdem::dampedCriticalStepOf<double>(none, one, 1, mask, start, 0.0, 4.0, 60, tol, 8).step, 0.5);
+}
+
 } // namespace

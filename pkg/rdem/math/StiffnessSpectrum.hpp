@@ -80,6 +80,7 @@ namespace rdem {
 		/// Whether nothing nonzero was added (then K x = 0 for every x).
 		bool empty() const { return !anyTerm; }
 
+
 		/// Opens the pair (b1, b2) for addPointSpring (b1 ≠ b2, both ≥ 0) until endPair; springs to a fixed point need none.
 		void beginPair(long b1, long b2)
 		{
@@ -122,12 +123,16 @@ namespace rdem {
 			if (open.springs == 0) return; // nothing added: no block for the pair
 			/* M = Σ J(r1)ᵀK_s J(r1); with r2 = r1 - d, J(r2) = J(r1) T, T = [[I, [d]×], [0, I]], so that
 			   Σ J(r1)ᵀK_s J(r2) = M T and Σ J(r2)ᵀK_s J(r2) = Tᵀ M T. */
-			const M6 M                        = open.moments.block();
-			M6       T                        = M6::Identity();
-			T.template topRightCorner<3, 3>() = cross(open.d);
-			const M6 MT                       = M * T;
+			const M6 M = open.moments.block();
+			const M3 D = cross(open.d);
+			M6       MT; // M T, T = [[I, D], [0, I]]: by 3×3 blocks
+			MT.template leftCols<3>()             = M.template leftCols<3>();
+			MT.template topRightCorner<3, 3>()    = M.template topLeftCorner<3, 3>() * D + M.template topRightCorner<3, 3>();
+			MT.template bottomRightCorner<3, 3>() = M.template bottomLeftCorner<3, 3>() * D + M.template bottomRightCorner<3, 3>();
+			M6 TtMT                               = MT; // Tᵀ M T: Tᵀ = [[I, 0], [Dᵀ, I]]
+			TtMT.template bottomRows<3>() += D.transpose() * MT.template topRows<3>();
 			diag[size_t(open.b1)] += M;
-			diag[size_t(open.b2)] += T.transpose() * MT;
+			diag[size_t(open.b2)] += TtMT;
 			pairs.push_back({ open.b1, open.b2 });
 			offDiag.push_back(-MT);
 		}
@@ -457,6 +462,77 @@ namespace rdem {
 		using std::sqrt;
 		const S d = lambdaC + sqrt(lambdaC * lambdaC + 4 * lambdaK);
 		return d > 0 ? 4 / d : std::numeric_limits<S>::infinity();
+	}
+
+	/// Result of dampedCriticalStepOf: the step [s] (a lower bound of the root, the value to use), an upper bound of the
+	/// root [s], the rounds (Lanczos runs on Δt²K̃ + 2ΔtC̃) and their Lanczos steps in all.
+	template <class S> struct DampedStep {
+		S   step = 0, upper = 0;
+		int rounds = 0, steps = 0;
+	};
+
+	/* The critical step of leapfrog with dashpots on the mid-step velocity, Δt_c solving λ_max(B(Δt)) = 4 with
+	   B(Δt) = Δt²K̃ + 2ΔtC̃ (see dampedCriticalStep for the derivation; for K̃, C̃ symmetric positive semi-definite the
+	   amplification's eigenvalues can leave the unit circle only through -1: on |z| = 1 the quadratic eigenproblem
+	   (z - 2 + 1/z)x + Δt²K̃x + (1 - 1/z)ΔtC̃x = 0 has the imaginary part sin φ·Δt x*C̃x, zero only for z = ±1 or an
+	   undamped x). applyK, applyC: y = K̃x, y = C̃x on vectors of size n; lambdaK, lambdaC their largest eigenvalues
+	   (upper estimates) [1/s², 1/s]. f(Δt) = λ_max(B(Δt)) is increasing and convex, and for s ≥ 1 f(sΔt) ≤ s²f(Δt),
+	   for s ≤ 1 f(sΔt) ≤ s f(Δt). So one Lanczos run at Δt with upper estimate μ of f(Δt) gives the lower bound
+	   Δt·2/√μ (μ ≤ 4) or Δt·4/μ (μ > 4) of Δt_c; and its Ritz vector v, k = vᵀK̃v, c = vᵀC̃v, the upper bound
+	   dampedCriticalStep(k, c) (vᵀB v ≤ f for every unit v), which is the next trial step (a Newton step of the convex f
+	   on v's Rayleigh quotient: converges from above). Starts from dampedCriticalStep(lambdaK, lambdaC), the bound exact
+	   when the stiffest and the most damped mode are one; stops when the bounds are within 2·tol (a Lanczos estimate
+	   within tol of λ_max cannot bracket closer), once the lower bound reaches `enough` (a step the caller will not
+	   exceed), or after maxRounds. start: warm start and new Ritz vector of B. */
+	template <class S, class ApplyK, class ApplyC>
+	DampedStep<S> dampedCriticalStepOf(
+	        ApplyK&&                 applyK,
+	        ApplyC&&                 applyC,
+	        size_t                   n,
+	        const std::vector<char>& mask,
+	        std::vector<S>&          start,
+	        S                        lambdaK,
+	        S                        lambdaC,
+	        int                      maxSteps,
+	        S                        tol,
+	        int                      maxRounds,
+	        S                        enough = std::numeric_limits<S>::infinity())
+	{
+		using std::sqrt;
+		DampedStep<S> res;
+		res.step  = dampedCriticalStep(lambdaK, lambdaC);
+		res.upper = std::min(
+		        lambdaK > 0 ? 2 / sqrt(lambdaK) : std::numeric_limits<S>::infinity(), lambdaC > 0 ? 2 / lambdaC : std::numeric_limits<S>::infinity());
+		if (!(lambdaC > 0) || !(lambdaK > 0)) { // one of the two alone: the bound is the root
+			res.upper = res.step;
+			return res;
+		}
+		std::vector<S> kx(n), cx(n);
+		S              dt    = res.step;
+		const auto     apply = [&](const S* x, S* y) {
+                        applyK(x, kx.data());
+                        applyC(x, cx.data());
+                        for (size_t i = 0; i < n; ++i)
+                                y[i] = dt * dt * kx[i] + 2 * dt * cx[i];
+		};
+		while (res.rounds < maxRounds && res.step < (1 - 2 * tol) * res.upper && res.step < enough) {
+			// the first round mixes in a generic vector (a new damped spot far from the old mode); later ones start from v
+			const auto est = lanczosLargest<S>(apply, n, mask, start, 2, maxSteps, tol, S(res.rounds == 0 ? 0.1 : 0));
+			res.rounds += 1;
+			res.steps += est.steps;
+			const S mu = est.upper();
+			if (!(mu > 0)) break;
+			res.step = std::max(res.step, mu > 4 ? dt * 4 / mu : dt * 2 / sqrt(mu));
+			applyK(start.data(), kx.data()); // vᵀK̃v; vᵀC̃v from the Ritz value θ = vᵀBv = Δt²vᵀK̃v + 2Δt vᵀC̃v
+			S k = 0;
+			for (size_t i = 0; i < n; ++i)
+				k += start[i] * kx[i];
+			const S c = std::max(S(0), (est.ritz - dt * dt * k) / (2 * dt));
+			res.upper = std::min(res.upper, dampedCriticalStep(k, c));
+			dt        = std::max(res.upper, res.step); // the next trial: v's root (above Δt_c), not below what is proved
+		}
+		res.step = std::min(res.step, res.upper); // (a Lanczos run that missed the top mode could put it above)
+		return res;
 	}
 
 	/* Critical time step [s] once a critically damped dashpot (ζ = 1: eq. 13 with h = 1) acts on the stiffest mode, from
