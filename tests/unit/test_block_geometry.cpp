@@ -10,8 +10,9 @@
    boxes with half-extents of 0.2-3 m and coordinates O(1-10) m, so round-off is ~1e-16-1e-15 m; the 1e-12 m (1e-13 m
    after a rigid motion) tolerances leave a margin of ≥ 10² while being far below any geometric offset tested. */
 #include <pkg/rdem/math/BlockGeometry.hpp>
-#include <tests/unit/Scalar.hpp>
 #include <pkg/rdem/math/SegmentGrid.hpp>
+#include <tests/unit/Random.hpp>
+#include <tests/unit/Scalar.hpp>
 
 #include <gtest/gtest.h>
 
@@ -26,12 +27,12 @@ namespace {
 using rdem_test::Scalar;
 
 namespace rdem = yade::rdem;
-using V3    = rdem_test::Vector3;
-using M3    = rdem_test::Matrix3;
-using Block = rdem::OrientedBlock<Scalar>;
+using V3       = rdem_test::Vector3;
+using M3       = rdem_test::Matrix3;
+using Block    = rdem::OrientedBlock<Scalar>;
 
-constexpr Scalar gapTol   = 1e-6; // [m], the tolerance passed to findSharedFace
-constexpr Scalar angleTol = 1e-6; // |cos| ≥ 1 - 1e-6, i.e. edges aligned within ~1.4e-3 rad
+constexpr Scalar gapTol   = 1e-6;  // [m], the tolerance passed to findSharedFace
+constexpr Scalar angleTol = 1e-6;  // |cos| ≥ 1 - 1e-6, i.e. edges aligned within ~1.4e-3 rad
 constexpr Scalar geomTol  = 1e-12; // [m] round-off on O(1) coordinates (see the file header)
 
 Block cube(const V3& pos, const M3& rot = M3::Identity()) { return { pos, rot, V3(0.5, 0.5, 0.5) }; }
@@ -133,8 +134,8 @@ TEST(BlockGeometry, RotatedNeighbourWithAlignedEdges)
 	EXPECT_NEAR(std::abs(g.t1.y()) > 0.5 ? g.h2 : g.h1, 0.3, geomTol);
 	EXPECT_NEAR((g.centre - V3(0.5, 0, 0)).norm(), 0, geomTol);
 	// B rotated 180° about z (its +x axis points to -x): its +x face now looks at A.
-	const auto h = rdem::findSharedFace(cube(V3::Zero()), cube(V3(1, 0, 0), Eigen::AngleAxis<Scalar>(M_PI, V3::UnitZ()).toRotationMatrix()),
-	                                   gapTol, angleTol);
+	const auto h
+	        = rdem::findSharedFace(cube(V3::Zero()), cube(V3(1, 0, 0), Eigen::AngleAxis<Scalar>(M_PI, V3::UnitZ()).toRotationMatrix()), gapTol, angleTol);
 	ASSERT_TRUE(h.found);
 	EXPECT_EQ(h.signB, 1.0);
 	EXPECT_NEAR((h.centre - V3(0.5, 0, 0)).norm(), 0, geomTol);
@@ -156,14 +157,14 @@ TEST(BlockGeometry, ResultIsCovariantUnderARigidMotion)
 {
 	// Reference configuration: partial overlap with a non-cubic, 90°-rotated B (the harder case above), then move
 	// everything by x -> Q x + t with an arbitrary rotation Q.
-	const Block           A0 { V3::Zero(), M3::Identity(), V3(0.5, 0.5, 0.5) };
-	const Block           B0 { V3(1, 0.3, -0.1), rotX(M_PI / 2), V3(0.5, 0.3, 0.4) };
-	const M3              Q = Eigen::AngleAxis<Scalar>(1.234, V3(0.3, -0.8, 0.52).normalized()).toRotationMatrix();
-	const V3              t(10.0, -3.0, 7.5);
-	const Block           A { Q * A0.pos + t, Q * A0.rot, A0.half };
-	const Block           B { Q * B0.pos + t, Q * B0.rot, B0.half };
-	const auto            f0 = rdem::findSharedFace(A0, B0, gapTol, angleTol);
-	const auto            f  = rdem::findSharedFace(A, B, gapTol, angleTol);
+	const Block A0 { V3::Zero(), M3::Identity(), V3(0.5, 0.5, 0.5) };
+	const Block B0 { V3(1, 0.3, -0.1), rotX(M_PI / 2), V3(0.5, 0.3, 0.4) };
+	const M3    Q = Eigen::AngleAxis<Scalar>(1.234, V3(0.3, -0.8, 0.52).normalized()).toRotationMatrix();
+	const V3    t(10.0, -3.0, 7.5);
+	const Block A { Q * A0.pos + t, Q * A0.rot, A0.half };
+	const Block B { Q * B0.pos + t, Q * B0.rot, B0.half };
+	const auto  f0 = rdem::findSharedFace(A0, B0, gapTol, angleTol);
+	const auto  f  = rdem::findSharedFace(A, B, gapTol, angleTol);
 	ASSERT_TRUE(f0.found);
 	ASSERT_TRUE(f.found);
 	// Reference result by hand: y overlap [-0.5,0.5]∩[0.3-0.4, 0.3+0.4] = [-0.1, 0.5], z overlap [-0.5,0.5]∩[-0.4,0.2].
@@ -286,7 +287,7 @@ TEST(BlockGeometry, FaceMayEnterCullsOnlyFacesOutsideTheSlabs)
 	EXPECT_TRUE(rdem::faceMayEnter<Scalar>(Y, V3(1.0, 0, 0), V3(0, 1, 0), V3(0, 0, 1), 0.5, 0.5));
 	// A face tilted by 45° about z whose centre is beyond the slab but whose corner reaches into it: kept.
 	const V3 t1 = V3(1, 1, 0).normalized();
-	EXPECT_TRUE(rdem::faceMayEnter<Scalar>(Y, V3(1.5, 0, 0), t1, V3(0, 0, 1), 1.0, 0.5)); // reach along x: 0.707 > 0.5
+	EXPECT_TRUE(rdem::faceMayEnter<Scalar>(Y, V3(1.5, 0, 0), t1, V3(0, 0, 1), 1.0, 0.5));  // reach along x: 0.707 > 0.5
 	EXPECT_FALSE(rdem::faceMayEnter<Scalar>(Y, V3(1.8, 0, 0), t1, V3(0, 0, 1), 1.0, 0.5)); // 1.8 - 0.707 > 1
 }
 
@@ -297,12 +298,12 @@ TEST(BlockGeometry, FaceMayEnterNeverCullsAFaceWithAHit)
 	std::uniform_real_distribution<Scalar> u(-1, 1);
 	int                                    hits = 0;
 	for (int trial = 0; trial < 20000; ++trial) {
-		const M3    Q = Eigen::AngleAxis<Scalar>(3 * u(rng), V3(u(rng), u(rng), u(rng)).normalized()).toRotationMatrix();
-		const Block Y { V3(0, 0, 0), Q, V3(1 + 0.5 * u(rng), 1 + 0.5 * u(rng), 1 + 0.5 * u(rng)) };
-		const M3    R = Eigen::AngleAxis<Scalar>(3 * u(rng), V3(u(rng), u(rng), u(rng)).normalized()).toRotationMatrix();
-		const V3    c = 2.5 * V3(u(rng), u(rng), u(rng));
+		const M3     Q = Eigen::AngleAxis<Scalar>(3 * u(rng), V3(u(rng), u(rng), u(rng)).normalized()).toRotationMatrix();
+		const Block  Y { V3(0, 0, 0), Q, V3(1 + 0.5 * u(rng), 1 + 0.5 * u(rng), 1 + 0.5 * u(rng)) };
+		const M3     R  = Eigen::AngleAxis<Scalar>(3 * u(rng), V3(u(rng), u(rng), u(rng)).normalized()).toRotationMatrix();
+		const V3     c  = 2.5 * V3(u(rng), u(rng), u(rng));
 		const Scalar h1 = 0.6 + 0.4 * u(rng), h2 = 0.6 + 0.4 * u(rng);
-		const bool  kept = rdem::faceMayEnter(Y, c, V3(R.col(0)), V3(R.col(1)), h1, h2);
+		const bool   kept = rdem::faceMayEnter(Y, c, V3(R.col(0)), V3(R.col(1)), h1, h2);
 		for (int i = -2; i <= 2; ++i)
 			for (int j = -2; j <= 2; ++j) {
 				const V3 p = c + R.col(0) * (h1 * i / 2.0) + R.col(1) * (h2 * j / 2.0);
@@ -322,10 +323,10 @@ TEST(BlockGeometry, FaceMayEnterNeverCullsAFaceWithAHit)
 // the axis [m] (negative: a gap).
 Scalar overlapAlong(const Block& A, const Block& B, const V3& axis)
 {
-	const V3 a = axis.normalized();
+	const V3 a   = axis.normalized();
 	Scalar   loA = 1e300, hiA = -1e300, loB = 1e300, hiB = -1e300;
 	for (int v = 0; v < 8; ++v) {
-		const V3 s((v & 1) ? 1 : -1, (v & 2) ? 1 : -1, (v & 4) ? 1 : -1);
+		const V3     s((v & 1) ? 1 : -1, (v & 2) ? 1 : -1, (v & 4) ? 1 : -1);
 		const Scalar pA = (A.pos + A.rot * s.cwiseProduct(A.half)).dot(a), pB = (B.pos + B.rot * s.cwiseProduct(B.half)).dot(a);
 		loA = std::min(loA, pA);
 		hiA = std::max(hiA, pA);
@@ -340,9 +341,8 @@ bool separatedAlong(const Block& A, const Block& B, const V3& axis, Scalar tol) 
 // (std::mt19937 is fully specified; the mapping to [0, 1) is done here, so a seed gives the same blocks everywhere).
 Block randomBlock(std::mt19937& gen, Scalar spread)
 {
-	auto               uniform = [&gen](Scalar lo, Scalar hi) { return lo + (hi - lo) * (gen() / 4294967296.0); };
-	Eigen::Quaternion<Scalar> q(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-	q.normalize();
+	const auto uniform = [&gen](Scalar lo, Scalar hi) { return rdem_test::uniform(gen, lo, hi); };
+	const auto q       = rdem_test::randomQuaternion<Scalar>(gen);
 	return Block { V3(uniform(-spread, spread), uniform(-spread, spread), uniform(-spread, spread)),
 		       q.toRotationMatrix(),
 		       V3(uniform(0.2, 1), uniform(0.2, 1), uniform(0.2, 1)) };
@@ -423,7 +423,7 @@ TEST(BlockGeometry, BlocksOverlapNeedsTheEdgeAxes)
 	const Block  A   = cube(V3::Zero());
 	for (const Scalar t : { 1.3, 1.5 }) {
 		SCOPED_TRACE("t = " + std::to_string(t));
-		const Block B = cube(t * V3(1, 1, 0).normalized(), RB);
+		const Block B             = cube(t * V3(1, 1, 0).normalized(), RB);
 		bool        faceSeparated = false, edgeSeparated = false;
 		for (int i = 0; i < 3; ++i) {
 			faceSeparated |= separatedAlong(A, B, A.rot.col(i), tol) || separatedAlong(A, B, B.rot.col(i), tol);
@@ -446,7 +446,7 @@ TEST(BlockGeometry, BlocksOverlapAgreesWithAVertexBasedSeparatingAxisTest)
 	// within 1e-9 m of the threshold are skipped: the two computations round differently (~1e-15 m), so only those
 	// could legitimately disagree.
 	std::mt19937 gen(20260122);
-	const Scalar tol = 1e-3;
+	const Scalar tol         = 1e-3;
 	int          overlapping = 0, apart = 0;
 	for (int k = 0; k < 400; ++k) {
 		const Block  A = randomBlock(gen, 0.0), B = randomBlock(gen, 2.0);

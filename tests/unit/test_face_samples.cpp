@@ -12,6 +12,7 @@
    samples are made, X's axes turned into Y's frame once, the trapezoid nodes made once, the certificate's bits
    visited) leave out no sample in contact and change no number. */
 #include <pkg/rdem/math/FaceSamples.hpp>
+#include <tests/unit/Random.hpp>
 #include <tests/unit/Scalar.hpp>
 
 #include <gtest/gtest.h>
@@ -31,14 +32,9 @@ using M3       = rdem_test::Matrix3;
 using Block    = rdem::OrientedBlock<Scalar>;
 using Hit      = rdem::FaceSampleHit<Scalar>;
 
-Scalar uniform(std::mt19937& gen, Scalar lo, Scalar hi) { return lo + (hi - lo) * Scalar(gen() / 4294967296.0); }
+Scalar uniform(std::mt19937& gen, Scalar lo, Scalar hi) { return rdem_test::uniform(gen, lo, hi); }
 
-M3 randomRotation(std::mt19937& gen)
-{
-	Eigen::Quaternion<Scalar> q(uniform(gen, -1, 1), uniform(gen, -1, 1), uniform(gen, -1, 1), uniform(gen, -1, 1));
-	q.normalize();
-	return q.toRotationMatrix();
-}
+M3 randomRotation(std::mt19937& gen) { return rdem_test::randomQuaternion<Scalar>(gen).toRotationMatrix(); }
 
 /* The full test: every sample (i, j) of every face of X whose outward normal n_f has -n_f·u > 0, with its point made
    in Y's frame from that face's centre and axes (sampleDepthLocal), kept if its bit is set in near (nullptr: all). */

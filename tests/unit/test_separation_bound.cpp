@@ -9,6 +9,7 @@
    the certified slack. Coordinates are O(1) m, so round-off is ~1e-16-1e-15 m; 1e-12 m tolerances leave ≥ 10³ of
    margin while being far below the offsets tested (≥ 1e-4 m). */
 #include <pkg/rdem/math/SeparationBound.hpp>
+#include <tests/unit/Random.hpp>
 
 #include <gtest/gtest.h>
 
@@ -25,13 +26,9 @@ using Block    = rdem::OrientedBlock<double>;
 
 constexpr double tol = 1e-9; // [m] the touch tolerance passed to blocksOverlap (the functor's 1e-9 of a half-extent)
 
-double uniform(std::mt19937& gen, double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); }
+double uniform(std::mt19937& gen, double lo, double hi) { return rdem_test::uniform(gen, lo, hi); }
 
-Q randomRotation(std::mt19937& gen)
-{
-	Q q(uniform(gen, -1, 1), uniform(gen, -1, 1), uniform(gen, -1, 1), uniform(gen, -1, 1));
-	return q.normalized();
-}
+Q randomRotation(std::mt19937& gen) { return rdem_test::randomQuaternion<double>(gen); }
 
 V3 randomUnit(std::mt19937& gen)
 {
