@@ -191,8 +191,16 @@ Real RdemTimeStepper::lanczos(Scene* sc, bool keepStiffest)
 			start[i] = ritzVector[i] + dashpotRitzVector[i];
 	// an automatic step under contactLimit is at most contactDt: a root above it need not be found closer
 	const Real enough = active && contactLimit ? rdem::criticallyDampedStep(springCriticalDt) : std::numeric_limits<Real>::infinity();
-	const auto damped = rdem::dampedCriticalStepOf<Real>(
-	        normalised(K), normalised(C), n, mask, start, est.upper(), dashpotRate, lanczosMaxSteps, lanczosTolerance, 8, enough);
+	const auto both   = [&](const Real* x, Real* kx, Real* cx) { // P S K S P x and P S C S P x, S P x made once for both
+                w.assign(x, x + n);
+                rdem::scaleDofs(scale, w.data());
+                K.multiply(w.data(), kx);
+                rdem::scaleDofs(scale, kx);
+                C.multiply(w.data(), cx);
+                rdem::scaleDofs(scale, cx);
+	};
+	const auto damped = rdem::dampedCriticalStepOfBoth<Real>(
+	        both, normalised(K), n, mask, start, est.upper(), dashpotRate, lanczosMaxSteps, lanczosTolerance, 8, enough);
 	dampedRounds     = damped.rounds;
 	dampedRitzVector = damped.rounds > 0 ? start : vector<Real>();
 	return damped.step;
