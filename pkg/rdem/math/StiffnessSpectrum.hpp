@@ -72,7 +72,6 @@ namespace rdem {
 
 		explicit BlockStiffness(size_t nBodies)
 		        : diag(nBodies, M6::Zero())
-		        , diagUsed(nBodies, 0)
 		{
 		}
 
@@ -103,7 +102,6 @@ namespace rdem {
 			anyTerm = true;
 			if (b2 < 0) {
 				diag[size_t(b1)] += jtkj(kn * n * n.transpose() + ks * (M3::Identity() - n * n.transpose()), r1, r1);
-				diagUsed[size_t(b1)] = 1;
 				return;
 			}
 			if (!open.active || b1 != open.b1 || b2 != open.b2)
@@ -135,7 +133,6 @@ namespace rdem {
 			TtMT.template bottomRows<3>() += D.transpose() * MT.template topRows<3>();
 			diag[size_t(open.b1)] += M;
 			diag[size_t(open.b2)] += TtMT;
-			diagUsed[size_t(open.b1)] = diagUsed[size_t(open.b2)] = 1;
 			pairs.push_back({ open.b1, open.b2 });
 			offDiag.push_back(-MT);
 		}
@@ -183,12 +180,8 @@ namespace rdem {
 			using V6   = Eigen::Matrix<S, 6, 1>;
 			using MV6  = Eigen::Map<V6>;
 			using CMV6 = Eigen::Map<const V6>;
-			/* a body without terms of its own (most in C: an intact bond has no dashpot) has a zero block, skipped: y = +0
-			   there, where the product could give -0 (all six x < 0); a zero's sign changes no sum with a nonzero term */
 			for (size_t b = 0; b < diag.size(); ++b)
-				if (diagUsed[b]) MV6(y + 6 * b) = diag[b] * CMV6(x + 6 * b);
-				else
-					MV6(y + 6 * b).setZero();
+				MV6(y + 6 * b) = diag[b] * CMV6(x + 6 * b);
 			for (size_t p = 0; p < pairs.size(); ++p) {
 				const size_t i = size_t(pairs[p].first), j = size_t(pairs[p].second);
 				MV6(y + 6 * i) += offDiag[p] * CMV6(x + 6 * j);
@@ -303,7 +296,6 @@ namespace rdem {
 		};
 		OpenPair                 open;
 		std::vector<M6>          diag;
-		std::vector<char>        diagUsed; // per body, whether its diagonal block has a term (else zero: multiply skips it)
 		std::vector<Link>        pairs;
 		std::vector<M6>          offDiag;
 		std::vector<Element>     elements;
