@@ -10,6 +10,7 @@
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
 #include <algorithm>
+#include <cstdint>
 #include <utility>
 
 namespace yade {
@@ -20,12 +21,16 @@ namespace rdem {
 	   and come back at its end) and the collider change: a reloaded run then takes the same time steps to the last bit. */
 	inline vector<const Interaction*> interactionsInIdOrder(const Scene* scene)
 	{
-		vector<const Interaction*> out;
+		// sorted by the key (id1, id2) as one 64-bit number (ids ≥ 0, one interaction per pair: no ties), which the sort
+		// compares without reading the interactions again
+		vector<std::pair<uint64_t, const Interaction*>> keyed;
 		for (const auto& I : *scene->interactions)
-			if (I->isReal() && dynamic_cast<const RdemGeom*>(I->geom.get()) && dynamic_cast<const RdemPhys*>(I->phys.get())) out.push_back(I.get());
-		std::sort(out.begin(), out.end(), [](const Interaction* a, const Interaction* b) {
-			return std::make_pair(a->getId1(), a->getId2()) < std::make_pair(b->getId1(), b->getId2());
-		});
+			if (I->isReal() && dynamic_cast<const RdemGeom*>(I->geom.get()) && dynamic_cast<const RdemPhys*>(I->phys.get()))
+				keyed.emplace_back(uint64_t(uint32_t(I->getId1())) << 32 | uint64_t(uint32_t(I->getId2())), I.get());
+		std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+		vector<const Interaction*> out(keyed.size());
+		for (size_t i = 0; i < keyed.size(); ++i)
+			out[i] = keyed[i].second;
 		return out;
 	}
 

@@ -699,9 +699,10 @@ namespace {
 	}
 } // namespace
 
-void Law2_RdemGeom_RdemPhys_FaceSprings::addStiffness(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt)
+void Law2_RdemGeom_RdemPhys_FaceSprings::addStiffness(
+        Scene* sc, const vector<const Interaction*>& inIdOrder, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt)
 {
-	for (const Interaction* I : rdem::interactionsInIdOrder(sc)) {
+	for (const Interaction* I : inIdOrder) {
 		const auto& g = *static_cast<const RdemGeom*>(I->geom.get());
 		if (g.nSegments() == 0 && g.sampleKey.empty() && g.nPatch() == 0) continue;
 		K.beginPair(I->getId1(), I->getId2());

@@ -25,7 +25,8 @@ public:
 	/// The springs of every bond segment (its restoring spring, or the contact spring of a broken one: the same k̄A) and
 	/// contact sample, as point springs; the dashpots of broken segments that touch and of contact samples (eq. 13),
 	/// capped by dashpotCap for capDt; interactions in the order of their bodies' ids.
-	void addStiffness(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt) override;
+	void
+	addStiffness(Scene* sc, const vector<const Interaction*>& inIdOrder, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt) override;
 	/// Per point spring, 2(k_t/m + k_r/I_min) on each free body (rdem::pointSpringOmega2).
 	void addOmega2Bound(Scene* sc, vector<Real>& omega2) override;
 	/* Stability caps (c_n, c_s) of a contact dashpot at point C with normal n (explicit central differences) [N·s/m], for

@@ -264,7 +264,7 @@ void RdemPoissonEngine::addOmega2Bound(Scene* sc, vector<Real>& omega2)
 	}
 }
 
-void RdemPoissonEngine::addStiffness(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>&, Real)
+void RdemPoissonEngine::addStiffness(Scene* sc, const vector<const Interaction*>&, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>&, Real)
 {
 	if (dead) return;
 	scene = sc;

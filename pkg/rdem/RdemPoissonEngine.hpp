@@ -32,7 +32,8 @@ public:
 	/// Adds the linear stiffness of the elements (s K_p on their nodes' translations, without the corotational frame's
 	/// rotation) and of the cells to K, for RdemTimeStepper; K points to this engine's matrices until the next build.
 	/// No dashpots. Nothing while the engine is dead.
-	void addStiffness(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt) override;
+	void
+	addStiffness(Scene* sc, const vector<const Interaction*>& inIdOrder, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt) override;
 	/// omega2Bound on the bodies that are not fixed; nothing while the engine is dead.
 	void addOmega2Bound(Scene* sc, vector<Real>& omega2) override;
 	/// Number of elements (paper's hexahedra).

@@ -12,6 +12,7 @@
 namespace yade {
 
 class Scene;
+class Interaction;
 
 /* What adds to the linear stiffness of a block assembly, for RdemTimeStepper's critical step (doc/sphinx/rdemTheory.rst §6): the
    law (its springs and contact dashpots) and the Poisson engine (its elements and cells). Each gives its own terms, as
@@ -21,8 +22,11 @@ public:
 	virtual ~RdemStiffnessSource() = default;
 	/// Adds to K the linear stiffness of this source's forces at the current configuration [N/m, N·m/rad] (without
 	/// the geometric stiffness), to C its dashpots [N·s/m], capped for the step capDt as they are applied (0: no cap).
-	/// Sums in an order that does not depend on the interaction container's (O.load changes it).
-	virtual void addStiffness(Scene* scene, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt) = 0;
+	/// Sums in an order that does not depend on the interaction container's (O.load changes it): that of inIdOrder,
+	/// the scene's rdem::interactionsInIdOrder, made once by the caller for all sources.
+	virtual void
+	addStiffness(Scene* scene, const vector<const Interaction*>& inIdOrder, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt)
+	        = 0;
 	/// Adds to omega2[id], for every body that is not fixed, a Gershgorin bound of the squared eigenfrequency this
 	/// source's terms give it [1/s²].
 	virtual void addOmega2Bound(Scene* scene, vector<Real>& omega2) = 0;

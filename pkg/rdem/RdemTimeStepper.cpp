@@ -128,10 +128,15 @@ namespace {
 	}
 }
 
-void RdemTimeStepper::assemble(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, vector<rdem::BodyScale<Real>>& scale)
+void RdemTimeStepper::assemble(
+        Scene*                            sc,
+        const vector<const Interaction*>& inIdOrder,
+        rdem::BlockStiffness<Real>&       K,
+        rdem::BlockStiffness<Real>&       C,
+        vector<rdem::BodyScale<Real>>&    scale)
 {
 	for (RdemStiffnessSource* source : RdemSharedState::of(sc, shared).stiffnessSources)
-		source->addStiffness(sc, K, C, capDt); // the law's springs and dashpots, the Poisson engine's elements and cells
+		source->addStiffness(sc, inIdOrder, K, C, capDt); // the law's springs and dashpots, the Poisson engine's elements and cells
 	const size_t       nB     = sc->bodies->size();
 	const vector<char> bonded = contactBound ? bondedBodies(sc) : vector<char>();
 	scale.assign(nB, rdem::BodyScale<Real>());
@@ -147,12 +152,12 @@ void RdemTimeStepper::assemble(Scene* sc, rdem::BlockStiffness<Real>& K, rdem::B
 	}
 }
 
-Real RdemTimeStepper::lanczos(Scene* sc, bool keepStiffest)
+Real RdemTimeStepper::lanczos(Scene* sc, const vector<const Interaction*>& inIdOrder, bool keepStiffest)
 {
 	const size_t                  nB = sc->bodies->size();
 	rdem::BlockStiffness<Real>    K(nB), C(nB);
 	vector<rdem::BodyScale<Real>> scale;
-	assemble(sc, K, C, scale);
+	assemble(sc, inIdOrder, K, C, scale);
 	const size_t n = 6 * scale.size();
 	vector<char> mask(n, 0);
 	for (size_t b = 0; b < scale.size(); ++b)
@@ -191,18 +196,26 @@ Real RdemTimeStepper::lanczos(Scene* sc, bool keepStiffest)
 			start[i] = ritzVector[i] + dashpotRitzVector[i];
 	// an automatic step under contactLimit is at most contactDt: a root above it need not be found closer
 	const Real enough = active && contactLimit ? rdem::criticallyDampedStep(springCriticalDt) : std::numeric_limits<Real>::infinity();
-	const auto damped = rdem::dampedCriticalStepOf<Real>(
-	        normalised(K), normalised(C), n, mask, start, est.upper(), dashpotRate, lanczosMaxSteps, lanczosTolerance, 8, enough);
+	const auto both   = [&](const Real* x, Real* kx, Real* cx) { // P S K S P x and P S C S P x, S P x made once for both
+                w.assign(x, x + n);
+                rdem::scaleDofs(scale, w.data());
+                K.multiply(w.data(), kx);
+                rdem::scaleDofs(scale, kx);
+                C.multiply(w.data(), cx);
+                rdem::scaleDofs(scale, cx);
+	};
+	const auto damped = rdem::dampedCriticalStepOfBoth<Real>(
+	        both, normalised(K), n, mask, start, est.upper(), dashpotRate, lanczosMaxSteps, lanczosTolerance, 8, enough);
 	dampedRounds     = damped.rounds;
 	dampedRitzVector = damped.rounds > 0 ? start : vector<Real>();
 	return damped.step;
 }
 
-vector<Real> RdemTimeStepper::springSignature(Scene* sc)
+vector<Real> RdemTimeStepper::springSignature(Scene* sc, const vector<const Interaction*>& inIdOrder)
 {
 	// what K depends on besides the poses: which springs exist and how stiff they are, which DOFs are free
 	Real nReal = 0, nSegments = 0, nSamples = 0, stiffness = 0, blocked = 0, mass = 0;
-	for (const Interaction* I : rdem::interactionsInIdOrder(sc)) {
+	for (const Interaction* I : inIdOrder) {
 		const auto* g = static_cast<const RdemGeom*>(I->geom.get());
 		const auto* p = static_cast<const RdemPhys*>(I->phys.get());
 		nReal += 1;
@@ -241,27 +254,27 @@ bool RdemTimeStepper::onlyBreaks(const vector<Real>& signature, const vector<Rea
 	        && signature.back() != last.back();
 }
 
-Real RdemTimeStepper::estimate(Scene* sc)
+Real RdemTimeStepper::estimate(Scene* sc, const vector<const Interaction*>& inIdOrder)
 {
 	springCriticalDt = std::numeric_limits<Real>::infinity();                   // set by the Lanczos estimate; the Gershgorin bound is one value
 	capDt            = sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0); // the dashpots as the law caps them in this step
-	if (method != "gershgorin") return lanczos(sc);
+	if (method != "gershgorin") return lanczos(sc, inIdOrder);
 	springCriticalDt = gershgorin(sc);
 	return springCriticalDt;
 }
 
 Real RdemTimeStepper::estimatePy(const string& how)
 {
-	if (how.empty()) return estimate(Omega::instance().getScene().get());
+	Scene* sc = Omega::instance().getScene().get();
+	if (how.empty()) return estimate(sc, rdem::interactionsInIdOrder(sc));
 	if (how == "dashpots") { // what an update for a break alone computes
-		Scene* sc = Omega::instance().getScene().get();
-		capDt     = sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0);
-		return lanczos(sc, true);
+		capDt = sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0);
+		return lanczos(sc, rdem::interactionsInIdOrder(sc), true);
 	}
 	if (how != "lanczos" && how != "gershgorin") throw std::invalid_argument("method = '" + how + "': must be 'lanczos', 'gershgorin' or 'dashpots'");
 	const string saved = method;
 	method             = how;
-	const Real dt      = estimate(Omega::instance().getScene().get());
+	const Real dt      = estimate(sc, rdem::interactionsInIdOrder(sc));
 	method             = saved;
 	return dt;
 }
@@ -276,7 +289,7 @@ vector<Real> RdemTimeStepper::stiffnessTimes(const vector<Real>& x)
 		throw std::invalid_argument(
 		        "RdemTimeStepper.stiffnessTimes: x has " + std::to_string(x.size()) + " values: must have 6 per body (" + std::to_string(6 * nB) + ")");
 	capDt = sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0);
-	assemble(sc, K, C, scale);
+	assemble(sc, rdem::interactionsInIdOrder(sc), K, C, scale);
 	vector<Real> y(x.size());
 	K.multiply(x.data(), y.data());
 	return y;
@@ -330,19 +343,21 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 	if (!active && !(sc->dt > 0 && math::isfinite(sc->dt)))
 		throw std::invalid_argument(
 		        "O.dt = " + rdem::numberText(sc->dt) + ": the time step must be finite and > 0 [s] (or O.dt = -1 to let RdemTimeStepper choose it)");
-	const vector<Real> signature = method == "lanczos" && reuseUnchanged ? springSignature(sc) : vector<Real>();
-	const bool         young     = reused < 99 && criticalDt > 0; // a fresh estimate at least every 100 updates
+	// the interactions in id order, sorted once for the signature and the assembly (the same interactions in both)
+	const vector<const Interaction*> inIdOrder = method == "lanczos" ? rdem::interactionsInIdOrder(sc) : vector<const Interaction*>();
+	const vector<Real>               signature = method == "lanczos" && reuseUnchanged ? springSignature(sc, inIdOrder) : vector<Real>();
+	const bool                       young     = reused < 99 && criticalDt > 0; // a fresh estimate at least every 100 updates
 	// an update for a break alone (not one of the regular ones): what the break changes, the dashpots; K's changes since
 	// the last estimate (poses, contacts) are taken at the next regular update, as without the break
 	const bool breakOnly = sc->iter % timeStepUpdateInterval != 0 && brokenSprings(sc) != brokenAtEstimate;
 	if (young && !signature.empty() && signature == lastSignature) ++reused;
 	else if (young && !signature.empty() && (breakOnly || onlyBreaks(signature, lastSignature))) {
 		capDt         = sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0);
-		criticalDt    = lanczos(sc, true);
+		criticalDt    = lanczos(sc, inIdOrder, true);
 		lastSignature = signature;
 		++reused;
 	} else {
-		criticalDt    = estimate(sc);
+		criticalDt    = estimate(sc, inIdOrder);
 		lastSignature = signature;
 		reused        = 0;
 	}

@@ -24,15 +24,21 @@ public:
 	/// Throws std::invalid_argument (Python: ValueError) for safety outside (0, 1], an unknown method or bad Lanczos settings.
 	void postLoad(RdemTimeStepper&);
 	/// The estimate itself, Δt_crit [s] (2/ω_max without dashpots; no safety factor), by ``method``; inf if nothing is elastic yet.
-	Real estimate(Scene* scene);
+	/// inIdOrder: the scene's rdem::interactionsInIdOrder.
+	Real estimate(Scene* scene, const vector<const Interaction*>& inIdOrder);
 	/// Python: the estimate by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``, ``'dashpots'``: λ_K kept).
 	Real estimatePy(const string& method);
 	/// Python: K·x, K the linear stiffness the estimate uses (assemble), x 6 values per body (u [m], θ [rad]) [N, N·m].
 	vector<Real> stiffnessTimes(const vector<Real>& x);
 	/// The linear stiffness K of the scene and its contact dashpots C, as their sources give them (RdemStiffnessSource:
 	/// the law's springs and dashpots, the Poisson engine's elements and cells), plus the contacts that can still form
-	/// (contactBound), and each body's mass normalisation.
-	void assemble(Scene* scene, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, vector<rdem::BodyScale<Real>>& scale);
+	/// (contactBound), and each body's mass normalisation; inIdOrder: the scene's rdem::interactionsInIdOrder.
+	void assemble(
+	        Scene*                            scene,
+	        const vector<const Interaction*>& inIdOrder,
+	        rdem::BlockStiffness<Real>&       K,
+	        rdem::BlockStiffness<Real>&       C,
+	        vector<rdem::BodyScale<Real>>&    scale);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemTimeStepper,TimeStepper,R"""(Time step for the refined DEM with the Poisson effect: ``O.dt = safety·Δt_crit``.
 
@@ -80,7 +86,7 @@ On a distributed run (:ref:`mpy`, YADE built with ``ENABLE_MPI``) each rank esti
 private:
 	Real gershgorin(Scene* scene);
 	/// keepStiffest: take λ_K and its Ritz vector from the last estimate (springCriticalDt), redo the dashpots' λ_C and the damped limit.
-	Real lanczos(Scene* scene, bool keepStiffest = false);
+	Real lanczos(Scene* scene, const vector<const Interaction*>& inIdOrder, bool keepStiffest = false);
 	/// Whether only broken springs differ between two spring signatures (a break changes the dashpots, not K: onlyBreaks).
 	static bool onlyBreaks(const vector<Real>& signature, const vector<Real>& last);
 	/// Refuse or warn about a fixed O.dt above the scene's limits (over all ranks of a distributed run) [s].
@@ -90,8 +96,8 @@ private:
 	Real capDt = 0;
 	/// Whether a contact acts or can form: a contact sample, a broken spring, or (contactBound) a free block without bonds.
 	bool contactsPossible(Scene* scene);
-	/// What K depends on besides the poses (reuseUnchanged).
-	vector<Real> springSignature(Scene* scene);
+	/// What K depends on besides the poses (reuseUnchanged), from the scene's rdem::interactionsInIdOrder.
+	vector<Real> springSignature(Scene* scene, const vector<const Interaction*>& inIdOrder);
 	/// Restoring springs broken so far in the scene (RdemSharedState).
 	long brokenSprings(Scene* sc) { return RdemSharedState::of(sc, shared).brokenSprings(); }
 };

@@ -455,4 +455,65 @@ TEST(StiffnessSpectrum, DampedStepOfIsTheRootOfTheDampedLimit)
 	EXPECT_DOUBLE_EQ(rdem::dampedCriticalStepOf<double>(none, one, 1, mask, start, 0.0, 4.0, 60, tol, 8).step, 0.5);
 }
 
+TEST(StiffnessSpectrum, DampedStepOfBothIsTheSameToTheBit)
+{
+	/* RdemTimeStepper's form of the damped root: P S x made once for K and C (dampedCriticalStepOfBoth), and C with
+	   dashpots on one pair only, so that most of its diagonal blocks are zero (multiply skips them): the same step,
+	   bracket, rounds, Lanczos steps and Ritz vector, to the bit, as the two products made apart (dampedCriticalStepOf). */
+	std::vector<V3>                      centres;
+	const auto                           K = grid(3, 3, 2, 0.05, 2e8, 1e8, centres);
+	rdem::BlockStiffness<double>         C(centres.size());
+	std::vector<rdem::BodyScale<double>> scale;
+	for (size_t b = 0; b < centres.size(); ++b) // unequal masses and rotated inertias; body 4 fixed, body 7 without rz
+		scale.push_back(rdem::bodyScale<double>(
+		        2 + 0.3 * double(b),
+		        V3(1e-3, 2e-3, 1.5e-3),
+		        Eigen::AngleAxisd(0.1 * double(b), V3(1, 2, 3).normalized()).toRotationMatrix(),
+		        b == 4           ? 63u
+		                : b == 7 ? 32u
+		                         : 0u));
+	C.beginPair(0, 1);
+	C.addPointSpring(0, 1, V3(0.05, 0.02, 0.01), V3(-0.05, 0.02, 0.01), V3::UnitX(), 3e5, 1e5);
+	C.addPointSpring(0, 1, V3(0.05, -0.02, 0.01), V3(-0.05, -0.02, 0.01), V3::UnitX(), 3e5, 1e5);
+	C.endPair();
+	const size_t      n = 6 * centres.size();
+	std::vector<char> mask(n);
+	for (size_t b = 0; b < centres.size(); ++b)
+		for (size_t k = 0; k < 6; ++k)
+			mask[6 * b + k] = scale[b].free[k];
+	std::vector<double> w(n);
+	const auto          normalisedOf = [&](const rdem::BlockStiffness<double>& X) {
+                return [&](const double* x, double* y) {
+                        w.assign(x, x + n);
+                        rdem::scaleDofs(scale, w.data());
+                        X.multiply(w.data(), y);
+                        rdem::scaleDofs(scale, y);
+                };
+	};
+	const auto both = [&](const double* x, double* kx, double* cx) {
+		w.assign(x, x + n);
+		rdem::scaleDofs(scale, w.data());
+		K.multiply(w.data(), kx);
+		rdem::scaleDofs(scale, kx);
+		C.multiply(w.data(), cx);
+		rdem::scaleDofs(scale, cx);
+	};
+	std::vector<double> s0, s1, s2;
+	const auto          lk = rdem::lanczosLargest<double>(normalisedOf(K), n, mask, s0, 2, 60, 1e-3, 0.1);
+	const auto          lc = rdem::lanczosLargest<double>(normalisedOf(C), n, mask, s1, 2, 60, 1e-3, 0.1);
+	for (size_t i = 0; i < n; ++i)
+		s0[i] += s1[i];
+	s1               = s0;
+	s2               = s0;
+	const auto apart = rdem::dampedCriticalStepOf<double>(normalisedOf(K), normalisedOf(C), n, mask, s1, lk.upper(), lc.upper(), 60, 1e-3, 8);
+	const auto one   = rdem::dampedCriticalStepOfBoth<double>(both, normalisedOf(K), n, mask, s2, lk.upper(), lc.upper(), 60, 1e-3, 8);
+	EXPECT_GT(apart.rounds, 0); // the root was searched
+	EXPECT_EQ(one.step, apart.step);
+	EXPECT_EQ(one.upper, apart.upper);
+	EXPECT_EQ(one.rounds, apart.rounds);
+	EXPECT_EQ(one.steps, apart.steps);
+	EXPECT_TRUE(s1 == s2);
+	EXPECT_LT(apart.step, rdem::dampedCriticalStep(lk.upper(), 0.0)); // the dashpots lower the step
+}
+
 } // namespace

@@ -418,9 +418,10 @@ namespace rdem {
 		v /= v.norm();
 		const int                                        kMax = int(std::min<size_t>(size_t(std::max(maxSteps, 1)), n));
 		Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> Q(long(n), kMax);
-		std::vector<S>                                   alpha, beta; // the tridiagonal T_k
-		Vec                                              w = Vec::Zero(long(n)), ritzVec;
-		for (int k = 0; k < kMax; ++k) {
+		std::vector<S>                                   alpha, beta;                    // the tridiagonal T_k
+		Vec                                              w = Vec::Zero(long(n)), topVec; // T_k's eigenvector of θ
+		int                                              k = 0;
+		for (; k < kMax; ++k) {
 			Q.col(k) = v;
 			apply(v.data(), w.data());
 			alpha.push_back(v.dot(w));
@@ -439,12 +440,13 @@ namespace rdem {
 			res.ritz             = eig.eigenvalues()[top];
 			res.residual         = b * abs(eig.eigenvectors()(k, top));
 			res.steps            = k + 1;
-			ritzVec              = Q.leftCols(k + 1) * eig.eigenvectors().col(top);
+			topVec               = eig.eigenvectors().col(top);
 			const bool converged = res.residual <= tol * res.ritz && k + 1 >= minSteps;
 			if (converged || b <= S(1e-14) * std::max(res.ritz, S(1e-300))) break; // converged, or an invariant subspace
 			beta.push_back(b);
 			v = w / b;
 		}
+		const Vec ritzVec = Q.leftCols(std::min(k + 1, kMax)) * topVec; // the Ritz vector of the last step, made once
 		start.assign(ritzVec.data(), ritzVec.data() + n);
 		return res;
 	}
@@ -483,11 +485,13 @@ namespace rdem {
 	   on v's Rayleigh quotient: converges from above). Starts from dampedCriticalStep(lambdaK, lambdaC), the bound exact
 	   when the stiffest and the most damped mode are one; stops when the bounds are within 2·tol (a Lanczos estimate
 	   within tol of λ_max cannot bracket closer), once the lower bound reaches `enough` (a step the caller will not
-	   exceed), or after maxRounds. start: warm start and new Ritz vector of B. */
-	template <class S, class ApplyK, class ApplyC>
-	DampedStep<S> dampedCriticalStepOf(
+	   exceed), or after maxRounds. start: warm start and new Ritz vector of B.
+	   applyBoth(x, kx, cx): both products of one x (kx = K̃x, cx = C̃x; a caller may share work between them, such as the
+	   mass normalisation of x); applyK(x, kx) alone. dampedCriticalStepOf below takes the two products apart. */
+	template <class S, class ApplyBoth, class ApplyK>
+	DampedStep<S> dampedCriticalStepOfBoth(
+	        ApplyBoth&&              applyBoth,
 	        ApplyK&&                 applyK,
-	        ApplyC&&                 applyC,
 	        size_t                   n,
 	        const std::vector<char>& mask,
 	        std::vector<S>&          start,
@@ -510,10 +514,10 @@ namespace rdem {
 		std::vector<S> kx(n), cx(n);
 		S              dt    = res.step;
 		const auto     apply = [&](const S* x, S* y) {
-                        applyK(x, kx.data());
-                        applyC(x, cx.data());
+                        applyBoth(x, kx.data(), cx.data());
+                        const S dt2 = dt * dt, twoDt = 2 * dt; // once, not per i (y could alias dt for the compiler)
                         for (size_t i = 0; i < n; ++i)
-                                y[i] = dt * dt * kx[i] + 2 * dt * cx[i];
+                                y[i] = dt2 * kx[i] + twoDt * cx[i];
 		};
 		while (res.rounds < maxRounds && res.step < (1 - 2 * tol) * res.upper && res.step < enough) {
 			// the first round mixes in a generic vector (a new damped spot far from the old mode); later ones start from v
@@ -533,6 +537,38 @@ namespace rdem {
 		}
 		res.step = std::min(res.step, res.upper); // (a Lanczos run that missed the top mode could put it above)
 		return res;
+	}
+
+	/// dampedCriticalStepOfBoth with the two products apart: applyK(x, y): y = K̃x, applyC(x, y): y = C̃x.
+	template <class S, class ApplyK, class ApplyC>
+	DampedStep<S> dampedCriticalStepOf(
+	        ApplyK&&                 applyK,
+	        ApplyC&&                 applyC,
+	        size_t                   n,
+	        const std::vector<char>& mask,
+	        std::vector<S>&          start,
+	        S                        lambdaK,
+	        S                        lambdaC,
+	        int                      maxSteps,
+	        S                        tol,
+	        int                      maxRounds,
+	        S                        enough = std::numeric_limits<S>::infinity())
+	{
+		return dampedCriticalStepOfBoth<S>(
+		        [&](const S* x, S* kx, S* cx) {
+			        applyK(x, kx);
+			        applyC(x, cx);
+		        },
+		        applyK,
+		        n,
+		        mask,
+		        start,
+		        lambdaK,
+		        lambdaC,
+		        maxSteps,
+		        tol,
+		        maxRounds,
+		        enough);
 	}
 
 	/* Critical time step [s] once a critically damped dashpot (ζ = 1: eq. 13 with h = 1) acts on the stiffest mode, from
