@@ -256,21 +256,24 @@ bool RdemTimeStepper::onlyBreaks(const vector<Real>& signature, const vector<Rea
 
 Real RdemTimeStepper::estimate(Scene* sc, const vector<const Interaction*>& inIdOrder)
 {
-	springCriticalDt = std::numeric_limits<Real>::infinity();                   // set by the Lanczos estimate; the Gershgorin bound is one value
-	capDt            = sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0); // the dashpots as the law caps them in this step
+	springCriticalDt = std::numeric_limits<Real>::infinity(); // set by the Lanczos estimate; the Gershgorin bound is one value
+	capDt            = capStep(sc);
 	if (method != "gershgorin") return lanczos(sc, inIdOrder);
 	springCriticalDt = gershgorin(sc);
 	return springCriticalDt;
+}
+
+Real RdemTimeStepper::estimateDashpots(Scene* sc, const vector<const Interaction*>& inIdOrder)
+{
+	capDt = capStep(sc);
+	return lanczos(sc, inIdOrder, true);
 }
 
 Real RdemTimeStepper::estimatePy(const string& how)
 {
 	Scene* sc = Omega::instance().getScene().get();
 	if (how.empty()) return estimate(sc, rdem::interactionsInIdOrder(sc));
-	if (how == "dashpots") { // what an update for a break alone computes
-		capDt = sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0);
-		return lanczos(sc, rdem::interactionsInIdOrder(sc), true);
-	}
+	if (how == "dashpots") return estimateDashpots(sc, rdem::interactionsInIdOrder(sc)); // what an update for a break alone computes
 	if (how != "lanczos" && how != "gershgorin") throw std::invalid_argument("method = '" + how + "': must be 'lanczos', 'gershgorin' or 'dashpots'");
 	const string saved = method;
 	method             = how;
@@ -288,7 +291,7 @@ vector<Real> RdemTimeStepper::stiffnessTimes(const vector<Real>& x)
 	if (x.size() != 6 * nB)
 		throw std::invalid_argument(
 		        "RdemTimeStepper.stiffnessTimes: x has " + std::to_string(x.size()) + " values: must have 6 per body (" + std::to_string(6 * nB) + ")");
-	capDt = sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0);
+	capDt = capStep(sc);
 	assemble(sc, rdem::interactionsInIdOrder(sc), K, C, scale);
 	vector<Real> y(x.size());
 	K.multiply(x.data(), y.data());
@@ -352,8 +355,7 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 	const bool breakOnly = sc->iter % timeStepUpdateInterval != 0 && brokenSprings(sc) != brokenAtEstimate;
 	if (young && !signature.empty() && signature == lastSignature) ++reused;
 	else if (young && !signature.empty() && (breakOnly || onlyBreaks(signature, lastSignature))) {
-		capDt         = sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0);
-		criticalDt    = lanczos(sc, inIdOrder, true);
+		criticalDt    = estimateDashpots(sc, inIdOrder);
 		lastSignature = signature;
 		++reused;
 	} else {

@@ -94,6 +94,10 @@ private:
 	/// The step for which the dashpots are capped as the law caps them (Law2…::dashpotCap): O.dt when the estimate
 	/// is made, 0 (no cap) if O.dt is not yet set [s]. A step chosen larger than it lowers the caps, so the estimate holds.
 	Real capDt = 0;
+	/// The step the law caps the dashpots for in this step: O.dt, or 0 (no cap) before a step is set [s].
+	static Real capStep(const Scene* sc) { return sc->dt > 0 && math::isfinite(sc->dt) ? sc->dt : Real(0); }
+	/// An update for a break alone: λ_K and its Ritz vector kept, the dashpots' part redone (lanczos with keepStiffest).
+	Real estimateDashpots(Scene* scene, const vector<const Interaction*>& inIdOrder);
 	/// Whether a contact acts or can form: a contact sample, a broken spring, or (contactBound) a free block without bonds.
 	bool contactsPossible(Scene* scene);
 	/// What K depends on besides the poses (reuseUnchanged), from the scene's rdem::interactionsInIdOrder.
