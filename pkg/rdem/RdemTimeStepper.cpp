@@ -355,8 +355,9 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 	const bool breakOnly = sc->iter % timeStepUpdateInterval != 0 && brokenSprings(sc) != brokenAtEstimate;
 	if (young && !signature.empty() && signature == lastSignature) ++reused;
 	else if (young && !signature.empty() && (breakOnly || onlyBreaks(signature, lastSignature))) {
-		criticalDt    = estimateDashpots(sc, inIdOrder);
-		lastSignature = signature;
+		criticalDt = estimateDashpots(sc, inIdOrder);
+		// K's changes besides the breaks stay visible to the next regular update, which then estimates afresh
+		if (onlyBreaks(signature, lastSignature)) lastSignature = signature;
 		++reused;
 	} else {
 		criticalDt    = estimate(sc, inIdOrder);
