@@ -87,7 +87,7 @@ public:
 		((Vector3r,segHalf1v,Vector3r::Zero(),,"Half-size vector $h_2\\mathbf{t}_2$ along the second axis $\\mathbf{t}_2=\\mathbf{n}_1\\times\\mathbf{t}_1$ ($\\mathbf{n}_1$ = ``segNormal1``), in body-1 frame [m]."))
 		((Vector3r,segHalf2u,Vector3r::Zero(),,"``segHalf1u`` in body-2 frame [m]."))
 		((Vector3r,segHalf2v,Vector3r::Zero(),,"``segHalf1v`` in body-2 frame [m]."))
-		((Vector3r,normal,Vector3r::Zero(),(Attr::noSave|Attr::readonly),"Unit normal of the bonded face in this step, from body 1 to body 2 (global): $(\\mathbf{R}_1\\mathbf{n}_1-\\mathbf{R}_2\\mathbf{n}_2)/|\\ldots|$ with ``segNormal1``, ``segNormal2`` turned by the blocks' rotations; zero until the geometry functor has run."))
+		((Vector3r,normal,Vector3r::Zero(),Attr::readonly,"Unit normal of the bonded face in this step, from body 1 to body 2 (global): $(\\mathbf{R}_1\\mathbf{n}_1-\\mathbf{R}_2\\mathbf{n}_2)/|\\ldots|$ with ``segNormal1``, ``segNormal2`` turned by the blocks' rotations; zero until the geometry functor has run (saved, as the contact samples: what :yref:`RdemTimeStepper` reads of the last step)."))
 		((vector<Real>,patch,,,"The springs of a face-to-face contact patch, 7 numbers each (``rdem::PatchSprings``): material point in body-1 frame, relative to the centroid (3) [m], the matching point on body 2's face in body-2 frame (3) [m], tributary area [m²]; empty for a bond or a sampled contact. Python: ``patchPoint1``, ``patchPoint2``, ``patchAreas``."))
 		((Real,patchArea,0,,"Area of the face-to-face contact patch, the intersection of the two faces in body 1's face plane (shoelace formula) [m²]; 0: no patch."))
 		((Vector3r,patchRelPos,Vector3r::Zero(),,"Centroid of body 2 in body 1's frame when the patch was derived, $\\mathbf{R}_1^T(\\mathbf{x}_2-\\mathbf{x}_1)$ [m]."))
@@ -97,12 +97,12 @@ public:
 		((Real,ell1,0,,"Distance from the centroid of body 1 to the bonded (or first contacted) face, $\\ell_A$ of eq. 12 [m]."))
 		((Real,ell2,0,,"Distance from the centroid of body 2 to its face, $\\ell_B$ of eq. 12 [m]."))
 		((shared_ptr<RdemJoint>,joint,,,"The joint of a bond made with a mortar joint (:yref:`Ig2_RdemBlock_RdemBlock_RdemGeom::joint`), or None: blocks bonded directly (eq. 12)."))
-		((vector<int>,sampleKey,,(Attr::noSave|Attr::readonly),"Per active contact sample: which sample it is (a stable index, for the shear history)."))
-		((vector<Vector3r>,samplePoint,,(Attr::noSave|Attr::readonly),"Per active contact sample: contact point (global) [m]."))
-		((vector<Vector3r>,sampleNormal,,(Attr::noSave|Attr::readonly),"Per active contact sample: unit normal from body 1 to body 2 (global)."))
-		((vector<Vector3r>,sampleVel,,(Attr::noSave|Attr::readonly),"Per active contact sample: velocity of body 2 relative to body 1 at the point [m/s]."))
-		((vector<Real>,sampleDepth,,(Attr::noSave|Attr::readonly),"Per active contact sample: penetration depth (>0) [m]."))
-		((vector<Real>,sampleArea,,(Attr::noSave|Attr::readonly),"Per active contact sample: tributary area, trapezoid weight times the cosine between the sampled face and the contact normal, halved because both blocks are sampled [m²]."))
+		((vector<int>,sampleKey,,Attr::readonly,"Per active contact sample: which sample it is (a stable index, for the shear history). The samples of the last step are saved with the scene, so that :yref:`RdemTimeStepper.estimate` right after ``O.load`` sees the contacts it saw before ``O.save``."))
+		((vector<Vector3r>,samplePoint,,Attr::readonly,"Per active contact sample: contact point (global) [m]."))
+		((vector<Vector3r>,sampleNormal,,Attr::readonly,"Per active contact sample: unit normal from body 1 to body 2 (global)."))
+		((vector<Vector3r>,sampleVel,,Attr::readonly,"Per active contact sample: velocity of body 2 relative to body 1 at the point [m/s]."))
+		((vector<Real>,sampleDepth,,Attr::readonly,"Per active contact sample: penetration depth (>0) [m]."))
+		((vector<Real>,sampleArea,,Attr::readonly,"Per active contact sample: tributary area, trapezoid weight times the cosine between the sampled face and the contact normal, halved because both blocks are sampled [m²]."))
 		,
 		/* ctor */ createIndex();
 		,
