@@ -115,8 +115,8 @@ class SaveLoad(unittest.TestCase):
 			self.assertTrue(rdem.timeStepper().active)
 
 	def testAutomaticTimeStepSavedBeforeAnUpdate(self):
-		# Saved where the stepper updates at the next step, a regular update or one for a break: the update reads the
-		# contact samples and the bonds' normals of the last step, which the reloaded scene must hold as well.
+		# Saved where the stepper updates at the next step, a regular update or one for a break: both runs make the same
+		# update (RdemTimeStepper runs after the InteractionLoop, on the contacts of the step being made).
 		for saveAt in ('interval', 'break'):
 			self.roundTrip('paper', '.yade.gz', dt=None, saveAt=saveAt)
 
