@@ -19,6 +19,7 @@
 #include <pkg/rdem/RdemTimeStepper.hpp>
 #include <pkg/rdem/math/ContactBound.hpp>
 #include <pkg/rdem/math/Elasticity.hpp>
+#include <pkg/rdem/math/StepperUpdate.hpp>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -248,12 +249,6 @@ bool RdemTimeStepper::contactsPossible(Scene* sc)
 	return false;
 }
 
-bool RdemTimeStepper::onlyBreaks(const vector<Real>& signature, const vector<Real>& last)
-{
-	return !signature.empty() && signature.size() == last.size() && std::equal(signature.begin(), signature.end() - 1, last.begin())
-	        && signature.back() != last.back();
-}
-
 Real RdemTimeStepper::estimate(Scene* sc, const vector<const Interaction*>& inIdOrder)
 {
 	springCriticalDt = std::numeric_limits<Real>::infinity(); // set by the Lanczos estimate; the Gershgorin bound is one value
@@ -352,18 +347,16 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 	const bool                       young     = reused < 99 && criticalDt > 0; // a fresh estimate at least every 100 updates
 	// an update for a break alone (not one of the regular ones): what the break changes, the dashpots; K's changes since
 	// the last estimate (poses, contacts) are taken at the next regular update, as without the break
-	const bool breakOnly = sc->iter % timeStepUpdateInterval != 0 && brokenSprings(sc) != brokenAtEstimate;
-	if (young && !signature.empty() && signature == lastSignature) ++reused;
-	else if (young && !signature.empty() && (breakOnly || onlyBreaks(signature, lastSignature))) {
-		criticalDt = estimateDashpots(sc, inIdOrder);
-		// K's changes besides the breaks stay visible to the next regular update, which then estimates afresh
-		if (onlyBreaks(signature, lastSignature)) lastSignature = signature;
-		++reused;
+	const bool                  breakOnly = sc->iter % timeStepUpdateInterval != 0 && brokenSprings(sc) != brokenAtEstimate;
+	const rdem::StepperDecision decision  = rdem::stepperDecision(young, signature, lastSignature, breakOnly);
+	if (decision.what == rdem::StepperUpdate::Fresh) {
+		criticalDt = estimate(sc, inIdOrder);
+		reused     = 0;
 	} else {
-		criticalDt    = estimate(sc, inIdOrder);
-		lastSignature = signature;
-		reused        = 0;
+		if (decision.what == rdem::StepperUpdate::Dashpots) criticalDt = estimateDashpots(sc, inIdOrder);
+		++reused;
 	}
+	if (decision.recordSignature) lastSignature = signature;
 	brokenAtEstimate = brokenSprings(sc);
 	const Real inf   = std::numeric_limits<Real>::infinity();
 	const bool step  = active && math::isfinite(criticalDt); // this rank sets a step (not computed for a fixed O.dt)
