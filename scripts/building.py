@@ -25,15 +25,22 @@ How to run
     build/bin/yade -n scripts/building.py --pga 0.6 --duration 4
     build/bin/yade -n scripts/building.py --big --duration 0.02   a short run of the two-storey house: cost per simulated second
     build/bin/yade -n -j 2 scripts/building.py ...                  on two threads
+    build/bin/yade -n scripts/building.py --big --duration 4 --checkpoint-every 0.05
+    build/bin/yade -n scripts/building.py --big --duration 4 --resume   continues from the last checkpoint in --out
     build/bin/yade -n scripts/building.py --help
 
 Outputs (in --out, default output/building): results.json, history.txt (yade.plot), drift-<wall>.png and
-damage-<wall>.png per wall, energy.png, frames/frame-NNNN.png and collapse.gif (the animation), ParaView files in vtk/.
+damage-<wall>.png per wall, energy.png, frames/frame-NNNN.png and collapse.gif (the animation), ParaView files in vtk/;
+with --checkpoint-every, checkpoint.yade.gz (the scene, O.save) and checkpoint.pickle (what this script follows: the
+history, the reference positions, the outputs written so far), rewritten at every checkpoint and at the end. A run
+resumed from them (--resume, the same options; --duration may be longer) continues exactly as the uninterrupted run:
+the same steps, history and damage (tests/yade/test_building_resume.py).
 """
 import argparse
 import json
 import math
 import os
+import pickle
 import sys
 import time
 
@@ -61,12 +68,20 @@ r.add_argument('--settle', type=float, default=0.02, help='settling time under g
 r.add_argument('--out', default='output/building', help='output folder (default output/building)')
 r.add_argument('--frames', type=int, default=40, help='animation frames over the motion (default 40; 0 = none)')
 r.add_argument('--vtk-every', type=float, default=0.05, help='ParaView output every this time [s] (default 0.05; 0 = none)')
+r.add_argument('--checkpoint-every', type=float, default=0.0,
+               help='save the run every this much ground motion [s] and at its end, into --out (default 0: never); see --resume')
+r.add_argument('--resume', action='store_true', help='continue the run saved in --out by --checkpoint-every, with the same options (--duration may be '
+               'longer), exactly as the uninterrupted run')
 cli = parser.parse_args(sys.argv[1:])
 for name in ('pga', 'duration', 'settle', 'record_dt'):
 	if not getattr(cli, name) > 0:
 		sys.exit('--%s = %g: must be > 0' % (name.replace('_', '-'), getattr(cli, name)))
-if cli.start < 0 or cli.frames < 0 or cli.vtk_every < 0:
-	sys.exit('--start, --frames and --vtk-every must be >= 0')
+if cli.start < 0 or cli.frames < 0 or cli.vtk_every < 0 or cli.checkpoint_every < 0:
+	sys.exit('--start, --frames, --vtk-every and --checkpoint-every must be >= 0')
+CHECKPOINT, FOLLOWED = os.path.join(cli.out, 'checkpoint.yade.gz'), os.path.join(cli.out, 'checkpoint.pickle')
+RESUMABLE = ('duration', 'checkpoint_every', 'resume')  # the options a resumed run may change
+if cli.resume and not (os.path.exists(CHECKPOINT) and os.path.exists(FOLLOWED)):
+	sys.exit('--resume: no checkpoint in --out = %s (checkpoint.yade.gz and checkpoint.pickle, written by --checkpoint-every)' % cli.out)
 from yade.rdem.build import mpiProcesses
 if mpiProcesses() > 1:
 	sys.exit('building: cannot run on YADE\'s MPI (yade.mpy) yet; this process is one of %d that mpiexec launched. Missing: (1) the '
@@ -152,21 +167,34 @@ rdem.poissonEngine().elements = 'cells'
 rdem.poissonEngine().build(b.bonded())
 O.dt = -1
 buildSeconds = time.time() - wall0
-print('building: %r, built in %.1f s; settling %.3g s under gravity' % (b, buildSeconds, cli.settle), flush=True)
-newton = rdem.newtonIntegrator()
-while O.time < cli.settle:
-	rdem.run(100)
-settleReaction = -sum(O.forces.f(i)[2] for i in b.base) / b.weight()  # the base's upward reaction over the weight
-newton.damping = 0.0
-shaker = rdem.earthquake.shaker(motion, ids=b.base)
-shaker.times = [x + O.time for x in shaker.times]  # the motion starts now
-settleBreaks = sum(rdem.breakCounts())
-O.trackEnergy = True
-snapshot = rdem.bondSnapshot()
-rdem.run(1)  # the energies exist from here on (the springs' elastic energy, a current value, appears at once)
-t0, step0 = O.time, O.iter
-ref = {i: Vector3(O.bodies[i].state.pos) for i in b.ids}
-base0 = Vector3(O.bodies[b.base[0]].state.pos)
+print('building: %r, built in %.1f s; %s' % (b, buildSeconds, 'resuming from %s' % CHECKPOINT if cli.resume else 'settling %.3g s under gravity' % cli.settle),
+      flush=True)
+if cli.resume:
+	# the same options build the same house, with the same ids; the scene is then the saved one
+	with open(FOLLOWED, 'rb') as f:
+		followed = pickle.load(f)
+	changed = [k for k, v in followed['options'].items() if k not in RESUMABLE and getattr(cli, k) != v]
+	if changed:
+		sys.exit('--resume: the run in %s was made with other options: %s' % (cli.out, ', '.join('--%s %s (now %s)' % (k.replace('_', '-'), followed['options'][k], getattr(cli, k))
+		                                                                                         for k in changed)))
+	O.load(CHECKPOINT)
+	shaker = O.labeledEngine('groundShaker')
+	settleReaction, settleBreaks, snapshot, t0, step0, ref, base0 = (followed[k] for k in ('settleReaction', 'settleBreaks', 'snapshot', 't0', 'step0', 'ref', 'base0'))
+else:
+	newton = rdem.newtonIntegrator()
+	while O.time < cli.settle:
+		rdem.run(100)
+	settleReaction = -sum(O.forces.f(i)[2] for i in b.base) / b.weight()  # the base's upward reaction over the weight
+	newton.damping = 0.0
+	shaker = rdem.earthquake.shaker(motion, ids=b.base)
+	shaker.times = [x + O.time for x in shaker.times]  # the motion starts now
+	settleBreaks = sum(rdem.breakCounts())
+	O.trackEnergy = True
+	snapshot = rdem.bondSnapshot()
+	rdem.run(1)  # the energies exist from here on (the springs' elastic energy, a current value, appears at once)
+	t0, step0 = O.time, O.iter
+	ref = {i: Vector3(O.bodies[i].state.pos) for i in b.ids}
+	base0 = Vector3(O.bodies[b.base[0]].state.pos)
 print('building: settled (base reaction %.5f of the weight, %d springs broken); %s, PGA %.3g g along x%s, %.3g s from t = %.3g s of the record; step %.3g s' %
       (settleReaction, settleBreaks, records['x'].name, cli.pga, ''.join(', %s %.3g g' % (a, r.pga / G) for a, r in records.items() if a != 'x'), cli.duration, start,
        O.dt), flush=True)
@@ -230,14 +258,36 @@ def frame(n):
 	plt.close(fig)
 
 
+
+
+def checkpoint():
+	"""The scene (O.save) and what this script follows, each written whole before it replaces the last."""
+	O.save(CHECKPOINT + '.new.yade.gz')
+	with open(FOLLOWED + '.new', 'wb') as f:
+		pickle.dump(dict(options=vars(cli), settleReaction=settleReaction, settleBreaks=settleBreaks, snapshot=snapshot, t0=t0, step0=step0, ref=ref,
+		                 base0=base0, history=dict(plot.data), cracks=cracks, vtkNext=vtkNext, frameNext=frameNext, nFrame=nFrame, checkpointNext=checkpointNext,
+		                 runSeconds=runSecondsBefore + time.time() - runStart), f)
+	os.replace(CHECKPOINT + '.new.yade.gz', CHECKPOINT)
+	os.replace(FOLLOWED + '.new', FOLLOWED)
+
+
 # 4. Run -------------------------------------------------------------------------------------------------------------
-lastReport, vtkNext, frameNext, nFrame = time.time(), 0.0, 0.0, 0
-cracks = rdem.CrackExport(os.path.join(cli.out, 'vtk', ''))
-runStart = time.time()
-record()
+lastReport, runStart = time.time(), time.time()
+if cli.resume:
+	plot.data.update(followed['history'])
+	cracks, vtkNext, frameNext, nFrame, checkpointNext, runSecondsBefore = (followed[k] for k in ('cracks', 'vtkNext', 'frameNext', 'nFrame', 'checkpointNext', 'runSeconds'))
+	checkpointNext = min(checkpointNext, O.time - t0 + cli.checkpoint_every) if cli.checkpoint_every > 0 else float('inf')
+else:
+	vtkNext, frameNext, nFrame, runSecondsBefore = 0.0, 0.0, 0, 0.0
+	checkpointNext = cli.checkpoint_every if cli.checkpoint_every > 0 else float('inf')
+	cracks = rdem.CrackExport(os.path.join(cli.out, 'vtk', ''))
+	record()
 while O.time - t0 < cli.duration:
 	rdem.run(50)
 	record()
+	if O.time - t0 >= checkpointNext:
+		checkpointNext += cli.checkpoint_every
+		checkpoint()
 	if cli.vtk_every > 0 and O.time - t0 >= vtkNext:
 		VTKRecorder(fileName=os.path.join(cli.out, 'vtk', 'blocks.'), recorders=['boxes'])()
 		cracks.write()
@@ -251,7 +301,9 @@ while O.time - t0 < cli.duration:
 		print('t = %.3f of %.3g s, broken springs %d, largest out-of-plane drift %.4f m, %.0f s so far' %
 		      (O.time - t0, cli.duration, history['breaks'][-1], max(abs(history[k][-1]) for k in history if k.startswith('oop_')), lastReport - runStart),
 		      flush=True)
-runSeconds = time.time() - runStart
+if cli.checkpoint_every > 0:
+	checkpoint()  # the end: a longer --duration --resume continues from here
+runSeconds = runSecondsBefore + time.time() - runStart
 cracks.close()
 plot.saveDataTxt(os.path.join(cli.out, 'history.txt'))
 
