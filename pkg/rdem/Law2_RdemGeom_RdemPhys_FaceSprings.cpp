@@ -577,7 +577,16 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	if (breaks.shear) shared->shearBreaks += breaks.shear;
 	// Booked also for a bond released in this step: the elastic energy its last segments released as they broke
 	// (rdemBondBreak) and a softening spring's last fracture work were lost from the balance with the interaction.
-	if (pair.trackEnergy) bookEnergies(shareOf(e, rdem::energyShare(*scene, *Body::byId(I->getId1(), scene), *Body::byId(I->getId2(), scene))));
+	if (pair.trackEnergy) {
+		const Energies mine = shareOf(e, rdem::energyShare(*scene, *Body::byId(I->getId1(), scene), *Body::byId(I->getId2(), scene)));
+		if (!(deferForces && shared->deferredForces)) shared->bookSpringEnergies(scene, mine);
+		else if (!keep)
+			shared->releaseEnergies(I->getId1(), I->getId2(), mine);
+		else {
+			p.stepEnergies = mine; // for RdemForceAssembler, which books them in a fixed order
+			p.energyIter   = scene->iter;
+		}
+	}
 	if (!keep) {
 		if (deferForces) shared->activeSetChanges += 1;
 		if (g.bonded) recordRelease(*I, g, p);
@@ -621,25 +630,6 @@ boost::python::list Law2_RdemGeom_RdemPhys_FaceSprings::releasedBondsPy()
 	return out;
 }
 
-void Law2_RdemGeom_RdemPhys_FaceSprings::bookEnergies(const rdem::SpringEnergies<Real>& e)
-{
-	/* Once an energy has its index, a zero adds nothing and is not booked; the names are made once, not at every call
-	   (a std::string per energy and interaction was 9 % of a step of the MI1 wall, measured by scripts/profile_step.py). */
-	static const std::string elastic("rdemElastic"), dashpot("rdemDashpot"), friction("rdemFriction"), bondBreak("rdemBondBreak"),
-	        fractureTension("rdemFractureTension"), fractureShear("rdemFractureShear"), crushing("rdemCrushing");
-	const auto book = [&](Real value, const std::string& name, int& ix, bool reset) {
-		if (ix < 0 || value != 0) scene->energy->add(value, name, ix, reset);
-	};
-	book(e.elastic, elastic, elasticIx, /*reset every step*/ true);
-	book(e.dashpot, dashpot, dashpotIx, false);
-	book(e.friction, friction, frictionIx, false);
-	book(e.bondBreak, bondBreak, bondBreakIx, false);
-	if (!e.softening) return;
-	book(e.fractureTension, fractureTension, fractureTensionIx, false);
-	book(e.fractureShear, fractureShear, fractureShearIx, false);
-	book(e.crushing, crushing, crushingIx, false);
-}
-
 namespace {
 	/* Every point spring of interaction I as the law applies it in this configuration, f(b1, b2, point, r1, r2, n, k_n,
 	   k_s, c_n, c_s) with the point in global coordinates and its arms from the two centroids [m], the springs [N/m] and
@@ -652,10 +642,10 @@ namespace {
 	   for the step capDt (no cap for capDt = 0); a broken segment's share of the contact area is bounded by 1. */
 	template <class F> void forPointSprings(Scene* sc, const Interaction& I, Real capDt, F f)
 	{
-		const auto&  g  = *static_cast<const RdemGeom*>(I.geom.get());
-		const auto&  p  = *static_cast<const RdemPhys*>(I.phys.get());
-		const State& s1 = *Body::byId(I.getId1(), sc)->state;
-		const State& s2 = *Body::byId(I.getId2(), sc)->state;
+		const auto&       g  = *static_cast<const RdemGeom*>(I.geom.get());
+		const auto&       p  = *static_cast<const RdemPhys*>(I.phys.get());
+		const State&      s1 = *Body::byId(I.getId1(), sc)->state;
+		const State&      s2 = *Body::byId(I.getId2(), sc)->state;
 		const long        b1 = I.getId1(), b2 = I.getId2();
 		const DashpotCaps caps(s1, s1.pos, s2, s2.pos, capDt); // the pair's terms of dashpotCap, once
 		const auto        dashpots = [&](const Vector3r& point, const Vector3r& n, Real a, Real share) {

@@ -67,13 +67,6 @@ With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemElastic`` (springs, current
 		((bool,totalStress,false,,"Failure criteria (eqs. 15-16) on the total normal stress of the face: the springs' $\\sigma$ plus the normal stress the Poisson cells exert on it, $(c_1S_1+c_2S_2)/(w_nA)$ (:yref:`RdemState::cellStress`, :yref:`RdemPhys::cellCoef1`; :ref:`theory §5.6 <rdem-theory-5-6>`); it is the continuum's $\\sigma_{nn}$ of the face, zero on the head joints of a wall in uniform vertical compression. Needs Poisson cells (consistent formulation, :yref:`RdemPoissonEngine::elements` ``'cells'`` or ``'auto'`` on a layout that is not a grid). False (default): the springs' $\\sigma$ alone, the paper's criterion, whose lateral springs carry $M\\nu\\sigma/E$ in tension under uniaxial compression (the paper's splitting mechanism)."))
 		((shared_ptr<RdemSharedState>,shared,shared_ptr<RdemSharedState>(new RdemSharedState),Attr::triggerPostLoad,"What the plugin's engines share (:yref:`RdemSharedState`): this law counts the broken springs there (``rdem.engines()`` hands the same object to every engine; a new law makes its own, which the other engines take at the first step)."))
 		((vector<shared_ptr<RdemReleasedBond>>,releasedBonds,,Attr::hidden,"The bonds released so far (Python: the read-only list ``releasedBonds``, without a converter of its own)."))
-		((int,elasticIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
-		((int,dashpotIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
-		((int,frictionIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
-		((int,bondBreakIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
-		((int,fractureTensionIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
-		((int,fractureShearIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
-		((int,crushingIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 		,
 		/* ctor */
 		,
@@ -90,9 +83,7 @@ private:
 	/// left in p for RdemForceAssembler (deferForces) or added to the scene's force container.
 	void applyForces(const Interaction& I, RdemPhys& p, const Vector3r& f2, const Vector3r& t2, const Vector3r& dx);
 	/// Appends the bond of I, released in this step, to releasedBonds (thread-safe).
-	void recordRelease(const Interaction& I, const RdemGeom& g, const RdemPhys& p);
-	/// Adds one interaction's energies of this step to O.energy.
-	void       bookEnergies(const rdem::SpringEnergies<Real>& e);
+	void       recordRelease(const Interaction& I, const RdemGeom& g, const RdemPhys& p);
 	std::mutex releasedMutex; // releasedBonds grows from the threads of the interaction loop
 };
 REGISTER_SERIALIZABLE(Law2_RdemGeom_RdemPhys_FaceSprings);

@@ -113,7 +113,9 @@ void RdemForceAssembler::action()
 	builtIter          = scene->iter;
 	const long nBodies = long(scene->bodies->size());
 	prepareDirectSums(scene, nBodies);
-	/* Bodies in descending id order: the law has just written the forces in the order of the interaction container,
+	const bool energies = scene->trackEnergy;
+	if (energies) bodyEnergies.assign(size_t(nBodies), rdem::SpringEnergies<Real>());
+		/* Bodies in descending id order: the law has just written the forces in the order of the interaction container,
 	   which is about ascending body ids, so the physics it wrote last are read first, while they are still in the cache
 	   (in cubes beyond the last-level cache, the ones it wrote first are gone by then); and the next step's interaction
 	   loop starts where this pass ends. The order of each body's own sum is unchanged. */
@@ -130,6 +132,7 @@ void RdemForceAssembler::action()
 			// built: held here, it is still valid, and its forceIter is old).
 			const auto* p = static_cast<const RdemPhys*>(s.phys.get());
 			if (p->forceIter != scene->iter) continue;
+			if (energies && !s.second && p->energyIter == scene->iter) bodyEnergies[size_t(id)] += p->stepEnergies; // once, with body 1
 			if (s.second) {
 				f += p->force;
 				t += p->torque2;
@@ -141,6 +144,16 @@ void RdemForceAssembler::action()
 		scene->forces.addForceUnsynced(Body::id_t(id), f);
 		scene->forces.addTorqueUnsynced(Body::id_t(id), t);
 	}
+	if (energies) bookEnergies(sh);
+}
+
+void RdemForceAssembler::bookEnergies(RdemSharedState& sh)
+{
+	rdem::SpringEnergies<Real> sum;
+	for (const auto& e : bodyEnergies) // bodies by id, each its interactions by the other body's id
+		sum += e;
+	sum += sh.takeReleasedEnergies();
+	sh.bookSpringEnergies(scene, sum);
 }
 
 } // namespace yade

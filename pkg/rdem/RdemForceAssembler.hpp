@@ -22,7 +22,7 @@ public:
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(RdemForceAssembler,GlobalEngine,R"""(Applies the forces and torques that :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` left in :yref:`RdemPhys` (with :yref:`Law2_RdemGeom_RdemPhys_FaceSprings::deferForces`), summing them body by body in the order of the other body's id.
 
-Floating-point sums depend on their order. The law alone adds its forces in the order of the interaction container, which ``O.load`` changes (interactions without geometry, e.g. released bonds, are not saved and come back at the end of the container when the collider finds the pair again); the sum of a body's forces then differs in the last bits and a reloaded run drifts from the uninterrupted one. Summed here in a fixed order, it continues bit for bit (tests/yade/test_save_load.py), and the result no longer depends on the number of threads. Place it right after the :yref:`InteractionLoop` (``rdem.engines()`` does).
+Floating-point sums depend on their order. The law alone adds its forces in the order of the interaction container, which ``O.load`` changes (interactions without geometry, e.g. released bonds, are not saved and come back at the end of the container when the collider finds the pair again); the sum of a body's forces then differs in the last bits and a reloaded run drifts from the uninterrupted one. Summed here in a fixed order, it continues bit for bit (tests/yade/test_save_load.py), and the result no longer depends on the number of threads. With :yref:`O.trackEnergy<Omega.trackEnergy>` it books the law's energies of the step as well (``rdemElastic``, ``rdemDashpot``, …), summed in the same fixed order (each interaction with its first body, bodies by id, then the bonds released in the step by their ids): the energies of a reloaded run continue to the bit too, and do not depend on the number of threads. Place it right after the :yref:`InteractionLoop` (``rdem.engines()`` does).
 
 The per-body lists, sorted by the other body's id, are kept from step to step. The interactions that the law reports as starting to leave forces (in :yref:`RdemSharedState`) are merged into them in one pass (``incremental``); those that stop stay in the lists, skipped (their physics has an old ``forceIter``), until they make up an eighth of the lists, or the number of bodies changes, or the assembler missed a step: then the lists are built again from the interactions. A step costs one pass over the lists, and one more in a step in which contacts start.)""",
 		((shared_ptr<RdemSharedState>,shared,,,"What the plugin's engines share (:yref:`RdemSharedState`, handed by ``rdem.engines()``; None: the law's, taken at the first step)."))
@@ -38,11 +38,14 @@ private:
 		Body::id_t        other;
 		bool              second;
 	};
-	vector<size_t> first; // the list of body b is sides[first[b] .. first[b+1]) (not saved: rebuilt after O.load)
-	vector<Side>   sides; // all lists, bodies in id order, each sorted by the other body's id
-	long           builtIter = -1, builtBodies = -1, builtInteractions = -1;
-	size_t         staleSides = 0; // sides of interactions that stopped leaving forces since the last rebuild, at most
-	void           rebuild();
+	vector<size_t>                     first; // the list of body b is sides[first[b] .. first[b+1]) (not saved: rebuilt after O.load)
+	vector<Side>                       sides; // all lists, bodies in id order, each sorted by the other body's id
+	long                               builtIter = -1, builtBodies = -1, builtInteractions = -1;
+	size_t                             staleSides = 0; // sides of interactions that stopped leaving forces since the last rebuild, at most
+	vector<rdem::SpringEnergies<Real>> bodyEnergies;   // with O.trackEnergy: the energies of each body's interactions as body 1, this step
+	void                               rebuild();
+	/// Books the energies of the step (bodyEnergies, then the interactions released in it) in that order.
+	void bookEnergies(RdemSharedState& sh);
 	/// Merges the sides of the joined physics that are not in the lists yet into them, each list staying sorted.
 	void addSides(const vector<RdemSharedState::JoinedPhys>& joined);
 };

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <core/IPhys.hpp>
+#include <pkg/rdem/math/FaceSprings.hpp>
 #include <limits>
 
 namespace yade {
@@ -70,6 +71,10 @@ Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact s
 	);
 	// clang-format on
 	REGISTER_CLASS_INDEX(RdemPhys, IPhys);
+	/// The law's energies of this interaction in step energyIter, left for RdemForceAssembler, which books them in a fixed
+	/// order (with Law2…::deferForces and O.trackEnergy; not saved: a step's own).
+	rdem::SpringEnergies<Real> stepEnergies;
+	long                       energyIter = -1;
 };
 REGISTER_SERIALIZABLE(RdemPhys);
 

@@ -12,6 +12,7 @@
 #include <core/Engine.hpp>
 #include <core/Interaction.hpp>
 #include <pkg/rdem/RdemStiffnessSource.hpp>
+#include <pkg/rdem/math/FaceSprings.hpp>
 #include <boost/weak_ptr.hpp>
 #include <functional>
 #include <mutex>
@@ -81,6 +82,17 @@ public:
 	void join(const Interaction& I);
 	/// The physics that joined since the last call, in no particular order; empties the record (RdemForceAssembler).
 	vector<JoinedPhys> takeJoined();
+	/* The springs' energies of a step added to O.energy (rdemElastic, a current value; rdemDashpot, rdemFriction,
+	   rdemBondBreak and the softening ones, cumulated): by the law interaction by interaction when it applies its own
+	   forces, else once per step by RdemForceAssembler, summed in a fixed order (bodies by id, each interaction once, then
+	   the interactions released in the step by their ids): a sum that O.load and the number of threads do not change. */
+	void bookSpringEnergies(Scene* scene, const rdem::SpringEnergies<Real>& e);
+	/// The energies of an interaction that the law released in this step (its physics is reset: they reach
+	/// RdemForceAssembler this way; the law's threads).
+	void releaseEnergies(Body::id_t id1, Body::id_t id2, const rdem::SpringEnergies<Real>& e);
+	/// The sum of the energies recorded by releaseEnergies since the last call, in the order of the interactions' ids;
+	/// empties the record.
+	rdem::SpringEnergies<Real> takeReleasedEnergies();
 	/// How far each block has moved (written by RdemContactGate, read by Ig2_RdemBlock_RdemBlock_RdemGeom; not saved).
 	rdem::BodyTravel travel;
 	/// What adds to the scene's linear stiffness (its laws and Poisson engine, in the order of O.engines), for
@@ -121,9 +133,16 @@ public:
 	DECLARE_LOGGER;
 
 private:
-	std::mutex            joinedMutex; // a few interactions join in a step: a lock is cheap
-	vector<JoinedPhys>    joined;
-	rdem::EngineListStamp checkedEngines; // O.engines at the last check
+	std::mutex         joinedMutex; // a few interactions join in a step: a lock is cheap
+	vector<JoinedPhys> joined;
+	struct ReleasedEnergies {
+		Body::id_t                 id1, id2;
+		rdem::SpringEnergies<Real> e;
+	};
+	std::mutex               releasedMutex; // as joined: rare
+	vector<ReleasedEnergies> released;
+	int                      energyIx[7] = { -1, -1, -1, -1, -1, -1, -1 }; // O.energy's indices of the springs' energies (not saved)
+	rdem::EngineListStamp    checkedEngines;                               // O.engines at the last check
 	/* Once per engine list (the first step, and whenever O.engines changes): hands self (this object) to the plugin's
 	   engines and functors that have none, and throws std::runtime_error naming the engine that holds another one, is
 	   missing or is out of place: an RdemForceAssembler after the InteractionLoop whose law defers its forces, an

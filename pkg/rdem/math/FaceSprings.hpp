@@ -27,6 +27,19 @@ namespace rdem {
 		S    elastic = 0, dashpot = 0, friction = 0, bondBreak = 0;
 		S    fractureTension = 0, fractureShear = 0, crushing = 0;
 		bool softening = false;
+		/// Adds another interaction's energies, each to each.
+		SpringEnergies& operator+=(const SpringEnergies& o)
+		{
+			elastic += o.elastic;
+			dashpot += o.dashpot;
+			friction += o.friction;
+			bondBreak += o.bondBreak;
+			fractureTension += o.fractureTension;
+			fractureShear += o.fractureShear;
+			crushing += o.crushing;
+			softening = softening || o.softening;
+			return *this;
+		}
 	};
 
 	/// Constants of a restoring spring per unit area (eqs. 12, 15, 16): k̄_n, k̄_s [N/m³], f_t, c [Pa], tan φ.
