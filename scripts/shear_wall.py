@@ -260,7 +260,12 @@ cracks = rdem.CrackExport(os.path.join(cli.out, 'vtk', ''))
 def record(t):
 	nt, ns = rdem.breakCounts()
 	keys = O.energy.keys()
+	ts = rdem.timeStepper()
 	plot.addData(t=O.time,
+	             dt=O.dt,
+	             criticalDt=ts.criticalDt,
+	             contactDt=ts.contactDt,
+	             springCriticalDt=ts.springCriticalDt,
 	             drift=t.drift(),
 	             shear=t.shear(),
 	             baseShear=t.baseShear(),
@@ -357,6 +362,8 @@ h = history
 peak, first = state['peak'], state['first']
 smoothV, smoothDrift = walltest.smoothedPeakOverDrift(h['drift'], h['shear'], cli.smooth * 1e-2)
 smoothed = dict(shearKN=smoothV * 1e-3, driftPercent=smoothDrift * 100, widthPercent=cli.smooth)
+at = min(range(len(h['drift'])), key=lambda k: abs(abs(h['drift'][k]) - abs(smoothDrift)))  # the step and its limits there
+smoothed.update({k: h[k][at] for k in ('dt', 'criticalDt', 'springCriticalDt', 'contactDt')})
 uFirst = first['driftPercent'] * 1e-2 * test.height if first else None
 stiffness = first['shearKN'] * 1e3 / uFirst if first and uFirst else float('nan')
 closedForm = (walltest.timoshenkoStiffness(cli.brick_E * 1e9, cli.brick_nu, w.layout.length, w.layout.thickness, w.layout.height, boundary)
