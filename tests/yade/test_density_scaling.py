@@ -13,7 +13,10 @@
   about 1e-10 m).
 * The energy balance of a free bonded 3x3x3 grid (translations only: a linear system) with its stiffest blocks scaled,
   undamped at safety 0.8: O.energy.total() constant to round-off (bound 1e-9, the same argument and bound as
-  test_energy_balance.py); with Cundall's damping and gravity too, the damping's work booked for the scaled inertia."""
+  test_energy_balance.py); with Cundall's damping and gravity too, the damping's work booked for the scaled inertia.
+* A scaled scene saved and loaded continues bit for bit."""
+import os
+import tempfile
 import unittest
 import harness
 from yade import O, Vector3
@@ -132,6 +135,23 @@ class DensityScaling(unittest.TestCase):
 		print('damping 0.1 + gravity: worst |E - E0|/E0 = %.3g, dissipated %.3g J' % (err, O.energy['nonviscDamp']))
 		self.assertLess(err, 1e-9)
 		self.assertGreater(O.energy['nonviscDamp'], 0)
+
+	def testSaveLoadContinues(self):
+		"""A scaled scene saved and loaded continues bit for bit (State.densityScaling and the engine are saved)."""
+		ids, _ = row()
+		walltest.scaleDensity(ids, 2.0)
+		sc.perturb(ids, 0.01)
+		rdem.run(50)
+		path = os.path.join(tempfile.mkdtemp(), 'scaled.yade.gz')
+		O.save(path)
+		rdem.run(50)
+		want = [tuple(O.bodies[i].state.pos) + tuple(O.bodies[i].state.vel) for i in ids]
+		O.load(path)
+		self.assertEqual(sum(1 for e in O.engines if e.label == walltest.DENSITY_SCALING), 1)
+		self.assertEqual(O.bodies[ids[1]].state.densityScaling, 0.25)
+		rdem.run(50)
+		got = [tuple(O.bodies[i].state.pos) + tuple(O.bodies[i].state.vel) for i in ids]
+		self.assertEqual(got, want)
 
 	def testErrors(self):
 		ids, _ = row()
