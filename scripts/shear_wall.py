@@ -112,6 +112,9 @@ r.add_argument('--compress-time', type=float, default=scheme['compressTime'], he
 r.add_argument('--damping', type=float, default=scheme['damping'], help="Cundall's non-viscous damping of the integrator, in [0, 1) (default %(default)g)")
 r.add_argument('--inertia-scaling', choices=['on', 'off'], default='on' if scheme['inertiaScaling'] else 'off',
                help="the masonry blocks' moments of inertia scaled by rdem.quasi_static.rotationalInertiaScale, masses unchanged (default %(default)s)")
+r.add_argument('--density-scaling', type=float, default=scheme['densityScaling'],
+               help='partial density scaling for the push: the lightest and stiffest masonry blocks get the inertia that raises their own damped '
+               'limit to this factor times the smallest one, their weight unchanged (rdem.walltest.scaleDensity; >= 1, 1: none; default %(default)g)')
 r.add_argument('--gravity', type=float, default=wall_database.GRAVITY, help='gravity along -z [m/s2] (default %(default)g; 0: none)')
 k = parser.add_argument_group('model')
 k.add_argument('--formulation', choices=['consistent', 'paper', 'off'], default='consistent', help="Poisson effect: consistent (cells), paper, off (default consistent)")
@@ -136,6 +139,8 @@ cli = parser.parse_args(sys.argv[1:])
 for name in ('rate', 'drift', 'max_drift', 'past_peak', 'beam', 'compress_time', 'brick_density', 'beam_density', 'shear_span', 'smooth'):
 	if not getattr(cli, name) > 0:
 		sys.exit('--%s = %g: must be > 0' % (name.replace('_', '-'), getattr(cli, name)))
+if not (math.isfinite(cli.density_scaling) and cli.density_scaling >= 1):
+	sys.exit('--density-scaling = %g: must be >= 1 (the gain on the time step; 1: none)' % cli.density_scaling)
 if not 0 <= cli.stop_drop < 1:
 	sys.exit('--stop-drop = %g: must be in [0, 1)' % cli.stop_drop)
 ramp = cli.ramp if cli.ramp is not None else scheme['rampTravel'] / (cli.rate * 1e-3)
@@ -255,7 +260,12 @@ cracks = rdem.CrackExport(os.path.join(cli.out, 'vtk', ''))
 def record(t):
 	nt, ns = rdem.breakCounts()
 	keys = O.energy.keys()
+	ts = rdem.timeStepper()
 	plot.addData(t=O.time,
+	             dt=O.dt,
+	             criticalDt=ts.criticalDt,
+	             contactDt=ts.contactDt,
+	             springCriticalDt=ts.springCriticalDt,
 	             drift=t.drift(),
 	             shear=t.shear(),
 	             baseShear=t.baseShear(),
@@ -279,7 +289,9 @@ def onStep(t):
 	if state['first'] is None and history['tension'][-1] + history['shearBreaks'][-1] > state['breaks0']:
 		state['first'] = dict(shearKN=V * 1e-3, driftPercent=d * 100, time=O.time)
 	if state['peak'] is None or abs(V) > abs(state['peak']['shearKN']) * 1e3:
-		state['peak'] = dict(shearKN=V * 1e-3, driftPercent=d * 100, index=len(history['t']) - 1)
+		ts = rdem.timeStepper()  # the step and its limits at the peak (the last estimate)
+		state['peak'] = dict(shearKN=V * 1e-3, driftPercent=d * 100, index=len(history['t']) - 1, dt=O.dt, criticalDt=ts.criticalDt,
+		                     springCriticalDt=ts.springCriticalDt, contactDt=ts.contactDt)
 		state['peakCracks'] = None
 	elif state['peakCracks'] is None and abs(V) < 0.99 * abs(state['peak']['shearKN']) * 1e3:
 		state['peakCracks'] = rdem.brokenSegments(cracks.snapshot)  # the cracks just past the peak (1 % drop)
@@ -324,6 +336,11 @@ compressSteps = O.iter
 print('shear_wall: sigma0 applied in %.3f s (%d steps, %.1f s); settlement %.3f mm, top rotation %.1e rad' %
       (compressTime, compressSteps, compressWall, test.verticalDisplacement() * 1e3, test.topRotation()),
       flush=True)
+density = walltest.scaleDensity(w.masonry(), cli.density_scaling)  # after sigma0: the head joints' dashpots act
+if density['scaled']:
+	print('shear_wall: density scaling x%g: %d blocks scaled (inertia x%.3g at most, +%.0f %% of their mass), their own limits raised to %.3g us' %
+	      (cli.density_scaling, density['scaled'], density['largest'], 100 * density['addedMass'], density['target'] * 1e6),
+	      flush=True)
 # cracks counted from here (none expected under sigma0 alone), the head joints that start without bond left out
 cracks.snapshot = [row for row in rdem.bondSnapshot() if (min(row[0], row[1]), max(row[0], row[1])) not in unbonded]
 state['breaks0'] = sum(rdem.breakCounts())
@@ -345,6 +362,8 @@ h = history
 peak, first = state['peak'], state['first']
 smoothV, smoothDrift = walltest.smoothedPeakOverDrift(h['drift'], h['shear'], cli.smooth * 1e-2)
 smoothed = dict(shearKN=smoothV * 1e-3, driftPercent=smoothDrift * 100, widthPercent=cli.smooth)
+at = min(range(len(h['drift'])), key=lambda k: abs(abs(h['drift'][k]) - abs(smoothDrift)))  # the step and its limits there
+smoothed.update({k: h[k][at] for k in ('dt', 'criticalDt', 'springCriticalDt', 'contactDt')})
 uFirst = first['driftPercent'] * 1e-2 * test.height if first else None
 stiffness = first['shearKN'] * 1e3 / uFirst if first and uFirst else float('nan')
 closedForm = (walltest.timoshenkoStiffness(cli.brick_E * 1e9, cli.brick_nu, w.layout.length, w.layout.thickness, w.layout.height, boundary)
@@ -367,7 +386,7 @@ comparison = dict(measuredPeakKN=[v * 1e-3 for v in measured['peak']], measuredM
                   smoothedDriftPercent=abs(smoothed['driftPercent']), measuredFailure=measured['failure'], failure=failure)
 results = dict(input=vars(cli), validated=validated, wall=cli.wall, model=spec, sigma0=sigma0, shearSpan=cli.shear_span, axialForce=test.axialForce, blocks=len(w.ids),
                bonds=w.nBonds, bricks=len(w.bricks), courses=len(w.courses), joints={k: len(v) for k, v in w.joints.items()},
-               cells=rdem.poissonEngine().nCells if cli.formulation != 'off' else 0, crackBand=crackBand, timeStep=O.dt, rules={k: v[1] for k, v in wall_database.RULES.items()},
+               cells=rdem.poissonEngine().nCells if cli.formulation != 'off' else 0, crackBand=crackBand, timeStep=O.dt, densityScaling=density, rules={k: v[1] for k, v in wall_database.RULES.items()},
                peak=peak, smoothedPeak=smoothed, firstCrack=first, initialStiffnessKNPerMm=stiffness * 1e-6,
                timoshenkoStiffnessKNPerMm=closedForm * 1e-6 if closedForm else None, cracksAtPeak=peakCount, cracksAtEnd=crackCount, failure=failure,
                brokenSprings=dict(tension=h['tension'][-1] - h['tension'][0], shear=h['shearBreaks'][-1] - h['shearBreaks'][0]),

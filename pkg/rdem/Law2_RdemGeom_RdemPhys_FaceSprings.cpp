@@ -13,6 +13,7 @@
 #include <pkg/rdem/RdemState.hpp>
 #include <pkg/rdem/math/BlockCells.hpp>
 #include <pkg/rdem/math/ContactBound.hpp>
+#include <pkg/rdem/math/DensityScaling.hpp>
 #include <pkg/rdem/math/FaceSprings.hpp>
 #include <pkg/rdem/math/Softening.hpp>
 #include <pkg/rdem/math/SortedKeys.hpp>
@@ -438,16 +439,17 @@ namespace {
 	}
 
 	/* The terms of Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap that do not depend on the point, for the many points of
-	   one interaction: 1/m and 1/I_min of each free block (zero for a fixed one). caps() gives the same caps. */
+	   one interaction: 1/m and 1/I_min of each free block (zero for a fixed one), inertial (rdem::inertialFactor: m/s, I/s
+	   with density scaling s). caps() gives the same caps. */
 	struct DashpotCaps {
 		Real     invMass1, invInertia1, invMass2, invInertia2;
 		Vector3r x1, x2;
 		Real     dt;
 		DashpotCaps(const State& s1, const Vector3r& c1, const State& s2, const Vector3r& c2, Real step)
-		        : invMass1(s1.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / s1.mass)
-		        , invInertia1(s1.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / s1.inertia.minCoeff())
-		        , invMass2(s2.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / s2.mass)
-		        , invInertia2(s2.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / s2.inertia.minCoeff())
+		        : invMass1(s1.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / (s1.mass * rdem::inertialFactor(s1.densityScaling)))
+		        , invInertia1(s1.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / (s1.inertia.minCoeff() * rdem::inertialFactor(s1.densityScaling)))
+		        , invMass2(s2.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / (s2.mass * rdem::inertialFactor(s2.densityScaling)))
+		        , invInertia2(s2.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / (s2.inertia.minCoeff() * rdem::inertialFactor(s2.densityScaling)))
 		        , x1(c1)
 		        , x2(c2)
 		        , dt(step)
@@ -538,8 +540,9 @@ Vector2r Law2_RdemGeom_RdemPhys_FaceSprings::dashpotCap(
 	for (const auto& sx : { std::make_pair(&s1, x1), std::make_pair(&s2, x2) }) {
 		if (sx.first->blockedDOFs == State::DOF_ALL) continue;
 		const Vector3r r = C - sx.second;
-		invN += 1 / sx.first->mass + r.cross(n).squaredNorm() / sx.first->inertia.minCoeff();
-		invS += 1 / sx.first->mass + r.squaredNorm() / sx.first->inertia.minCoeff();
+		const Real     f = rdem::inertialFactor(sx.first->densityScaling); // inertial mass and inertia (density scaling)
+		invN += 1 / (sx.first->mass * f) + r.cross(n).squaredNorm() / (sx.first->inertia.minCoeff() * f);
+		invS += 1 / (sx.first->mass * f) + r.squaredNorm() / (sx.first->inertia.minCoeff() * f);
 	}
 	const Real inf = std::numeric_limits<Real>::infinity();
 	return Vector2r(invN > 0 ? share / (invN * dt) : inf, invS > 0 ? share / (invS * dt) : inf);
@@ -723,7 +726,13 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::addOmega2Bound(Scene* sc, vector<Real>&
 			        for (const auto& side : { std::make_pair(b1, &s1), std::make_pair(b2, &s2) })
 				        if (side.second->blockedDOFs != State::DOF_ALL)
 					        omega2[size_t(side.first)] += rdem::pointSpringOmega2<Real>(
-					                point - side.second->pos, n, 1, kn, ks, side.second->mass, side.second->inertia.minCoeff());
+					                point - side.second->pos,
+					                n,
+					                1,
+					                kn,
+					                ks,
+					                side.second->mass * rdem::inertialFactor(side.second->densityScaling),
+					                side.second->inertia.minCoeff() * rdem::inertialFactor(side.second->densityScaling));
 		        });
 	}
 }

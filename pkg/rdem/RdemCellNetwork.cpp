@@ -13,6 +13,7 @@
 #include <pkg/rdem/RdemRanks.hpp>
 #include <pkg/rdem/math/BlockCells.hpp>
 #include <pkg/rdem/math/ContactBound.hpp>
+#include <pkg/rdem/math/DensityScaling.hpp>
 #include <pkg/rdem/math/GroupByKey.hpp>
 #include <algorithm>
 #include <limits>
@@ -416,7 +417,13 @@ vector<Real> RdemCellNetwork::omega2Bound(Scene* scene)
 			const State& st = *state[i];
 			if (st.blockedDOFs == State::DOF_ALL) continue;
 			w2[size_t(body[i])] += rdem::pointSpringOmega2<Real>(
-			        st.ori * (side ? b.fc2 : b.fc1), st.ori * (side ? b.n2 : b.n1), 1, 0, kShear, st.mass, st.inertia.minCoeff());
+			        st.ori * (side ? b.fc2 : b.fc1),
+			        st.ori * (side ? b.n2 : b.n1),
+			        1,
+			        0,
+			        kShear,
+			        st.mass * rdem::inertialFactor(st.densityScaling), // inertial (density scaling)
+			        st.inertia.minCoeff() * rdem::inertialFactor(st.densityScaling));
 		}
 	}
 	for (size_t i = 0; i < body.size(); ++i)
@@ -434,7 +441,8 @@ vector<Real> RdemCellNetwork::omega2Bound(Scene* scene)
 			if (s.blockedDOFs == State::DOF_ALL) continue;
 			const Vector3r r = s.ori * (side ? b.fc2 : b.fc1);
 			const Vector3r n = s.ori * (side ? b.n2 : b.n1);
-			w2[size_t(body[side ? b.i2 : b.i1])] += 2 * kappa * (1 / s.mass + r.cross(n).squaredNorm() / s.inertia.minCoeff());
+			const Real     f = rdem::inertialFactor(s.densityScaling); // inertial mass and inertia (density scaling)
+			w2[size_t(body[side ? b.i2 : b.i1])] += 2 * kappa * (1 / (s.mass * f) + r.cross(n).squaredNorm() / (s.inertia.minCoeff() * f));
 		}
 	}
 	return w2;

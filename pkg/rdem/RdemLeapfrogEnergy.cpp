@@ -8,6 +8,7 @@
 #include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/RdemLeapfrogEnergy.hpp>
 #include <pkg/rdem/RdemRanks.hpp>
+#include <pkg/rdem/math/DensityScaling.hpp>
 #include <pkg/rdem/math/LeapfrogEnergy.hpp>
 #include <algorithm>
 #include <stdexcept>
@@ -66,9 +67,12 @@ void RdemLeapfrogEnergy::action()
 		velAfter[id]    = s.vel;
 		angVelAfter[id] = s.angVel;
 		if (!paired) continue;
+		// the inertial mass and inertia (RdemDensityScaling: m/s, I/s; gravity acts on m)
+		const Real     f = rdem::inertialFactor(s.densityScaling);
+		const Vector3r J = s.inertia * f;
 		const Matrix3r R = s.ori.toRotationMatrix();
-		const Matrix3r I = b->isAspherical() ? Matrix3r(R * s.inertia.asDiagonal() * R.transpose()) : Matrix3r(s.inertia.asDiagonal());
-		kinTrans += rdem::pairedKineticEnergy<Real>(s.mass, v0, s.vel, Matrix3r::Zero(), w0, s.angVel);
+		const Matrix3r I = b->isAspherical() ? Matrix3r(R * J.asDiagonal() * R.transpose()) : Matrix3r(J.asDiagonal());
+		kinTrans += rdem::pairedKineticEnergy<Real>(s.mass * f, v0, s.vel, Matrix3r::Zero(), w0, s.angVel);
 		kinRot += rdem::pairedKineticEnergy<Real>(0, v0, s.vel, I, w0, s.angVel);
 		if (!damped || !s.isDamped || s.blockedDOFs == State::DOF_ALL) continue;
 		Vector3r       D = rdem::dampingForce<Real>(s.mass, s.mass, v0, s.vel, dt, scene->forces.getForce(b->getId()), newton.gravity);
@@ -76,6 +80,10 @@ void RdemLeapfrogEnergy::action()
 		// NewtonIntegrator::action: the aspherical integrator damps the torque, the spherical one the angular acceleration
 		const bool aspherical = newton.exactAsphericalRot && b->isAspherical() && (s.blockedDOFs & State::DOF_RXRYRZ) == State::DOF_NONE;
 		Vector3r   Dt = aspherical ? rdem::cundallDampingTorque<Real>(damping, T, w0) : Vector3r(s.inertia.cwiseProduct(s.angVel - w0) / dt - T);
+		if (f != 1) { // RdemDensityScaling handed the integrator s(F + m g) - m g and s T: the damping of the scaled body is 1/s of what they give
+			D *= f;
+			Dt *= f;
+		}
 		for (int i = 0; i < 3; ++i) {
 			if (s.blockedDOFs & State::axisDOF(i, false)) D[i] = 0;
 			if (s.blockedDOFs & State::axisDOF(i, true)) Dt[i] = 0;

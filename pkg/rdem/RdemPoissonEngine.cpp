@@ -18,6 +18,7 @@
 #include <pkg/rdem/RdemPoissonEngine.hpp>
 #include <pkg/rdem/RdemState.hpp>
 #include <pkg/rdem/math/BlockCells.hpp>
+#include <pkg/rdem/math/DensityScaling.hpp>
 #include <pkg/rdem/math/Elasticity.hpp>
 #include <pkg/rdem/math/GroupByKey.hpp>
 #include <algorithm>
@@ -240,7 +241,7 @@ vector<Real> RdemPoissonEngine::hex8Omega2Bound() const
 	}
 	for (size_t id = 0; id < bound.size(); ++id) { // row sums [N/m] over the mass: ω² [1/s²]
 		const auto& b = Body::byId(Body::id_t(id), sc);
-		bound[id]     = (b && bound[id] > 0) ? bound[id] / b->state->mass : Real(0);
+		bound[id]     = (b && bound[id] > 0) ? bound[id] / (b->state->mass * rdem::inertialFactor(b->state->densityScaling)) : Real(0); // inertial mass
 	}
 	return bound;
 }

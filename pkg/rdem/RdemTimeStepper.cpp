@@ -18,6 +18,7 @@
 #include <pkg/rdem/RdemRanks.hpp>
 #include <pkg/rdem/RdemTimeStepper.hpp>
 #include <pkg/rdem/math/ContactBound.hpp>
+#include <pkg/rdem/math/DensityScaling.hpp>
 #include <pkg/rdem/math/Elasticity.hpp>
 #include <pkg/rdem/math/StepperUpdate.hpp>
 #include <algorithm>
@@ -89,7 +90,13 @@ namespace {
 			const auto k = contactToCome(*shape, *mat, setup);
 			for (int face = 0; face < 6; ++face)
 				omega2[size_t(b->id)] += rdem::faceContactOmega2<Real>(
-				        shape->extents, face / 2, setup.samplesPerEdge, k.first, k.second, b->state->mass, b->state->inertia.minCoeff());
+				        shape->extents,
+				        face / 2,
+				        setup.samplesPerEdge,
+				        k.first,
+				        k.second,
+				        b->state->mass * rdem::inertialFactor(b->state->densityScaling),
+				        b->state->inertia.minCoeff() * rdem::inertialFactor(b->state->densityScaling));
 		}
 	}
 }
@@ -148,7 +155,8 @@ void RdemTimeStepper::assemble(
 		// the estimate is that of the rank's own blocks, with all their springs (rdem::isGhost, computeTimeStep).
 		const State&   s       = *b->state;
 		const unsigned blocked = rdem::isGhost(*sc, *b) ? unsigned(State::DOF_ALL) : unsigned(s.blockedDOFs);
-		scale[size_t(b->id)]   = rdem::bodyScale<Real>(s.mass, s.inertia, s.ori.toRotationMatrix(), blocked);
+		const Real     f       = rdem::inertialFactor(s.densityScaling); // the inertial mass and inertia (density scaling)
+		scale[size_t(b->id)]   = rdem::bodyScale<Real>(s.mass * f, Vector3r(s.inertia * f), s.ori.toRotationMatrix(), blocked);
 		if (contactBound && blocked != State::DOF_ALL && !bonded[size_t(b->id)]) addContactsToCome(K, *b, setup);
 	}
 }
@@ -227,7 +235,7 @@ vector<Real> RdemTimeStepper::springSignature(Scene* sc, const vector<const Inte
 	for (const auto& b : *sc->bodies)
 		if (b) {
 			blocked += b->state->blockedDOFs;
-			mass += b->state->mass;
+			mass += b->state->mass * rdem::inertialFactor(b->state->densityScaling);
 		}
 	return { Real(sc->bodies->size()), nReal, nSegments, nSamples, stiffness, blocked, mass, Real(brokenSprings(sc)) };
 }
@@ -275,6 +283,31 @@ Real RdemTimeStepper::estimatePy(const string& how)
 	const Real dt      = estimate(sc, rdem::interactionsInIdOrder(sc));
 	method             = saved;
 	return dt;
+}
+
+boost::python::list RdemTimeStepper::blockRows()
+{
+	Scene*       sc = Omega::instance().getScene().get();
+	const size_t nB = sc->bodies->size();
+	vector<Real> omega2(nB, 0); // the Gershgorin rows of gershgorin(), with the inertial masses
+	for (RdemStiffnessSource* source : RdemSharedState::of(sc, shared).stiffnessSources)
+		source->addOmega2Bound(sc, omega2);
+	if (contactBound) addContactBound(omega2, bondedBodies(sc), sc);
+	rdem::BlockStiffness<Real>    K(nB), C(nB);
+	vector<rdem::BodyScale<Real>> scale;
+	const Real                    saved = capDt;
+	capDt                               = 0; // the dashpots of eq. 13 without the caps, which fall with a larger step
+	assemble(sc, rdem::interactionsInIdOrder(sc), K, C, scale);
+	capDt = saved;
+	boost::python::list rows;
+	for (size_t b = 0; b < nB; ++b) {
+		const auto* body = Body::byId(Body::id_t(b), sc).get();
+		Real        c    = 0;
+		if (body && !rdem::isGhost(*sc, *body) && !C.empty()) c = 2 * rdem::largestBlockEigenvalue<Real>(C.diagonalBlock(b), scale[b]);
+		const bool fixed = !body || rdem::isGhost(*sc, *body) || body->state->blockedDOFs == State::DOF_ALL;
+		rows.append(boost::python::make_tuple(fixed ? Real(0) : omega2[b], fixed ? Real(0) : c));
+	}
+	return rows;
 }
 
 vector<Real> RdemTimeStepper::stiffnessTimes(const vector<Real>& x)

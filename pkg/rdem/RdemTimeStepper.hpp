@@ -30,6 +30,9 @@ public:
 	Real estimatePy(const string& method);
 	/// Python: K·x, K the linear stiffness the estimate uses (assemble), x 6 values per body (u [m], θ [rad]) [N, N·m].
 	vector<Real> stiffnessTimes(const vector<Real>& x);
+	/// Python: per body id, (ω_b², c_b): its Gershgorin row of the mass-normalised stiffness [1/s²] (as ``method='gershgorin'``)
+	/// and 2 λ_max of its diagonal block of the mass-normalised dashpots, uncapped [1/s]; (0, 0) for a fixed body.
+	boost::python::list blockRows();
 	/// The linear stiffness K of the scene and its contact dashpots C, as their sources give them (RdemStiffnessSource:
 	/// the law's springs and dashpots, the Poisson engine's elements and cells), plus the contacts that can still form
 	/// (contactBound), and each body's mass normalisation; inIdOrder: the scene's rdem::interactionsInIdOrder.
@@ -78,6 +81,7 @@ On a distributed run (:ref:`mpy`, YADE built with ``ENABLE_MPI``) each rank esti
 		,
 		/* ctor */,
 		.def("estimate",&RdemTimeStepper::estimatePy,(py::arg("method")=""),"Critical time step of the current scene [s], without the safety factor, by ``method`` or by the method named (``'lanczos'``, ``'gershgorin'``; ``'dashpots'``: as an update for a break alone, with $\\lambda_K$ and its Ritz vector kept from the last estimate).")
+		.def("blockRows",&RdemTimeStepper::blockRows,"Per body id, $(\\omega_b^2, c_b)$ of the current scene, with the inertial masses (:yref:`RdemDensityScaling`): $\\omega_b^2$ its Gershgorin row of the mass-normalised stiffness [1/s²] (as ``method='gershgorin'``, ``contactBound`` included), $c_b=2\\lambda_{max}(S_bC_{bb}S_b)$ the bound of its row of the mass-normalised contact dashpots (eq. 13, without the caps) [1/s], from its diagonal block $C_{bb}$ ($C\\preceq 2\\,\\mathrm{blockdiag}(C_{bb})$ for a sum of pair dashpots). Leapfrog is stable while $\\Delta t^2\\omega_b^2+2\\Delta t\\,c_b\\le 4$ for every block (a bound, below the Lanczos limit); ``rdem.quasi_static.inertialScales`` takes these rows. $(0, 0)$ for a fixed body.")
 		.def("stiffnessTimes",&RdemTimeStepper::stiffnessTimes,(py::arg("x")),"$K\\mathbf{x}$ [N, N·m], $K$ the linear stiffness of the current configuration that the estimate uses (the sources' terms, :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` and :yref:`RdemPoissonEngine`, plus the contacts to come with ``contactBound``), $\\mathbf{x}$ 6 values per body id: displacement [m] and small rotation [rad] in global axes (tests/yade/test_stiffness_source.py checks it against the forces).")
 	);
 	// clang-format on

@@ -17,6 +17,11 @@ A quasi-static test run as explicit dynamics costs (travel / rate) / Δt steps. 
   rotational terms of its row no larger than the translational ones, without touching its mass: the weight, the
   applied loads and every static state are unchanged; only the rotations respond more slowly. Whether that moves the
   result is measured (:ref:`validation <rdem-validation>`), as for the rate.
+* **Partial density scaling** ([Itasca2020]_'s density scaling for quasi-static problems): unlike a uniform one, scaling
+  the inertia of only the few light or stiff blocks that set the critical step raises the step without slowing the
+  rest of the wall. :func:`inertialScales` gives each block the smallest factor $\\mu_b \\ge 1$ of its mass and moments of
+  inertia that brings its own damped limit up to a target step; gravity and the applied loads keep the true masses
+  (:yref:`RdemDensityScaling`), so every static state is unchanged and only those blocks respond more slowly.
 """
 import math
 
@@ -47,3 +52,67 @@ def pushSteps(travel, rate, dt):
 		if not (math.isfinite(v) and v > 0):
 			raise ValueError('%s = %r: must be finite and > 0' % (name, v))
 	return int(math.ceil(travel / (rate * dt)))
+
+
+def _rows(omega2, dashpotRate):
+	"""The per-block rows as two lists of floats, checked (see :func:`inertialScales`)."""
+	w2, c = [float(x) for x in omega2], [float(x) for x in dashpotRate]
+	if len(w2) != len(c):
+		raise ValueError('omega2 and dashpotRate: %d and %d values: must have one per block each' % (len(w2), len(c)))
+	for name, values in (('omega2', w2), ('dashpotRate', c)):
+		for i, v in enumerate(values):
+			if not (math.isfinite(v) and v >= 0):
+				raise ValueError('%s[%d] = %r: must be finite and >= 0 [1/s2, 1/s]' % (name, i, v))
+	return w2, c
+
+
+def localDampedStep(omega2, dashpotRate):
+	"""The damped limit of one block's own row [s]: the root of $\\Delta t^2\\omega_b^2 + 2\\Delta t\\,c_b = 4$,
+
+	.. math:: \\Delta t_b = \\frac{4}{c_b + \\sqrt{c_b^2 + 4\\omega_b^2}},
+
+	with $\\omega_b^2$ [1/s²] and $c_b$ [1/s] the block's Gershgorin rows of the mass-normalised stiffness $\\tilde K$ and
+	dashpots $\\tilde C$ (:yref:`RdemTimeStepper.blockRows`). Leapfrog with dashpots on the mid-step velocity is stable while
+	$\\lambda_{max}(\\Delta t^2\\tilde K + 2\\Delta t\\tilde C) \\le 4$ (:yref:`RdemTimeStepper`), and that largest
+	eigenvalue is at most the largest row $\\Delta t^2\\omega_b^2 + 2\\Delta t c_b$ (both are bounds by rows of a sum of
+	pair terms); for one oscillator of damping ratio $\\zeta = c/(2\\omega)$ it is $(2/\\omega)(\\sqrt{1+\\zeta^2}-\\zeta)$
+	([Belytschko2000]_). inf for a block without rows (fixed, or no springs). ValueError if a row is negative or not finite."""
+	(w2, ), (c, ) = _rows([omega2], [dashpotRate])
+	if w2 == 0 and c == 0:
+		return float('inf')
+	return 4 / (c + math.sqrt(c * c + 4 * w2))
+
+
+def inertialScales(omega2, dashpotRate, target):
+	"""Per block, the factor $\\mu_b \\ge 1$ of its mass and moments of inertia that brings its own damped limit
+	(:func:`localDampedStep`) up to the step ``target`` [s]: its scaled rows are $\\omega_b^2/\\mu_b$ and $c_b/\\mu_b$
+	(each row is over the block's own mass; the dashpots' coefficients, eq. 13 with the densities of the materials, are
+	unchanged), so $\\Delta t^2\\omega_b^2/\\mu_b + 2\\Delta t\\,c_b/\\mu_b \\le 4$ at $\\Delta t$ = ``target`` for
+
+	.. math:: \\mu_b = \\max\\left(1, \\frac{T^2\\omega_b^2 + 2 T c_b}{4}\\right),
+
+	with $T$ the target, $\\omega_b^2$ [1/s²] and $c_b$ [1/s] the block's unscaled rows (lists of equal length, e.g. from
+	:yref:`RdemTimeStepper.blockRows` with no scaling set). The density scaling of YADE's :yref:`State` is
+	$s_b = 1/\\mu_b$ (:yref:`RdemDensityScaling`). A block whose own limit is already above $T$ keeps $\\mu_b = 1$.
+	Examples: $\\omega_b^2 = 10^{10}$ s⁻², $c_b = 0$ (limit 20 µs) and $T$ = 40 µs give $\\mu_b = 4$; with
+	$c_b = 5\\cdot 10^4$ s⁻¹ the limit is $4/(c + \\sqrt{c^2 + 4\\omega^2}) = 16.0$ µs and $T$ = 40 µs needs
+	$\\mu_b = 4 + 1 = 5$.
+	ValueError naming the argument if ``target`` is not finite and > 0 or a row is negative or not finite."""
+	w2, c = _rows(omega2, dashpotRate)
+	T = float(target)
+	if not (math.isfinite(T) and T > 0):
+		raise ValueError('target = %r: must be finite and > 0 [s]' % (target, ))
+	return [max(1.0, (T * T * a + 2 * T * b) / 4) for a, b in zip(w2, c)]
+
+
+def densityScalingTarget(omega2, dashpotRate, factor):
+	"""The target step of :func:`inertialScales` for a gain ``factor`` >= 1 on the step: ``factor`` times the smallest
+	:func:`localDampedStep` over the blocks [s], so that the bound of the scaled assembly by its rows rises by ``factor``
+	(the Lanczos limit that :yref:`RdemTimeStepper` uses rises about as much while the blocks scaled are those of the
+	stiffest and most damped modes; measured in :ref:`validation <rdem-validation>`). inf if no block has a row.
+	ValueError if ``factor`` is not finite and >= 1, or a row is bad."""
+	f = float(factor)
+	if not (math.isfinite(f) and f >= 1):
+		raise ValueError('factor = %r: must be finite and >= 1 (the gain on the time step)' % (factor, ))
+	w2, c = _rows(omega2, dashpotRate)
+	return f * min((localDampedStep(a, b) for a, b in zip(w2, c)), default=float('inf'))

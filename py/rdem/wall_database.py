@@ -60,10 +60,11 @@ RULES = {
                   'E_cm = 31 GPa), rigid against the wall'),
         'loading': ('monotonic push of the top beam to the positive side', 'the envelope of the cyclic test; compared with the mean of the '
                     'measured positive and negative peaks'),
-        'quasiStatic': (dict(rate=0.04, damping=0.2, inertiaScaling=True, rampTravel=1e-3, compressTime=0.02, drift=0.006, pastPeak=2.0, maxDrift=0.02,
+        'quasiStatic': (dict(rate=0.04, damping=0.2, inertiaScaling=True, densityScaling=2.0, rampTravel=1e-3, compressTime=0.02, drift=0.006, pastPeak=2.0, maxDrift=0.02,
                              stopDrop=0.2, smoothDrift=2e-4),
                         'the user guide, validation, "Quasi-static loading in fewer steps": the top beam at rate [m/s], its velocity ramped up over rampTravel [m] '
-                        "of travel; Cundall's non-viscous damping; the blocks' rotational inertia scaled (rdem.quasi_static) or not; sigma0 ramped over "
+                        "of travel; Cundall's non-viscous damping; the blocks' rotational inertia scaled (rdem.quasi_static) or not; partial density "
+                        'scaling of the push by the factor densityScaling on the step (rdem.walltest.scaleDensity; 1: none); sigma0 ramped over '
                         'compressTime [s] and held until the wall is at rest; the push ends once the load averaged over smoothDrift [-] of drift has '
                         'dropped by stopDrop of its peak, or once past drift [-] and pastPeak times the drift of that peak, or at maxDrift [-] (MI1 was '
                         'validated to 0.6 % drift with a 20 % drop)'),

@@ -35,10 +35,12 @@ enough is checked by running it again at half the rate (scripts/shear_wall.py ``
 """
 import math
 from yade import O, Vector3, Quaternion
-from yade.wrapper import ForceEngine, PyRunner, NewtonIntegrator
+from yade.wrapper import ForceEngine, PyRunner, NewtonIntegrator, RdemDensityScaling
 from . import build, quasi_static  # relative: the package is also yade.rdem (merged into YADE's tree)
 
 BOUNDARIES = ('fixed', 'cantilever')
+#: The label of the :yref:`RdemDensityScaling` that :func:`scaleDensity` puts before the integrator.
+DENSITY_SCALING = 'rdemDensityScaling'
 #: The top beam's blocked degrees of freedom per boundary condition (z is free: the vertical load acts along it).
 TOP_DOFS = {'fixed': 'xyXYZ', 'cantilever': 'xyXZ'}
 
@@ -164,7 +166,8 @@ class ShearWallTest:
 		self._weight = -s.mass * build.newtonIntegrator().gravity[2]  # the top beam's own weight [N] (gravity along -z)
 		self._load = ForceEngine(ids=[self.top], force=Vector3.Zero)
 		engines = O.engines
-		k = next(k for k, e in enumerate(engines) if e.label == build.LABELS['newton'])
+		# before the integrator, and before RdemDensityScaling if there is one (it scales every force, the loads' too)
+		k = next(k for k, e in enumerate(engines) if e.label in (build.LABELS['newton'], DENSITY_SCALING))
 		# A rotating top beam is a rigid lever pinned at H0 above the base (applyLever, every step): the couple that makes
 		# the moment at the masonry's top V (H0 - H) (the actuator's force acts at the beam's centroid, b/2 above the
 		# masonry, which adds V b/2), the beam's x following its rotation so that the pin moves at the prescribed velocity,
@@ -328,6 +331,47 @@ def scaleRotationalInertia(ids):
 		b.state.inertia = b.state.inertia * f
 		largest = max(largest, f)
 	return largest
+
+
+def scaleDensity(ids, factor):
+	"""Partial density scaling of the blocks ``ids`` (the quasi-static scheme's ``densityScaling``, :ref:`validation
+	<rdem-validation>`): each block gets the smallest factor $\\mu_b \\ge 1$ of its mass and moments of inertia that brings
+	its own damped limit up to ``factor`` times the smallest such limit among ``ids``
+	(:func:`rdem.quasi_static.densityScalingTarget`, :func:`rdem.quasi_static.inertialScales`, from the rows of
+	:yref:`RdemTimeStepper.blockRows` of the current configuration, its contacts and dashpots), set as
+	:yref:`State::densityScaling` $= 1/\\mu_b$; every other block of ``ids`` is reset to none (-1). An
+	:yref:`RdemDensityScaling` is put right before the integrator (once): gravity and the loads keep the true masses, so
+	the weight and every static state are unchanged. Call it once the contacts that set the step exist (for a wall test,
+	after the vertical load: its head joints carry then their dashpots); the time stepper takes the new masses at its
+	next update. ``factor`` 1 removes the scaling of ``ids``.
+
+	Returns a dict: ``target`` the step the blocks were brought to (their own limits, a bound below the Lanczos limit)
+	[s], ``scaled`` how many blocks were scaled, ``largest`` the largest $\\mu_b$, ``addedMass`` the inertial mass added
+	over the scaled blocks' true mass [-]. ValueError if ``factor`` is not finite and >= 1."""
+	f = float(factor)
+	if not (math.isfinite(f) and f >= 1):
+		raise ValueError('factor = %r: must be finite and >= 1 (the gain on the time step)' % (factor, ))
+	ids = list(ids)
+	for i in ids:
+		O.bodies[i].state.densityScaling = -1  # the unscaled rows
+	if f == 1:
+		return dict(target=None, scaled=0, largest=1.0, addedMass=0.0)
+	rows = build.timeStepper().blockRows()
+	omega2, dashpots = [rows[i][0] for i in ids], [rows[i][1] for i in ids]
+	target = quasi_static.densityScalingTarget(omega2, dashpots, f)
+	mu = quasi_static.inertialScales(omega2, dashpots, target)
+	mass = added = 0.0
+	for i, m in zip(ids, mu):
+		if m > 1:
+			s = O.bodies[i].state
+			s.densityScaling = 1 / m
+			mass += s.mass
+			added += (m - 1) * s.mass
+	if not any(e.label == DENSITY_SCALING for e in O.engines):
+		engines = O.engines
+		k = next(k for k, e in enumerate(engines) if e.label == build.LABELS['newton'])
+		O.engines = engines[:k] + [RdemDensityScaling(integrator=engines[k], label=DENSITY_SCALING)] + engines[k:]
+	return dict(target=target, scaled=sum(1 for m in mu if m > 1), largest=max(mu, default=1.0), addedMass=added / mass if mass else 0.0)
 
 
 def unbondJoints(wall, kind='head'):

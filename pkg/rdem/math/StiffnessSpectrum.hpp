@@ -80,6 +80,10 @@ namespace rdem {
 		/// Whether nothing nonzero was added (then K x = 0 for every x).
 		bool empty() const { return !anyTerm; }
 
+		/// The 6×6 diagonal block of body b from its point springs (pairs and fixed points; not the elements, openings,
+		/// cells or offsets): for a sum of such springs K ⪯ 2 blockdiag(K_bb), as each pair's term is positive semi-definite.
+		const M6& diagonalBlock(size_t b) const { return diag.at(b); }
+
 
 		/// Opens the pair (b1, b2) for addPointSpring (b1 ≠ b2, both ≥ 0) until endPair; springs to a fixed point need none.
 		void beginPair(long b1, long b2)
@@ -371,6 +375,19 @@ namespace rdem {
 
 	/// Result of lanczosLargest: the largest Ritz value θ [1/s²], its residual norm r (an eigenvalue of A lies in
 	/// [θ - r, θ + r]), and the Lanczos steps taken.
+	/// λ_max of S_b X S_b over body b's free DOFs, X a 6×6 symmetric block (diagonalBlock) in global axes, S_b its mass
+	/// normalisation (bodyScale) [units of X over kg, e.g. 1/s for dashpots]; 0 for a fixed body.
+	template <class S> S largestBlockEigenvalue(const Eigen::Matrix<S, 6, 6>& X, const BodyScale<S>& scale)
+	{
+		Eigen::Matrix<S, 6, 6> T = Eigen::Matrix<S, 6, 6>::Zero();
+		T.template topLeftCorner<3, 3>().diagonal().setConstant(scale.invSqrtMass);
+		T.template bottomRightCorner<3, 3>() = scale.invSqrtInertia;
+		for (int k = 0; k < 6; ++k)
+			if (!scale.free[size_t(k)]) T.col(k).setZero();
+		const Eigen::Matrix<S, 6, 6> A = T.transpose() * X * T;
+		return Eigen::SelfAdjointEigenSolver<Eigen::Matrix<S, 6, 6>>(A, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+	}
+
 	template <class S> struct LargestEigenvalue {
 		S   ritz     = 0;
 		S   residual = 0;
