@@ -60,7 +60,7 @@ RULES = {
                   'E_cm = 31 GPa), rigid against the wall'),
         'loading': ('monotonic push of the top beam to the positive side', 'the envelope of the cyclic test; compared with the mean of the '
                     'measured positive and negative peaks'),
-        'quasiStatic': (dict(rate=0.04, damping=0.2, inertiaScaling=True, densityScaling=2.0, rampTravel=1e-3, compressTime=0.02, drift=0.006, pastPeak=2.0, maxDrift=0.02,
+        'quasiStatic': (dict(rate=0.04, damping=0.2, inertiaScaling=True, densityScaling=1.0, rampTravel=1e-3, compressTime=0.02, drift=0.006, pastPeak=2.0, maxDrift=0.02,
                              stopDrop=0.2, smoothDrift=2e-4),
                         'the user guide, validation, "Quasi-static loading in fewer steps": the top beam at rate [m/s], its velocity ramped up over rampTravel [m] '
                         "of travel; Cundall's non-viscous damping; the blocks' rotational inertia scaled (rdem.quasi_static) or not; partial density "
