@@ -287,7 +287,7 @@ TEST(SeparationBound, AWitnessBelowTheToleranceMeansBlocksOverlapIsFalse)
 {
 	// Grid neighbours of a dry stack, 2 cm blocks near (0.3, 0.2, 0.1) m: edge neighbours (along x and z) pressed
 	// into each other along z by d, with x touching (overlap e along x, from -1e-10 to 2e-11 m, tol = 1e-11 m), turned
-	// by up to 1e-6 rad. Where the witness (faceSeparation's axis) is below tol less the round-off bound,
+	// by up to 1e-10 rad (a turn of 1e-6 rad would widen their projections by 1e-8 m, far beyond tol). Where the witness (faceSeparation's axis) is below tol less the round-off bound,
 	// blocksOverlap is false; a witness above tol means the full test decides.
 	std::mt19937 gen(5);
 	const V3     h(0.01, 0.01, 0.01);
@@ -297,7 +297,7 @@ TEST(SeparationBound, AWitnessBelowTheToleranceMeansBlocksOverlapIsFalse)
 		const V3     xA(0.3, 0.2, 0.1);
 		const double e = uniform(gen, -1e-10, 2e-11), d = uniform(gen, 0, 1e-7);
 		const V3     xB = xA + V3(0.02 - e, uniform(gen, -1e-8, 1e-8), 0.02 - d);
-		const Q      qA(Eigen::AngleAxisd(uniform(gen, 0, 1e-6), randomUnit(gen))), qB(Eigen::AngleAxisd(uniform(gen, 0, 1e-6), randomUnit(gen)));
+		const Q      qA(Eigen::AngleAxisd(uniform(gen, 0, 1e-10), randomUnit(gen))), qB(Eigen::AngleAxisd(uniform(gen, 0, 1e-10), randomUnit(gen)));
 		const rdem::BlockPair<double> pair(blockAt(xA, qA, h), blockAt(xB, qB, h));
 		const int                     axis = rdem::faceSeparation(pair, tolGrid).axis;
 		const double                  o    = rdem::faceAxisOverlap<double>(xA, qA, h, xB, qB, h, axis);
@@ -306,5 +306,5 @@ TEST(SeparationBound, AWitnessBelowTheToleranceMeansBlocksOverlapIsFalse)
 			EXPECT_FALSE(rdem::blocksOverlap(pair, tolGrid)) << "pair " << k;
 		}
 	}
-	EXPECT_GT(decided, 1000); // most pairs touch within the tolerance and are decided by the witness
+	EXPECT_GT(decided, 1500); // most pairs touch within the tolerance and are decided by the witness (91 % of e)
 }
