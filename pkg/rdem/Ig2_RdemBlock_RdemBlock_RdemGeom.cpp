@@ -274,30 +274,30 @@ void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom
 		        "Ig2_RdemBlock_RdemBlock_RdemGeom.prefetchDistance = " + std::to_string(prefetchDistance) + ": must be -1 (automatic), 0 (off) or > 0");
 }
 
-bool Ig2_RdemBlock_RdemBlock_RdemGeom::stillApart(const Interaction& I) const
-{
-	const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr; // recorded by RdemContactGate
-	if (!I.geom || !travel || !travel->currentFor(*scene) || I.geom->getClassIndex() != RdemGap::getClassIndexStatic()) return false;
-	const auto& gap = static_cast<const RdemGap&>(*I.geom);
-	return gap.epoch == travel->epoch && travel->travel[size_t(I.getId1())] + travel->travel[size_t(I.getId2())] < gap.reach;
-}
-
-bool Ig2_RdemBlock_RdemBlock_RdemGeom::apartOnWitness(
+bool Ig2_RdemBlock_RdemBlock_RdemGeom::knownApart(
         Interaction& I, const Vector3r& hA, const Vector3r& hB, const State& s1, const State& s2, const Vector3r& shift2)
 {
-	if (!skipApart || !I.geom || I.geom->getClassIndex() != RdemGap::getClassIndexStatic()) return false;
-	auto& gap = static_cast<RdemGap&>(*I.geom);
-	if (gap.witness < 0) return false;
+	if (!I.geom || I.geom->getClassIndex() != RdemGap::getClassIndexStatic()) return false;
+	auto&                   gap    = static_cast<RdemGap&>(*I.geom);
+	const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr; // recorded by RdemContactGate
+	const bool              moved  = travel && travel->currentFor(*scene);
+	const Real              t      = moved ? travel->travel[size_t(I.getId1())] + travel->travel[size_t(I.getId2())] : Real(0);
+	if (moved && gap.epoch == travel->epoch && t < gap.reach) {
+		skippedTests += 1; // the certificate holds
+		return true;
+	}
+	if (!skipApart || gap.witness < 0) return false;
 	const Vector3r xB  = s2.pos + shift2;
 	const Real     tol = touchTolerance(hA, hB);
 	const Real     o   = rdem::faceAxisOverlap<Real>(s1.pos, s1.ori, hA, xB, s2.ori, hB, gap.witness);
 	const Real     eps = rdem::faceAxisRoundOff<Real>(s1.pos, hA, xB, hB);
 	if (!(o <= tol - eps)) return false; // tested in full (findContact)
-	// The witness leaves a slack of at least tol - o - eps on its axis: a certificate if that exceeds the margin.
-	const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr;
-	const Real              slack  = tol - o - eps - rdem::separationMargin<Real>(hA, hB);
-	if (slack > 0 && travel && travel->currentFor(*scene)) {
-		gap.reach = travel->travel[size_t(I.getId1())] + travel->travel[size_t(I.getId2())] + slack;
+	witnessTests += 1;
+	/* The witness leaves a slack of at least tol - o - eps on its axis: a certificate if that exceeds the margin (its
+	   square roots only where it may: the margin is at least 1e-6 of the largest half-extents). */
+	const Real slack = tol - o - eps;
+	if (moved && slack > Real(1e-6) * (hA.maxCoeff() + hB.maxCoeff()) && slack > rdem::separationMargin<Real>(hA, hB)) {
+		gap.reach = t + slack - rdem::separationMargin<Real>(hA, hB);
 		gap.epoch = travel->epoch;
 	}
 	return true;
@@ -334,7 +334,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 	const Real                  tol = touchTolerance(A, B);
 	if (!rdem::blocksOverlap<Real>(pair, tol)) {
 		/* Apart: a certificate of how long they stay so (rdem::separationSlack), if the blocks' travel is recorded, and the
-		   face axis of least overlap as the witness tested first at the next step, if it separates them (apartOnWitness). */
+		   face axis of least overlap as the witness tested first at the next step, if it separates them (knownApart). */
 		if (!skipApart) return false;
 		const rdem::BodyTravel*          travel  = shared ? &shared->travel : nullptr;
 		const rdem::FaceSeparation<Real> sep     = rdem::faceSeparation<Real>(pair, tol);
@@ -480,15 +480,9 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 		        ->updateBond(state1.ori.toRotationMatrix(), state2.ori.toRotationMatrix(), state2.pos + shift2 - state1.pos);
 		return true;
 	}
-	if (!I->phys && !force && stillApart(*I)) {
-		skippedTests += 1;
-		return false;
-	}
 	if (!I->phys && !force
-	    && apartOnWitness(*I, static_cast<RdemBlock*>(shape1.get())->extents, static_cast<RdemBlock*>(shape2.get())->extents, state1, state2, shift2)) {
-		witnessTests += 1;
+	    && knownApart(*I, static_cast<RdemBlock*>(shape1.get())->extents, static_cast<RdemBlock*>(shape2.get())->extents, state1, state2, shift2))
 		return false;
-	}
 	// A face-to-face contact whose blocks have not moved enough to change its patch: its springs are in place.
 	if (I->phys && static_cast<RdemGeom*>(I->geom.get())->nPatch() > 0
 	    && withinPatchTravel(*static_cast<RdemGeom*>(I->geom.get()), state1, state2, shift2)) {

@@ -90,12 +90,12 @@ Not for periodic cells with shear (``shift2`` of the cell is honoured, the cell'
 	DECLARE_LOGGER;
 
 private:
-	/// Whether I is a pair found apart whose RdemGap still holds for the blocks' travel in this step.
-	bool stillApart(const Interaction& I) const;
-	/* Whether I is a pair found apart whose RdemGap::witness axis still separates the blocks (half-extents hA, hB) in this
-	   step by more than the round-off (rdem::faceAxisOverlap, faceAxisRoundOff), so that blocksOverlap would return
-	   false; then, with the travel recorded, a certificate of the slack that axis leaves if it is positive. */
-	bool apartOnWitness(Interaction& I, const Vector3r& hA, const Vector3r& hB, const State& s1, const State& s2, const Vector3r& shift2);
+	/* Whether I is a pair found apart (an RdemGap) that is still apart in this step, without the full test: its
+	   certificate holds for the blocks' travel (counted in skippedTests), or its witness axis still separates the blocks
+	   (half-extents hA, hB) by more than the round-off (rdem::faceAxisOverlap, faceAxisRoundOff), so that blocksOverlap
+	   would return false (counted in witnessTests; then, with the travel recorded, a certificate of the slack that axis
+	   leaves if it exceeds the margin). */
+	bool knownApart(Interaction& I, const Vector3r& hA, const Vector3r& hB, const State& s1, const State& s2, const Vector3r& shift2);
 	/// Bonding (utils.createInteraction): the shared face of A and B cut into segmentsPerEdge² segments; false if none.
 	bool bond(const rdem::OrientedBlock<Real>& A, const rdem::OrientedBlock<Real>& B, const shared_ptr<Interaction>& I) const;
 	/// A pair that is not a real interaction: a new contact if samples of either block lie inside the other; else

@@ -95,20 +95,11 @@ namespace rdem {
 	   false at the first one whose overlap is not above tol, then returns false too. Otherwise the pair is tested in
 	   full again. */
 
-	/// Column i of the rotation matrix of the unit quaternion q: the body axis i in global coordinates.
-	template <class S> Eigen::Matrix<S, 3, 1> rotationColumn(const Eigen::Quaternion<S>& q, int i)
-	{
-		const S w = q.w(), x = q.x(), y = q.y(), z = q.z();
-		switch (i) {
-			case 0: return Eigen::Matrix<S, 3, 1>(1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y));
-			case 1: return Eigen::Matrix<S, 3, 1>(2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x));
-			default: return Eigen::Matrix<S, 3, 1>(2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y));
-		}
-	}
-
 	/* Overlap of the projections of blocks A and B (centroids xA, xB [m], unit orientations qA, qB, half-extents hA, hB
 	   [m]) on the face axis `axis` (0–2: A's axis a_i, 3–5: B's b_j) [m]: BlockPair::overlapA(i), overlapB(j) without the
-	   two rotation matrices and C. Along a_i: h_Ai + Σ_j |(R_Bᵀ a_i)_j| h_Bj - |a_i·(xB - xA)|, and alike along b_j. */
+	   two rotation matrices and C. Along a_i: h_Ai + Σ_j |(R_Bᵀ a_i)_j| h_Bj - |a_i·(xB - xA)|, and alike along b_j; a_i is
+	   column i of R_A from the quaternion's components, R_Bᵀ a_i the rotation by B's conjugate quaternion
+	   (v + w t + u × t with t = 2 u × v, u = -q_B's vector part, w its scalar part), written out so that it inlines. */
 	template <class S>
 	S faceAxisOverlap(
 	        const Eigen::Matrix<S, 3, 1>& xA,
@@ -120,11 +111,31 @@ namespace rdem {
 	        int                           axis)
 	{
 		using std::abs;
-		const bool                   onA = axis < 3;
-		const int                    i   = onA ? axis : axis - 3;
-		const Eigen::Matrix<S, 3, 1> a   = rotationColumn(onA ? qA : qB, i);
-		const Eigen::Matrix<S, 3, 1> inY = (onA ? qB : qA).conjugate() * a; // a in the other block's frame
-		return (onA ? hA : hB)[i] + inY.cwiseAbs().dot(onA ? hB : hA) - abs(a.dot(xB - xA));
+		const bool                  onA = axis < 3;
+		const int                   i   = onA ? axis : axis - 3;
+		const Eigen::Quaternion<S>& qX  = onA ? qA : qB;
+		const Eigen::Quaternion<S>& qY  = onA ? qB : qA;
+		const S                     w = qX.w(), x = qX.x(), y = qX.y(), z = qX.z();
+		S                           a0, a1, a2; // column i of R_X
+		if (i == 0) {
+			a0 = 1 - 2 * (y * y + z * z);
+			a1 = 2 * (x * y + w * z);
+			a2 = 2 * (x * z - w * y);
+		} else if (i == 1) {
+			a0 = 2 * (x * y - w * z);
+			a1 = 1 - 2 * (x * x + z * z);
+			a2 = 2 * (y * z + w * x);
+		} else {
+			a0 = 2 * (x * z + w * y);
+			a1 = 2 * (y * z - w * x);
+			a2 = 1 - 2 * (x * x + y * y);
+		}
+		const S u0 = -qY.x(), u1 = -qY.y(), u2 = -qY.z(), qw = qY.w();
+		const S t0 = 2 * (u1 * a2 - u2 * a1), t1 = 2 * (u2 * a0 - u0 * a2), t2 = 2 * (u0 * a1 - u1 * a0);
+		const S v0 = a0 + qw * t0 + (u1 * t2 - u2 * t1), v1 = a1 + qw * t1 + (u2 * t0 - u0 * t2), v2 = a2 + qw * t2 + (u0 * t1 - u1 * t0);
+		const Eigen::Matrix<S, 3, 1>& hX = onA ? hA : hB;
+		const Eigen::Matrix<S, 3, 1>& hY = onA ? hB : hA;
+		return hX[i] + (abs(v0) * hY[0] + abs(v1) * hY[1] + abs(v2) * hY[2]) - abs(a0 * (xB[0] - xA[0]) + a1 * (xB[1] - xA[1]) + a2 * (xB[2] - xA[2]));
 	}
 
 	/* Bound on the difference between faceAxisOverlap and BlockPair's value of the same overlap [m]: 1e-12 of
