@@ -280,11 +280,15 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::knownApart(
 	if (!I.geom || I.geom->getClassIndex() != RdemGap::getClassIndexStatic()) return false;
 	auto&                   gap    = static_cast<RdemGap&>(*I.geom);
 	const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr; // recorded by RdemContactGate
-	const bool              moved  = travel && travel->currentFor(*scene);
-	const Real              t      = moved ? travel->travel[size_t(I.getId1())] + travel->travel[size_t(I.getId2())] : Real(0);
-	if (moved && gap.epoch == travel->epoch && t < gap.reach) {
-		skippedTests += 1; // the certificate holds
-		return true;
+	// The summed travel of the two blocks if it is recorded for this step, else -1 (asked only for a certificate).
+	const auto travelled
+	        = [&]() { return travel && travel->currentFor(*scene) ? travel->travel[size_t(I.getId1())] + travel->travel[size_t(I.getId2())] : Real(-1); };
+	if (gap.epoch >= 0 && gap.epoch == (travel ? travel->epoch : -1)) {
+		const Real t = travelled();
+		if (t >= 0 && t < gap.reach) {
+			skippedTests += 1; // the certificate holds
+			return true;
+		}
 	}
 	if (!skipApart || gap.witness < 0) return false;
 	const Vector3r xB  = s2.pos + shift2;
@@ -296,9 +300,12 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::knownApart(
 	/* The witness leaves a slack of at least tol - o - eps on its axis: a certificate if that exceeds the margin (its
 	   square roots only where it may: the margin is at least 1e-6 of the largest half-extents). */
 	const Real slack = tol - o - eps;
-	if (moved && slack > Real(1e-6) * (hA.maxCoeff() + hB.maxCoeff()) && slack > rdem::separationMargin<Real>(hA, hB)) {
-		gap.reach = t + slack - rdem::separationMargin<Real>(hA, hB);
-		gap.epoch = travel->epoch;
+	if (slack > Real(1e-6) * (hA.maxCoeff() + hB.maxCoeff()) && slack > rdem::separationMargin<Real>(hA, hB)) {
+		const Real t = travelled();
+		if (t >= 0) {
+			gap.reach = t + slack - rdem::separationMargin<Real>(hA, hB);
+			gap.epoch = travel->epoch;
+		}
 	}
 	return true;
 }
