@@ -61,7 +61,10 @@ namespace rdem {
 	   their 15 axes, so one of them overlaps by less than tol - margin; blocksOverlap skips only the cross products of
 	   edges within 1e-9 rad of parallel, whose facets are slivers of width ~1e-9 of an edge, moving the least tested
 	   overlap by about 1e-9 of the blocks' size, far inside the margin of 1e-6 (which also covers the round-off, ~1e-16
-	   of the coordinates). So blocksOverlap finds an axis with overlap ≤ tol and returns false. */
+	   of the coordinates). So blocksOverlap finds an axis with overlap ≤ tol and returns false.
+
+	   faceSeparation gives the slack with the face axis it comes from (the pair's witness, below); separationSlack the
+	   slack alone. */
 	template <class S> struct FaceSeparation {
 		S   slack = -std::numeric_limits<S>::infinity(); ///< separationSlack [m]
 		int axis  = -1; ///< the face axis of least overlap (0–2: A's, 3–5: B's, as SeparatingAxes::face), -1 if none is finite
