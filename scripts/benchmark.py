@@ -56,6 +56,7 @@ Expected result
 How to run (about 9 minutes with the default two rounds; --quick --repeat 1: 2 minutes, no 46³ cube)
     build/bin/yade -n scripts/benchmark.py [--cases paper crack cpm effects scaling] [--sizes 10 22 46] [--quick] [--repeat N] [--out doc/benchmark.md]
     build/bin/yade -n scripts/benchmark.py --cases phases collapse instructions --repeat 3 --out doc/contact-phase.md   the contact phase
+    build/bin/yade -n scripts/benchmark.py --save-collapse 300 /tmp/collapse-300.yade.gz   the collapse's state, for scripts/profile_step.py
 """
 import argparse
 import json
@@ -77,6 +78,8 @@ parser.add_argument('--sizes', type=int, nargs='+', default=None, help='blocks p
 parser.add_argument('--repeat', type=int, default=2, help='run the whole plan this many times, round robin, and keep each case\'s fastest round (default 2)')
 parser.add_argument('--out', default='doc/benchmark.md', help='markdown table to write (default doc/benchmark.md)')
 parser.add_argument('--collapse-blocks', type=int, default=22, help='blocks per edge of the collapsing cube (default 22)')
+parser.add_argument('--save-collapse', nargs=2, metavar=('STEPS', 'PATH'), default=None,
+                    help='only save the collapsing cube (--collapse-blocks) after STEPS steps to PATH (O.save; for scripts/profile_step.py --state PATH) and exit')
 parser.add_argument('--wall-blocks', type=float, default=1e5, help='blocks of the bigwall case, about (default 1e5)')
 parser.add_argument('--child', default=None, help=argparse.SUPPRESS)  # internal: run one case in this process
 cli = parser.parse_args(sys.argv[1:])
@@ -280,6 +283,15 @@ def runCollapse(spec):
 	return out
 
 
+def runCollapseSave(spec):
+	"""The collapsing cube (collapseScene) run spec['steps'] steps and saved to spec['save']."""
+	from yade import O
+	collapseScene(spec['blocks'])
+	O.run(spec['steps'], True)
+	O.save(spec['save'])
+	return dict(bodies=len(O.bodies), steps=O.iter, dt=O.dt, interactions=len(O.interactions.all()), real=sum(1 for I in O.interactions if I.isReal))
+
+
 def runCount(spec):
 	"""The paper scene (or a cube of spec['blocks'] per edge, time step from RdemTimeStepper; or the state saved in
 	spec['load']), built and stepped spec['steps'] times under callgrind (see countInstructions)."""
@@ -433,7 +445,7 @@ def heavyCrackedState():
 
 
 def child(spec):
-	res = dict(cpm=runCpm, crack=runCrack, count=runCount, phases=runPhases, collapse=runCollapse, heavysave=runHeavySave,
+	res = dict(cpm=runCpm, crack=runCrack, count=runCount, phases=runPhases, collapse=runCollapse, collapsesave=runCollapseSave, heavysave=runHeavySave,
 	           loaded=runLoaded, bigwall=runBigWall).get(spec['kind'], runRdem)(spec)
 	res['threads'] = int(os.environ.get('OMP_NUM_THREADS', '1'))
 	rdem.batch.reportChild(res)
@@ -441,6 +453,11 @@ def child(spec):
 
 if cli.child is not None:
 	child(json.loads(cli.child))
+	sys.exit(0)
+if cli.save_collapse:
+	res = rdem.batch.runChild(dict(kind='collapsesave', blocks=cli.collapse_blocks, steps=int(cli.save_collapse[0]), save=cli.save_collapse[1]), 1)
+	print('benchmark: the collapse (%d bodies) saved after %d steps to %s: dt %.3g s, %d interactions, %d real' %
+	      (res['bodies'], res['steps'], cli.save_collapse[1], res['dt'], res['interactions'], res['real']))
 	sys.exit(0)
 
 steps = cli.steps // 3 if cli.quick else cli.steps

@@ -36,7 +36,8 @@ namespace {
 	}
 
 	/// Overlaps below this are touching, not contact: grid neighbours along an edge or a corner overlap by round-off [m].
-	Real touchTolerance(const Block& A, const Block& B) { return 1e-9 * math::min(A.half.minCoeff(), B.half.minCoeff()); }
+	Real touchTolerance(const Vector3r& hA, const Vector3r& hB) { return 1e-9 * math::min(hA.minCoeff(), hB.minCoeff()); }
+	Real touchTolerance(const Block& A, const Block& B) { return touchTolerance(A.half, B.half); }
 
 	/// How far outside a block a vertex may lie and still count as on its surface (rdem::facesCross): round-off of the
 	/// positions of blocks laid side by side, 1e-6 of the smaller half-extent [m].
@@ -273,12 +274,40 @@ void Ig2_RdemBlock_RdemBlock_RdemGeom::postLoad(Ig2_RdemBlock_RdemBlock_RdemGeom
 		        "Ig2_RdemBlock_RdemBlock_RdemGeom.prefetchDistance = " + std::to_string(prefetchDistance) + ": must be -1 (automatic), 0 (off) or > 0");
 }
 
-bool Ig2_RdemBlock_RdemBlock_RdemGeom::stillApart(const Interaction& I) const
+bool Ig2_RdemBlock_RdemBlock_RdemGeom::knownApart(
+        Interaction& I, const Vector3r& hA, const Vector3r& hB, const State& s1, const State& s2, const Vector3r& shift2)
 {
+	if (!I.geom || I.geom->getClassIndex() != RdemGap::getClassIndexStatic()) return false;
+	auto&                   gap    = static_cast<RdemGap&>(*I.geom);
 	const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr; // recorded by RdemContactGate
-	if (!I.geom || !travel || !travel->currentFor(*scene) || I.geom->getClassIndex() != RdemGap::getClassIndexStatic()) return false;
-	const auto& gap = static_cast<const RdemGap&>(*I.geom);
-	return gap.epoch == travel->epoch && travel->travel[size_t(I.getId1())] + travel->travel[size_t(I.getId2())] < gap.reach;
+	// The summed travel of the two blocks if it is recorded for this step, else -1 (asked only for a certificate).
+	const auto travelled
+	        = [&]() { return travel && travel->currentFor(*scene) ? travel->travel[size_t(I.getId1())] + travel->travel[size_t(I.getId2())] : Real(-1); };
+	if (gap.epoch >= 0 && gap.epoch == (travel ? travel->epoch : -1)) {
+		const Real t = travelled();
+		if (t >= 0 && t < gap.reach) {
+			skippedTests += 1; // the certificate holds
+			return true;
+		}
+	}
+	if (!skipApart || gap.witness < 0) return false;
+	const Vector3r xB  = s2.pos + shift2;
+	const Real     tol = touchTolerance(hA, hB);
+	const Real     o   = rdem::faceAxisOverlap<Real>(s1.pos, s1.ori, hA, xB, s2.ori, hB, gap.witness);
+	const Real     eps = rdem::faceAxisRoundOff<Real>(s1.pos, hA, xB, hB);
+	if (!(o <= tol - eps)) return false; // tested in full (findContact)
+	witnessTests += 1;
+	/* The witness leaves a slack of at least tol - o - eps on its axis: a certificate if that exceeds the margin (its
+	   square roots only where it may: the margin is at least 1e-6 of the largest half-extents). */
+	const Real slack = tol - o - eps;
+	if (slack > Real(1e-6) * (hA.maxCoeff() + hB.maxCoeff()) && slack > rdem::separationMargin<Real>(hA, hB)) {
+		const Real t = travelled();
+		if (t >= 0) {
+			gap.reach = t + slack - rdem::separationMargin<Real>(hA, hB);
+			gap.epoch = travel->epoch;
+		}
+	}
+	return true;
 }
 
 bool Ig2_RdemBlock_RdemBlock_RdemGeom::bond(const Block& A, const Block& B, const shared_ptr<Interaction>& I) const
@@ -311,15 +340,20 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 	const rdem::BlockPair<Real> pair(A, B);
 	const Real                  tol = touchTolerance(A, B);
 	if (!rdem::blocksOverlap<Real>(pair, tol)) {
-		// Apart: a certificate of how long they stay so (rdem::separationSlack), if the blocks' travel is recorded.
-		const rdem::BodyTravel* travel = shared ? &shared->travel : nullptr;
-		const Real              slack  = skipApart && travel && travel->currentFor(*scene) ? rdem::separationSlack<Real>(pair, tol) : Real(-1);
-		if (slack > 0) {
-			if (!I->geom || I->geom->getClassIndex() != RdemGap::getClassIndexStatic()) I->geom = shared_ptr<RdemGap>(new RdemGap);
-			auto& gap = static_cast<RdemGap&>(*I->geom);
-			gap.reach = travel->travel[size_t(I->getId1())] + travel->travel[size_t(I->getId2())] + slack;
-			gap.epoch = travel->epoch;
-		}
+		/* Apart: a certificate of how long they stay so (rdem::separationSlack), if the blocks' travel is recorded, and the
+		   face axis of least overlap as the witness tested first at the next step, if it separates them (knownApart). */
+		if (!skipApart) return false;
+		const rdem::BodyTravel*          travel  = shared ? &shared->travel : nullptr;
+		const rdem::FaceSeparation<Real> sep     = rdem::faceSeparation<Real>(pair, tol);
+		const bool                       certify = travel && travel->currentFor(*scene) && sep.slack > 0;
+		const int  witness = sep.axis >= 0 && !((sep.axis < 3 ? pair.overlapA(sep.axis) : pair.overlapB(sep.axis - 3)) > tol) ? sep.axis : -1;
+		const bool hasGap  = I->geom && I->geom->getClassIndex() == RdemGap::getClassIndexStatic();
+		if (!certify && witness < 0 && !hasGap) return false;
+		if (!hasGap) I->geom = shared_ptr<RdemGap>(new RdemGap);
+		auto& gap   = static_cast<RdemGap&>(*I->geom);
+		gap.witness = witness;
+		gap.epoch   = certify ? travel->epoch : -1;
+		if (certify) gap.reach = travel->travel[size_t(I->getId1())] + travel->travel[size_t(I->getId2())] + sep.slack;
 		return false;
 	}
 	const bool triedPatch = persistentContacts;
@@ -453,10 +487,9 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 		        ->updateBond(state1.ori.toRotationMatrix(), state2.ori.toRotationMatrix(), state2.pos + shift2 - state1.pos);
 		return true;
 	}
-	if (!I->phys && !force && stillApart(*I)) {
-		skippedTests += 1;
+	if (!I->phys && !force
+	    && knownApart(*I, static_cast<RdemBlock*>(shape1.get())->extents, static_cast<RdemBlock*>(shape2.get())->extents, state1, state2, shift2))
 		return false;
-	}
 	// A face-to-face contact whose blocks have not moved enough to change its patch: its springs are in place.
 	if (I->phys && static_cast<RdemGeom*>(I->geom.get())->nPatch() > 0
 	    && withinPatchTravel(*static_cast<RdemGeom*>(I->geom.get()), state1, state2, shift2)) {

@@ -22,9 +22,10 @@ public:
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RdemGap,IGeom,R"""(Certificate of a pair of :yref:`RdemBlock` that the collider found near each other (their bounding boxes overlap) but that are apart: the geometry of a potential, not real, interaction (it has no physics), made by :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom` with :yref:`skipApart<Ig2_RdemBlock_RdemBlock_RdemGeom::skipApart>`.
 
-The blocks cannot overlap before the projections of both on one separating axis have grown by the slack $s$ (``rdem::separationSlack``), and every point of a block moves at most its travel, recorded by :yref:`RdemContactGate` (``rdem::rigidTravel`` summed over steps). The functor tests the pair again only once the travels $T_1+T_2$ of its two blocks reach ``reach`` $=T_1+T_2+s$ at the time of the certificate. Not saved: a loaded scene tests every pair again.)""",
+The blocks cannot overlap before the projections of both on one separating axis have grown by the slack $s$ (``rdem::separationSlack``), and every point of a block moves at most its travel, recorded by :yref:`RdemContactGate` (``rdem::rigidTravel`` summed over steps). The functor tests the pair again only once the travels $T_1+T_2$ of its two blocks reach ``reach`` $=T_1+T_2+s$ at the time of the certificate. Pairs that only touch (grid neighbours along an edge or at a corner: slack below the margin, no certificate) keep the face axis that separated them (``witness``), tested alone first at the next step (``rdem::faceAxisOverlap``, [Rabbitz1994]_). Not saved: a loaded scene tests every pair again.)""",
 		((Real,reach,0,(Attr::noSave|Attr::readonly),"Summed travel of the two blocks up to which they stay apart [m]."))
 		((long,epoch,-1,(Attr::noSave|Attr::readonly),"The travel record the certificate refers to (-1: none, the pair is tested)."))
+		((int,witness,-1,(Attr::noSave|Attr::readonly),"The face axis along which the blocks' projections overlapped least when last tested in full (0–2: body 1's axes, 3–5: body 2's), tested first at the next step; -1: none."))
 		,
 		/* ctor */ createIndex();
 		,
@@ -52,6 +53,9 @@ public:
 	   -Wmaybe-uninitialized (YADE's own HertzMindlin.hpp and ViscoelasticCapillarPM.hpp give the same warning). */
 	OpenMPAccumulator<Real> skippedTests;
 	Real                    skippedTestsPy() const { return skippedTests.get(); }
+	/// Pairs found apart by their witness axis alone (RdemGap::witness), summed over threads; not an attribute (above).
+	OpenMPAccumulator<Real> witnessTests;
+	Real                    witnessTestsPy() const { return witnessTests.get(); }
 	/// The sample grid of sampled contacts: contactSamplesPerEdge, or segmentsPerEdge if that is 0.
 	int contactSamples() const { return contactSamplesPerEdge > 0 ? contactSamplesPerEdge : segmentsPerEdge; }
 	// clang-format off
@@ -68,7 +72,7 @@ Not for periodic cells with shear (``shift2`` of the cell is honoured, the cell'
 		((int,contactSamplesPerEdge,1,Attr::triggerPostLoad,"$m$: the sample grid of sampled contacts (blocks that are not bonded) is $(m+1)\\times(m+1)$ points per face, trapezoid weights; 0: $m$ = ``segmentsPerEdge``. $m=1$ (default) samples the vertices, as the contacts of the distinct element codes (UDEC, 3DEC, [Cundall1988]_): for rigid blocks the forces at the corners of a flat contact span every resultant it can carry, and rocking impacts follow Housner's angular momentum balance about the new corner ([Housner1963]_: the energy kept through an impact within 3.4 % of $\\eta^2$ for $h/b$ = 2.5 to 20), while samples inside a face store impact energy in their springs and give it back as the block rolls onto the new corner (+6 to +8 % with 3 to 9 samples per edge). Where two blocks overlap and no vertex of either is inside the other (faces that cross), the contact samples the grid of ``segmentsPerEdge`` instead. $m\\ge 0$."))
 		((Real,bondGapTolerance,1e-6,Attr::triggerPostLoad,"Largest gap or overlap between two faces that are bonded, relative to the smaller half-extent of the two blocks."))
 		((shared_ptr<RdemJoint>,joint,,,"The :yref:`RdemJoint` given to the bonds made from now on (by ``utils.createInteraction``), or None (default): blocks bonded directly. ``rdem.bond(..., joint=...)`` sets it for its bonds and resets it."))
-		((bool,skipApart,true,,"Test a pair of blocks found apart again only once they may have moved enough to touch (:yref:`RdemGap`, with the travel recorded by :yref:`RdemContactGate`): after the first crack, the collider's pairs of grid neighbours that are apart by a strain-sized gap cost a few loads per step instead of a separating-axis test. Likewise a sampled contact tests only its samples that lay within 2 % of the smaller half-extent of the other block when last all were tested, until the blocks may have moved that far (``rdem::sampleOutside``): grid neighbours strained into each other along an edge test the samples of that edge, not every face. Exact: the pairs and samples skipped are those the tests would find apart, so results do not depend on it."))
+		((bool,skipApart,true,,"Test a pair of blocks found apart again only once they may have moved enough to touch (:yref:`RdemGap`, with the travel recorded by :yref:`RdemContactGate`): after the first crack, the collider's pairs of grid neighbours that are apart by a strain-sized gap cost a few loads per step instead of a separating-axis test. A pair that only touches (no certificate) is tested first along the face axis that separated it in the last step (:yref:`RdemGap.witness`): one overlap instead of two rotation matrices and the separating-axis test. Likewise a sampled contact tests only its samples that lay within 2 % of the smaller half-extent of the other block when last all were tested, until the blocks may have moved that far (``rdem::sampleOutside``): grid neighbours strained into each other along an edge test the samples of that edge, not every face. Exact: the pairs and samples skipped are those the tests would find apart, so results do not depend on it."))
 		((shared_ptr<RdemSharedState>,shared,,,"What the plugin's engines share (:yref:`RdemSharedState`): the blocks' travel, recorded by :yref:`RdemContactGate` (handed by ``rdem.engines()``; None: the law's, taken at the first step; pairs are not skipped without it)."))
 		((bool,persistentContacts,true,,"Blocks whose faces meet face to face get a persistent patch of contact springs (``rdem::facePatch``, above) instead of sample points tested every step (the default); False: every contact is sampled (the reference the patch is tested against, tests/yade/test_persistent_contact.py)."))
 		((Real,patchAngleTolerance,5e-5,Attr::triggerPostLoad,"Two faces meet face to face when their outward normals satisfy $\\mathbf{n}_1\\cdot\\mathbf{n}_2\\le-(1-\\epsilon_\\theta)$: the default $5\\times10^{-5}$ is an angle of 0.01 rad, across which the depth of a face of size $L$ varies by $0.01L$, far beyond an elastic contact's overlap: a tilted block touches by an edge, which the patch's springs on the edge also carry, and the force direction differs from the sampled contact's by at most half that angle. $0<\\epsilon_\\theta<1$."))
@@ -78,6 +82,7 @@ Not for periodic cells with shear (``shift2`` of the cell is honoured, the cell'
 		/* ctor */
 		,
 		.add_property("skippedTests",&Ig2_RdemBlock_RdemBlock_RdemGeom::skippedTestsPy,"Separating-axis tests saved so far by :yref:`RdemGap` certificates (pairs found apart and not tested again in a step), counted as a real number; not saved with the scene.")
+		.add_property("witnessTests",&Ig2_RdemBlock_RdemBlock_RdemGeom::witnessTestsPy,"Pairs found apart so far by their :yref:`RdemGap.witness` axis alone (no full separating-axis test in that step), counted as a real number; not saved with the scene.")
 	);
 	// clang-format on
 	FUNCTOR2D(RdemBlock, RdemBlock);
@@ -85,8 +90,12 @@ Not for periodic cells with shear (``shift2`` of the cell is honoured, the cell'
 	DECLARE_LOGGER;
 
 private:
-	/// Whether I is a pair found apart whose RdemGap still holds for the blocks' travel in this step.
-	bool stillApart(const Interaction& I) const;
+	/* Whether I is a pair found apart (an RdemGap) that is still apart in this step, without the full test: its
+	   certificate holds for the blocks' travel (counted in skippedTests), or its witness axis still separates the blocks
+	   (half-extents hA, hB) by more than the round-off (rdem::faceAxisOverlap, faceAxisRoundOff), so that blocksOverlap
+	   would return false (counted in witnessTests; then, with the travel recorded, a certificate of the slack that axis
+	   leaves if it exceeds the margin). */
+	bool knownApart(Interaction& I, const Vector3r& hA, const Vector3r& hB, const State& s1, const State& s2, const Vector3r& shift2);
 	/// Bonding (utils.createInteraction): the shared face of A and B cut into segmentsPerEdge² segments; false if none.
 	bool bond(const rdem::OrientedBlock<Real>& A, const rdem::OrientedBlock<Real>& B, const shared_ptr<Interaction>& I) const;
 	/// A pair that is not a real interaction: a new contact if samples of either block lie inside the other; else

@@ -7,6 +7,7 @@
 #include <core/Body.hpp>
 #include <core/BodyContainer.hpp>
 #include <core/State.hpp>
+#include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
 #include <pkg/rdem/RdemGeom.hpp>
 #include <pkg/rdem/RdemPhys.hpp>
 #include <pkg/rdem/RdemPrefetch.hpp>
@@ -118,7 +119,8 @@ namespace rdem {
 		if (far < size) prefetchObject(intrs[far].get());
 		if (near < size) {
 			const Interaction& J = *intrs[near];
-			prefetchFirst(J.geom.get(), hotGeomBytes());
+			// A potential pair (no physics) has at most an RdemGap, which the geometry functor reads whole.
+			prefetchFirst(J.geom.get(), J.phys ? hotGeomBytes() : sizeof(RdemGap));
 			prefetchFirst(J.phys.get(), hotPhysBytes());
 			prefetchObject(bodies[size_t(J.getId1())].get());
 			prefetchObject(bodies[size_t(J.getId2())].get());

@@ -22,7 +22,7 @@ namespace rdem {
 	   only what an earlier one brought in:
 
 	   * i + 2·distance: the interaction;
-	   * i + distance: its geometry and physics (the part the law reads), both bodies;
+	   * i + distance: its geometry and physics (the part the law reads; of a potential pair, its RdemGap), both bodies;
 	   * i + distance/2: the physics' per-segment arrays (RdemPhys only), both bodies' states.
 
 	   A prefetch is a hint: it never faults and changes no result. Nothing is done for an interaction that is not (yet)

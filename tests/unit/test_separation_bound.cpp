@@ -251,3 +251,60 @@ TEST(SeparationBound, ASampleOutsideByMoreThanTheTravelsStaysOutside)
 	}
 	EXPECT_GT(tested, 1000);
 }
+
+TEST(SeparationBound, FaceAxisOverlapIsBlockPairsWithinItsRoundOffBound)
+{
+	// Random pairs (general rotations, half-extents 0.2-1 m, centres in [-50, 50]³ m, so that |x| sets the round-off):
+	// faceAxisOverlap on each of the 6 face axes against BlockPair::overlapA/overlapB. The difference is round-off,
+	// measured here at most a few 1e-15 of the bound's sum; the bound (faceAxisRoundOff, 1e-12 of it) must hold with a
+	// factor of 100 to spare. faceSeparation's axis is the face axis of least overlap.
+	std::mt19937 gen(20261127);
+	double       worst = 0; // largest |difference| / bound
+	for (int k = 0; k < 4000; ++k) {
+		const double c = k % 2 ? 50 : 0.5;
+		const V3     xA(uniform(gen, -c, c), uniform(gen, -c, c), uniform(gen, -c, c));
+		const V3     xB = xA + V3(uniform(gen, -2, 2), uniform(gen, -2, 2), uniform(gen, -2, 2));
+		const Q      qA = randomRotation(gen), qB = randomRotation(gen);
+		const V3     hA(uniform(gen, 0.2, 1), uniform(gen, 0.2, 1), uniform(gen, 0.2, 1)),
+		        hB(uniform(gen, 0.2, 1), uniform(gen, 0.2, 1), uniform(gen, 0.2, 1));
+		const Block                   A = blockAt(xA, qA, hA), B = blockAt(xB, qB, hB);
+		const rdem::BlockPair<double> pair(A, B);
+		const double                  bound = rdem::faceAxisRoundOff<double>(xA, hA, xB, hB);
+		double                        least = 1e300;
+		for (int axis = 0; axis < 6; ++axis) {
+			const double o = axis < 3 ? pair.overlapA(axis) : pair.overlapB(axis - 3);
+			worst          = std::max(worst, std::abs(rdem::faceAxisOverlap<double>(xA, qA, hA, xB, qB, hB, axis) - o) / bound);
+			least          = std::min(least, o);
+		}
+		const int axis = rdem::faceSeparation(pair, tol).axis;
+		EXPECT_EQ(axis < 3 ? pair.overlapA(axis) : pair.overlapB(axis - 3), least) << "pair " << k;
+	}
+	EXPECT_LT(worst, 1e-2);
+	EXPECT_GT(worst, 0); // not vacuous: the two formulas do round differently
+}
+
+TEST(SeparationBound, AWitnessBelowTheToleranceMeansBlocksOverlapIsFalse)
+{
+	// Grid neighbours of a dry stack, 2 cm blocks near (0.3, 0.2, 0.1) m: edge neighbours (along x and z) pressed
+	// into each other along z by d, with x touching (overlap e along x, from -1e-10 to 2e-11 m, tol = 1e-11 m), turned
+	// by up to 1e-10 rad (a turn of 1e-6 rad would widen their projections by 1e-8 m, far beyond tol). Where the witness (faceSeparation's axis) is below tol less the round-off bound,
+	// blocksOverlap is false; a witness above tol means the full test decides.
+	std::mt19937 gen(5);
+	const V3     h(0.01, 0.01, 0.01);
+	const double tolGrid = 1e-9 * 0.01;
+	int          decided = 0;
+	for (int k = 0; k < 2000; ++k) {
+		const V3     xA(0.3, 0.2, 0.1);
+		const double e = uniform(gen, -1e-10, 2e-11), d = uniform(gen, 0, 1e-7);
+		const V3     xB = xA + V3(0.02 - e, uniform(gen, -1e-8, 1e-8), 0.02 - d);
+		const Q      qA(Eigen::AngleAxisd(uniform(gen, 0, 1e-10), randomUnit(gen))), qB(Eigen::AngleAxisd(uniform(gen, 0, 1e-10), randomUnit(gen)));
+		const rdem::BlockPair<double> pair(blockAt(xA, qA, h), blockAt(xB, qB, h));
+		const int                     axis = rdem::faceSeparation(pair, tolGrid).axis;
+		const double                  o    = rdem::faceAxisOverlap<double>(xA, qA, h, xB, qB, h, axis);
+		if (o <= tolGrid - rdem::faceAxisRoundOff<double>(xA, h, xB, h)) {
+			++decided;
+			EXPECT_FALSE(rdem::blocksOverlap(pair, tolGrid)) << "pair " << k;
+		}
+	}
+	EXPECT_GT(decided, 1500); // most pairs touch within the tolerance and are decided by the witness (91 % of e)
+}

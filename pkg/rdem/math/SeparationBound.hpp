@@ -40,8 +40,10 @@ namespace rdem {
 		return (x1 - x0).norm() + 2 * rho * sqrt(std::min(minus, plus));
 	}
 
-	/// Margin kept from a certificate's slack [m]: 1e-6 of the blocks' summed circumradii (see separationSlack).
-	template <class S> S separationMargin(const BlockPair<S>& pair) { return S(1e-6) * (pair.A.half.norm() + pair.B.half.norm()); }
+	/// Margin kept from a certificate's slack [m]: 1e-6 of the blocks' summed circumradii (see separationSlack), of two
+	/// blocks of half-extents hA and hB [m].
+	template <class S> S separationMargin(const Eigen::Matrix<S, 3, 1>& hA, const Eigen::Matrix<S, 3, 1>& hB) { return S(1e-6) * (hA.norm() + hB.norm()); }
+	template <class S> S separationMargin(const BlockPair<S>& pair) { return separationMargin<S>(pair.A.half, pair.B.half); }
 
 	/* Separation slack of two blocks [m]: over the 3 + 3 face normals a of the blocks, the largest tol - o(a), o(a) the
 	   overlap of the blocks' projections on a, less separationMargin. Positive only if blocksOverlap is false. The
@@ -59,15 +61,95 @@ namespace rdem {
 	   their 15 axes, so one of them overlaps by less than tol - margin; blocksOverlap skips only the cross products of
 	   edges within 1e-9 rad of parallel, whose facets are slivers of width ~1e-9 of an edge, moving the least tested
 	   overlap by about 1e-9 of the blocks' size, far inside the margin of 1e-6 (which also covers the round-off, ~1e-16
-	   of the coordinates). So blocksOverlap finds an axis with overlap ≤ tol and returns false. */
-	template <class S> S separationSlack(const BlockPair<S>& pair, S tol)
+	   of the coordinates). So blocksOverlap finds an axis with overlap ≤ tol and returns false.
+
+	   faceSeparation gives the slack with the face axis it comes from (the pair's witness, below); separationSlack the
+	   slack alone. */
+	template <class S> struct FaceSeparation {
+		S   slack = -std::numeric_limits<S>::infinity(); ///< separationSlack [m]
+		int axis  = -1; ///< the face axis of least overlap (0–2: A's, 3–5: B's, as SeparatingAxes::face), -1 if none is finite
+	};
+	template <class S> FaceSeparation<S> faceSeparation(const BlockPair<S>& pair, S tol)
 	{
-		S best = -std::numeric_limits<S>::infinity();
-		for (int i = 0; i < 3; ++i)
-			best = std::max(best, std::max(tol - pair.overlapA(i), tol - pair.overlapB(i)));
+		FaceSeparation<S> out;
+		S                 best = -std::numeric_limits<S>::infinity();
+		for (int i = 0; i < 6; ++i) {
+			const S gap = tol - (i < 3 ? pair.overlapA(i) : pair.overlapB(i - 3));
+			if (gap > best) {
+				best     = gap;
+				out.axis = i;
+			}
+		}
 		const S slack = best - separationMargin(pair);
 		using std::isfinite;
-		return isfinite(slack) ? slack : -std::numeric_limits<S>::infinity();
+		out.slack = isfinite(slack) ? slack : -std::numeric_limits<S>::infinity();
+		return out;
+	}
+	template <class S> S separationSlack(const BlockPair<S>& pair, S tol) { return faceSeparation(pair, tol).slack; }
+
+	/* Grid neighbours that touch along an edge or at a corner (overlap 0 on one face axis, up to the strain of their
+	   contacts) are apart for blocksOverlap but get no certificate: their slack, tol less an overlap of about 0, is
+	   below the margin. In a dense pack (a dry-stacked cube, a wall) they are most of the collider's pairs, and every
+	   step tested them with both rotation matrices, C = R_Aᵀ R_B and the overlaps. The axis that separated a pair in
+	   one step is tested first in the next (a witness of separation: the separating plane of the last step, Rabbitz
+	   1994 [Rabbitz1994]_): its overlap alone, from the two blocks' positions and orientations (faceAxisOverlap), decides
+	   the pair apart while it stays below tol by more than the round-off between it and BlockPair's value of the same
+	   overlap (faceAxisRoundOff): blocksOverlap, which tests every face axis before the edge cross products and returns
+	   false at the first one whose overlap is not above tol, then returns false too. Otherwise the pair is tested in
+	   full again. */
+
+	/* Overlap of the projections of blocks A and B (centroids xA, xB [m], unit orientations qA, qB, half-extents hA, hB
+	   [m]) on the face axis `axis` (0–2: A's axis a_i, 3–5: B's b_j) [m]: BlockPair::overlapA(i), overlapB(j) without the
+	   two rotation matrices and C. Along a_i: h_Ai + Σ_j |(R_Bᵀ a_i)_j| h_Bj - |a_i·(xB - xA)|, and alike along b_j; a_i is
+	   column i of R_A from the quaternion's components, R_Bᵀ a_i the rotation by B's conjugate quaternion
+	   (v + w t + u × t with t = 2 u × v, u = -q_B's vector part, w its scalar part), written out so that it inlines. */
+	template <class S>
+	S faceAxisOverlap(
+	        const Eigen::Matrix<S, 3, 1>& xA,
+	        const Eigen::Quaternion<S>&   qA,
+	        const Eigen::Matrix<S, 3, 1>& hA,
+	        const Eigen::Matrix<S, 3, 1>& xB,
+	        const Eigen::Quaternion<S>&   qB,
+	        const Eigen::Matrix<S, 3, 1>& hB,
+	        int                           axis)
+	{
+		using std::abs;
+		const bool                  onA = axis < 3;
+		const int                   i   = onA ? axis : axis - 3;
+		const Eigen::Quaternion<S>& qX  = onA ? qA : qB;
+		const Eigen::Quaternion<S>& qY  = onA ? qB : qA;
+		const S                     w = qX.w(), x = qX.x(), y = qX.y(), z = qX.z();
+		S                           a0, a1, a2; // column i of R_X
+		if (i == 0) {
+			a0 = 1 - 2 * (y * y + z * z);
+			a1 = 2 * (x * y + w * z);
+			a2 = 2 * (x * z - w * y);
+		} else if (i == 1) {
+			a0 = 2 * (x * y - w * z);
+			a1 = 1 - 2 * (x * x + z * z);
+			a2 = 2 * (y * z + w * x);
+		} else {
+			a0 = 2 * (x * z + w * y);
+			a1 = 2 * (y * z - w * x);
+			a2 = 1 - 2 * (x * x + y * y);
+		}
+		const S u0 = -qY.x(), u1 = -qY.y(), u2 = -qY.z(), qw = qY.w();
+		const S t0 = 2 * (u1 * a2 - u2 * a1), t1 = 2 * (u2 * a0 - u0 * a2), t2 = 2 * (u0 * a1 - u1 * a0);
+		const S v0 = a0 + qw * t0 + (u1 * t2 - u2 * t1), v1 = a1 + qw * t1 + (u2 * t0 - u0 * t2), v2 = a2 + qw * t2 + (u0 * t1 - u1 * t0);
+		const Eigen::Matrix<S, 3, 1>& hX = onA ? hA : hB;
+		const Eigen::Matrix<S, 3, 1>& hY = onA ? hB : hA;
+		return hX[i] + (abs(v0) * hY[0] + abs(v1) * hY[1] + abs(v2) * hY[2]) - abs(a0 * (xB[0] - xA[0]) + a1 * (xB[1] - xA[1]) + a2 * (xB[2] - xA[2]));
+	}
+
+	/* Bound on the difference between faceAxisOverlap and BlockPair's value of the same overlap [m]: 1e-12 of
+	   |xA|∞ + |xB|∞ + Σ hA + Σ hB. Both sum a few products of unit vectors' components (round-off ~1e-16 each) with
+	   half-extents and with xB - xA (itself within an ulp of |x|, ~1e-16 |x|), so they differ by a few 1e-16 of that
+	   sum; the bound leaves a factor of more than 10³ (tests/unit/test_separation_bound.cpp measures the difference). */
+	template <class S>
+	S
+	faceAxisRoundOff(const Eigen::Matrix<S, 3, 1>& xA, const Eigen::Matrix<S, 3, 1>& hA, const Eigen::Matrix<S, 3, 1>& xB, const Eigen::Matrix<S, 3, 1>& hB)
+	{
+		return S(1e-12) * (xA.cwiseAbs().maxCoeff() + xB.cwiseAbs().maxCoeff() + hA.sum() + hB.sum());
 	}
 
 	/* How far a point q, given in block Y's frame (q = R_Yᵀ(p - x_Y)), lies outside the region in which sampleDepthLocal can
