@@ -32,6 +32,14 @@ namespace rdem {
 		return -1;
 	}
 
+	/// Position of the engine e in scene->engines, or -1 (e null or not there).
+	inline long positionOf(const Scene* scene, const Engine* e)
+	{
+		for (size_t i = 0; i < scene->engines.size(); ++i)
+			if (e && scene->engines[i].get() == e) return long(i);
+		return -1;
+	}
+
 	/// Calls f(T&) for every engine of type T (or derived) in scene->engines, in their order.
 	template <class T, class F> void forEachEngine(const Scene* scene, F f)
 	{

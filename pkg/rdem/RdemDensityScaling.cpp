@@ -9,7 +9,6 @@
 #include <pkg/rdem/RdemDensityScaling.hpp>
 #include <pkg/rdem/RdemRanks.hpp>
 #include <pkg/rdem/math/DensityScaling.hpp>
-#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -21,12 +20,8 @@ CREATE_LOGGER(RdemDensityScaling);
 NewtonIntegrator* RdemDensityScaling::checkedIntegrator()
 {
 	if (checked && checkedEngines.same(scene->engines)) return checked;
-	const auto at = [&](const Engine* e) {
-		const auto it = std::find_if(scene->engines.begin(), scene->engines.end(), [&](const shared_ptr<Engine>& x) { return x.get() == e; });
-		return it == scene->engines.end() ? -1L : long(it - scene->engines.begin());
-	};
 	NewtonIntegrator* newton = integrator ? integrator.get() : rdem::findEngine<NewtonIntegrator>(scene);
-	const long        self = at(this), other = newton ? at(newton) : -1;
+	const long        self = rdem::positionOf(scene, this), other = rdem::positionOf(scene, newton);
 	if (other != self + 1)
 		throw std::runtime_error(
 		        std::string("RdemDensityScaling (O.engines[") + std::to_string(self) + "]) scales the forces that its NewtonIntegrator applies, but "

@@ -10,7 +10,6 @@
 #include <pkg/rdem/RdemRanks.hpp>
 #include <pkg/rdem/math/DensityScaling.hpp>
 #include <pkg/rdem/math/LeapfrogEnergy.hpp>
-#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -22,12 +21,8 @@ CREATE_LOGGER(RdemLeapfrogEnergy);
 NewtonIntegrator* RdemLeapfrogEnergy::checkedIntegrator()
 {
 	if (checked && checkedEngines.same(scene->engines)) return checked;
-	const auto at = [&](const Engine* e) {
-		const auto it = std::find_if(scene->engines.begin(), scene->engines.end(), [&](const shared_ptr<Engine>& x) { return x.get() == e; });
-		return it == scene->engines.end() ? -1L : long(it - scene->engines.begin());
-	};
 	NewtonIntegrator* newton = integrator ? integrator.get() : rdem::findEngine<NewtonIntegrator>(scene);
-	const long        self = at(this), other = newton ? at(newton) : -1;
+	const long        self = rdem::positionOf(scene, this), other = rdem::positionOf(scene, newton);
 	if (other < 0 || other > self)
 		throw std::runtime_error(
 		        std::string("RdemLeapfrogEnergy (O.engines[") + std::to_string(self)

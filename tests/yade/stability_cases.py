@@ -213,6 +213,18 @@ def energyRun(steps, samples=20):
 	return H0, hist
 
 
+def worstTotalDeviation(steps):
+	"""Largest |E - E0|/|E0| of O.energy.total() over the steps, E0 after the first two (the first tracked step has
+	no earlier velocity to pair with: NewtonIntegrator's value stands there)."""
+	rdem.run(2)
+	E0 = O.energy.total()
+	worst = 0.0
+	for _ in range(steps):
+		O.step()
+		worst = max(worst, abs(O.energy.total() - E0) / abs(E0))
+	return worst
+
+
 def worstEnergyError(H0, hist):
 	"""max |H_k - H0| / H0 (inf if a sample is not finite)."""
 	return max((abs(h - H0) / H0 if math.isfinite(h) else INF) for h in hist)

@@ -116,13 +116,7 @@ class DensityScaling(unittest.TestCase):
 		return info
 
 	def worstDeviation(self, steps=2000):
-		rdem.run(2)
-		E0 = O.energy.total()
-		worst = 0.0
-		for _ in range(steps):
-			O.step()
-			worst = max(worst, abs(O.energy.total() - E0) / abs(E0))
-		return worst
+		return sc.worstTotalDeviation(steps)
 
 	def testEnergyBalance(self):
 		info = self.grid()

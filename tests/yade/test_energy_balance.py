@@ -48,15 +48,8 @@ def grid(safety, rotations=True, damping=0.0, gravity=(0, 0, 0), leapfrogEnergy=
 
 
 def worstDeviation(steps=STEPS):
-	"""Largest |E - E0|/|E0| of O.energy.total() over the steps, E0 after the first two (the first tracked step has
-	no earlier velocity to pair with: NewtonIntegrator's value stands there)."""
-	rdem.run(2)
-	E0 = O.energy.total()
-	worst = 0.0
-	for _ in range(steps):
-		O.step()
-		worst = max(worst, abs(O.energy.total() - E0) / abs(E0))
-	return worst
+	"""stability_cases.worstTotalDeviation over the steps."""
+	return sc.worstTotalDeviation(steps)
 
 
 class EnergyBalance(unittest.TestCase):
