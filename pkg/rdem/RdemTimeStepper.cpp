@@ -167,19 +167,11 @@ Real RdemTimeStepper::lanczos(Scene* sc, const vector<const Interaction*>& inIdO
 	rdem::BlockStiffness<Real>    K(nB), C(nB);
 	vector<rdem::BodyScale<Real>> scale;
 	assemble(sc, inIdOrder, K, C, scale);
-	const size_t n = 6 * scale.size();
-	vector<char> mask(n, 0);
-	for (size_t b = 0; b < scale.size(); ++b)
-		for (size_t k = 0; k < 6; ++k)
-			mask[6 * b + k] = scale[b].free[k];
-	vector<Real> w(n);
-	const auto   normalised = [&](const rdem::BlockStiffness<Real>& X) { // y = P S X S P x
-                return [&](const Real* x, Real* y) {
-                        w.assign(x, x + n);
-                        rdem::scaleDofs(scale, w.data());
-                        X.multiply(w.data(), y);
-                        rdem::scaleDofs(scale, y);
-                };
+	rdem::NormalisedOperators<Real> ops(scale);
+	const size_t                    n          = ops.size();
+	const vector<char>              mask       = ops.mask();
+	const auto                      normalised = [&](const rdem::BlockStiffness<Real>& X) { // y = P S X S P x
+                return [&](const Real* x, Real* y) { ops.apply(X, x, y); };
 	};
 	const auto largest = [&](const rdem::BlockStiffness<Real>& X, vector<Real>& start) { // λ_max of P S X S P
 		// warm start mixed with 10 % of a generic vector: a new stiff spot (a contact) far from the old mode is still found
@@ -205,14 +197,7 @@ Real RdemTimeStepper::lanczos(Scene* sc, const vector<const Interaction*>& inIdO
 			start[i] = ritzVector[i] + dashpotRitzVector[i];
 	// an automatic step under contactLimit is at most contactDt: a root above it need not be found closer
 	const Real enough = active && contactLimit ? rdem::criticallyDampedStep(springCriticalDt) : std::numeric_limits<Real>::infinity();
-	const auto both   = [&](const Real* x, Real* kx, Real* cx) { // P S K S P x and P S C S P x, S P x made once for both
-                w.assign(x, x + n);
-                rdem::scaleDofs(scale, w.data());
-                K.multiply(w.data(), kx);
-                rdem::scaleDofs(scale, kx);
-                C.multiply(w.data(), cx);
-                rdem::scaleDofs(scale, cx);
-	};
+	const auto both   = [&](const Real* x, Real* kx, Real* cx) { ops.applyBoth(K, C, x, kx, cx); };
 	const auto damped = rdem::dampedCriticalStepOfBoth<Real>(
 	        both, normalised(K), n, mask, start, est.upper(), dashpotRate, lanczosMaxSteps, lanczosTolerance, 8, enough);
 	dampedRounds     = damped.rounds;

@@ -476,28 +476,11 @@ TEST(StiffnessSpectrum, DampedStepOfBothIsTheSameToTheBit)
 	C.addPointSpring(0, 1, V3(0.05, 0.02, 0.01), V3(-0.05, 0.02, 0.01), V3::UnitX(), 3e5, 1e5);
 	C.addPointSpring(0, 1, V3(0.05, -0.02, 0.01), V3(-0.05, -0.02, 0.01), V3::UnitX(), 3e5, 1e5);
 	C.endPair();
-	const size_t      n = 6 * centres.size();
-	std::vector<char> mask(n);
-	for (size_t b = 0; b < centres.size(); ++b)
-		for (size_t k = 0; k < 6; ++k)
-			mask[6 * b + k] = scale[b].free[k];
-	std::vector<double> w(n);
-	const auto          normalisedOf = [&](const rdem::BlockStiffness<double>& X) {
-                return [&](const double* x, double* y) {
-                        w.assign(x, x + n);
-                        rdem::scaleDofs(scale, w.data());
-                        X.multiply(w.data(), y);
-                        rdem::scaleDofs(scale, y);
-                };
-	};
-	const auto both = [&](const double* x, double* kx, double* cx) {
-		w.assign(x, x + n);
-		rdem::scaleDofs(scale, w.data());
-		K.multiply(w.data(), kx);
-		rdem::scaleDofs(scale, kx);
-		C.multiply(w.data(), cx);
-		rdem::scaleDofs(scale, cx);
-	};
+	rdem::NormalisedOperators<double> ops(scale); // what RdemTimeStepper multiplies by
+	const size_t                      n    = ops.size();
+	const std::vector<char>           mask = ops.mask();
+	const auto          normalisedOf       = [&](const rdem::BlockStiffness<double>& X) { return [&](const double* x, double* y) { ops.apply(X, x, y); }; };
+	const auto          both               = [&](const double* x, double* kx, double* cx) { ops.applyBoth(K, C, x, kx, cx); };
 	std::vector<double> s0, s1, s2;
 	const auto          lk = rdem::lanczosLargest<double>(normalisedOf(K), n, mask, s0, 2, 60, 1e-3, 0.1);
 	const auto          lc = rdem::lanczosLargest<double>(normalisedOf(C), n, mask, s1, 2, 60, 1e-3, 0.1);

@@ -373,6 +373,52 @@ namespace rdem {
 		}
 	}
 
+	/* The mass-normalised operators P S X S P of a block assembly on vectors of 6 values per body (scaleDofs), as the
+	   time stepper's Lanczos runs multiply by them; one work vector for the scaled x. */
+	template <class S> class NormalisedOperators {
+	public:
+		explicit NormalisedOperators(const std::vector<BodyScale<S>>& scale_)
+		        : scale(scale_)
+		        , w(6 * scale_.size())
+		{
+		}
+		size_t size() const { return w.size(); }
+		/// P as a Lanczos mask: 1 for a free DOF, 0 for a blocked one.
+		std::vector<char> mask() const
+		{
+			std::vector<char> m(w.size(), 0);
+			for (size_t b = 0; b < scale.size(); ++b)
+				for (size_t k = 0; k < 6; ++k)
+					m[6 * b + k] = scale[b].free[k];
+			return m;
+		}
+		/// y = P S X S P x.
+		void apply(const BlockStiffness<S>& X, const S* x, S* y)
+		{
+			scaled(x);
+			X.multiply(w.data(), y);
+			scaleDofs(scale, y);
+		}
+		/// kx = P S K S P x and cx = P S C S P x, with S P x made once for both.
+		void applyBoth(const BlockStiffness<S>& K, const BlockStiffness<S>& C, const S* x, S* kx, S* cx)
+		{
+			scaled(x);
+			K.multiply(w.data(), kx);
+			scaleDofs(scale, kx);
+			C.multiply(w.data(), cx);
+			scaleDofs(scale, cx);
+		}
+
+	private:
+		const std::vector<BodyScale<S>>& scale;
+		std::vector<S>                   w;
+		void                             scaled(const S* x)
+		{
+			w.assign(x, x + w.size());
+			scaleDofs(scale, w.data());
+		}
+	};
+
 	/// Result of lanczosLargest: the largest Ritz value θ [1/s²], its residual norm r (an eigenvalue of A lies in
 	/// [θ - r, θ + r]), and the Lanczos steps taken.
 	/// λ_max of S_b X S_b over body b's free DOFs, X a 6×6 symmetric block (diagonalBlock) in global axes, S_b its mass
