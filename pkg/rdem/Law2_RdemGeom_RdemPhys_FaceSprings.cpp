@@ -6,6 +6,7 @@
 *************************************************************************/
 #include <core/Scene.hpp>
 #include <pkg/rdem/FindEngine.hpp>
+#include <pkg/rdem/InertialMass.hpp>
 #include <pkg/rdem/InteractionOrder.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
@@ -446,10 +447,10 @@ namespace {
 		Vector3r x1, x2;
 		Real     dt;
 		DashpotCaps(const State& s1, const Vector3r& c1, const State& s2, const Vector3r& c2, Real step)
-		        : invMass1(s1.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / (s1.mass * rdem::inertialFactor(s1.densityScaling)))
-		        , invInertia1(s1.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / (s1.inertia.minCoeff() * rdem::inertialFactor(s1.densityScaling)))
-		        , invMass2(s2.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / (s2.mass * rdem::inertialFactor(s2.densityScaling)))
-		        , invInertia2(s2.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / (s2.inertia.minCoeff() * rdem::inertialFactor(s2.densityScaling)))
+		        : invMass1(s1.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / rdem::inertialMass(s1))
+		        , invInertia1(s1.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / rdem::inertialMinInertia(s1))
+		        , invMass2(s2.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / rdem::inertialMass(s2))
+		        , invInertia2(s2.blockedDOFs == State::DOF_ALL ? Real(0) : 1 / rdem::inertialMinInertia(s2))
 		        , x1(c1)
 		        , x2(c2)
 		        , dt(step)
@@ -731,8 +732,8 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::addOmega2Bound(Scene* sc, vector<Real>&
 					                1,
 					                kn,
 					                ks,
-					                side.second->mass * rdem::inertialFactor(side.second->densityScaling),
-					                side.second->inertia.minCoeff() * rdem::inertialFactor(side.second->densityScaling));
+					                rdem::inertialMass(*side.second),
+					                rdem::inertialMinInertia(*side.second));
 		        });
 	}
 }

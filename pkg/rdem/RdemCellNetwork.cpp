@@ -5,6 +5,7 @@
 *  GNU General Public License v2 or later. See file LICENSE for details. *
 *************************************************************************/
 #include <lib/pyutil/gil.hpp>
+#include <pkg/rdem/InertialMass.hpp>
 #include <pkg/rdem/OpenMPLoops.hpp>
 #include <pkg/rdem/RdemCellNetwork.hpp>
 #include <pkg/rdem/RdemForceAssembler.hpp>
@@ -422,8 +423,8 @@ vector<Real> RdemCellNetwork::omega2Bound(Scene* scene)
 			        1,
 			        0,
 			        kShear,
-			        st.mass * rdem::inertialFactor(st.densityScaling), // inertial (density scaling)
-			        st.inertia.minCoeff() * rdem::inertialFactor(st.densityScaling));
+			        rdem::inertialMass(st), // inertial (density scaling)
+			        rdem::inertialMinInertia(st));
 		}
 	}
 	for (size_t i = 0; i < body.size(); ++i)

@@ -8,6 +8,7 @@
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
 #include <pkg/rdem/FindEngine.hpp>
+#include <pkg/rdem/InertialMass.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/OpenMPLoops.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
@@ -241,7 +242,7 @@ vector<Real> RdemPoissonEngine::hex8Omega2Bound() const
 	}
 	for (size_t id = 0; id < bound.size(); ++id) { // row sums [N/m] over the mass: ω² [1/s²]
 		const auto& b = Body::byId(Body::id_t(id), sc);
-		bound[id]     = (b && bound[id] > 0) ? bound[id] / (b->state->mass * rdem::inertialFactor(b->state->densityScaling)) : Real(0); // inertial mass
+		bound[id]     = (b && bound[id] > 0) ? bound[id] / rdem::inertialMass(*b->state) : Real(0); // inertial mass
 	}
 	return bound;
 }

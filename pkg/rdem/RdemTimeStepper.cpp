@@ -8,6 +8,7 @@
 #include <core/Scene.hpp>
 #include <pkg/rdem/FindEngine.hpp>
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
+#include <pkg/rdem/InertialMass.hpp>
 #include <pkg/rdem/InteractionOrder.hpp>
 #include <pkg/rdem/Ip2_RdemMat_RdemMat_RdemPhys.hpp>
 #include <pkg/rdem/NumberText.hpp>
@@ -95,8 +96,8 @@ namespace {
 				        setup.samplesPerEdge,
 				        k.first,
 				        k.second,
-				        b->state->mass * rdem::inertialFactor(b->state->densityScaling),
-				        b->state->inertia.minCoeff() * rdem::inertialFactor(b->state->densityScaling));
+				        rdem::inertialMass(*b->state),
+				        rdem::inertialMinInertia(*b->state));
 		}
 	}
 }
@@ -220,7 +221,7 @@ vector<Real> RdemTimeStepper::springSignature(Scene* sc, const vector<const Inte
 	for (const auto& b : *sc->bodies)
 		if (b) {
 			blocked += b->state->blockedDOFs;
-			mass += b->state->mass * rdem::inertialFactor(b->state->densityScaling);
+			mass += rdem::inertialMass(*b->state);
 		}
 	return { Real(sc->bodies->size()), nReal, nSegments, nSamples, stiffness, blocked, mass, Real(brokenSprings(sc)) };
 }
