@@ -55,6 +55,7 @@ std::vector<Hit> everySample(const Block& X, const Block& Y, const V3& u, int n,
 		const V3     fc   = X.pos + X.half[k] * nf;
 		const V3     qc   = toY * (fc - Y.pos);
 		const Scalar area = rdem::segmentArea(X.half[k1], X.half[k2], n);
+		const Scalar c1 = -qc.dot(q1), r1 = Y.half.dot(q1.cwiseAbs()), c2 = -qc.dot(q2), r2 = Y.half.dot(q2.cwiseAbs());
 		for (int i = 0; i <= n; ++i)
 			for (int j = 0; j <= n; ++j) {
 				const int key = firstKey + face * perFace + i * (n + 1) + j;
@@ -63,8 +64,11 @@ std::vector<Hit> everySample(const Block& X, const Block& Y, const V3& u, int n,
 				const Scalar sa = X.half[k1] * a.x, rb = X.half[k2] * b.x;
 				const V3     qa  = qc + sa * q1;
 				const auto   hit = rdem::sampleDepthLocal<Scalar>(Y.half, qa + rb * q2, uq);
-				if (hit.hit)
-					hits.push_back(Hit { key, fc + sa * t1 + rb * t2 + (hit.depth / 2) * u, hit.depth, area * a.w * b.w * cosine / 2 });
+				const Scalar cover
+				        = rdem::tributaryCover<Scalar>(i, n, X.half[k1], c1, r1) * rdem::tributaryCover<Scalar>(j, n, X.half[k2], c2, r2);
+				if (hit.hit && cover > 0)
+					hits.push_back(
+					        Hit { key, fc + sa * t1 + rb * t2 + (hit.depth / 2) * u, hit.depth, area * a.w * b.w * cosine / 2 * cover });
 			}
 	}
 	return hits;
@@ -100,6 +104,54 @@ std::vector<std::uint64_t> randomBits(std::mt19937& gen, int keys)
 	for (auto& w : near)
 		w = (std::uint64_t(gen()) << 32) | gen();
 	return near;
+}
+
+TEST(FaceSamples, TributaryCoverIsTheCoveredPartOfTheNodesInterval)
+{
+	// Node i of the (n+1)-point rule on [-h, h] owns [x - h/n, x + h/n], only the inward half at an end: for n = 2,
+	// h = 1 the nodes -1, 0, 1 own [-1, -0.5], [-0.5, 0.5], [0.5, 1].
+	EXPECT_EQ(rdem::tributaryCover<Scalar>(0, 2, 1, 0, 10), 1);        // Y across everything
+	EXPECT_EQ(rdem::tributaryCover<Scalar>(1, 2, 1, 0, 0.25), 0.5);    // [-0.25, 0.25] of [-0.5, 0.5]
+	EXPECT_EQ(rdem::tributaryCover<Scalar>(0, 2, 1, -1.5, 0.75), 0.5); // [-2.25, -0.75] covers [-1, -0.75] of [-1, -0.5]
+	EXPECT_EQ(rdem::tributaryCover<Scalar>(2, 2, 1, 3, 1), 0);         // Y beyond the end
+	EXPECT_EQ(rdem::tributaryCover<Scalar>(2, 2, 1, 1.5, 0.5), 0);     // Y's edge on the face's edge: touches, covers nothing
+	EXPECT_NEAR(rdem::tributaryCover<Scalar>(0, 1, 0.2825, -0.2825 - 0.0625 + 1e-3, 0.0625), 1e-3 / 0.2825, 1e-15);
+}
+
+TEST(FaceSamples, CornerOfALargeFaceOnTheEdgeOfASmallBlockCarriesTheOverlapOnly)
+{
+	// The two-storey house of scripts/building.py --big (doc/building.md "Runs"): a roof-slab piece (half-extents
+	// 0.2825 × 0.2894 × 0.075 m) whose corner rests on the edge of a top brick (0.0625 × 0.13 × 0.03 m), their faces
+	// overlapping by a strip d wide along x and 0.13 m along y, 1 µm deep, vertex samples (n = 1). Each block's corner
+	// sample in the other takes the strip's area d × 0.13 m, halved (both blocks are sampled): together the overlap of
+	// the two faces. Without the cover, the slab's corner took a quarter of its face, halved (0.0409 m²: more than the
+	// brick's whole top face, 0.0325 m²), for any d.
+	const Scalar d = 2e-3;
+	const Block  slab { V3(0, 0, 0), M3::Identity(), V3(0.2825, 0.2894, 0.075) };
+	const Block  brick { V3(-0.2825 - 0.0625 + d, -0.2894, -0.075 - 0.03 + 1e-6), M3::Identity(), V3(0.0625, 0.13, 0.03) };
+	const V3     u(0, 0, 1); // the slab (X) separates upwards from the brick (Y)
+	const auto   inBrick = fastSamples(slab, brick, u, 1, 0, nullptr), inSlab = fastSamples(brick, slab, V3(-u), 1, 24, nullptr);
+	ASSERT_EQ(inBrick.size(), 1u);
+	ASSERT_EQ(inSlab.size(), 1u);
+	EXPECT_NEAR(inBrick[0].area, d * 0.13 / 2, 1e-12);
+	EXPECT_NEAR(inSlab[0].area, d * 0.13 / 2, 1e-12);
+	compareToTheBit(slab, brick, u, 1, 0, nullptr);
+	compareToTheBit(brick, slab, V3(-u), 1, 24, nullptr);
+}
+
+TEST(FaceSamples, SmallFaceFlatOnALargeOneKeepsItsWholeArea)
+{
+	// A brick lying on a slab, inside its outline, 1 µm deep: the brick's bottom samples are covered whole and their
+	// areas sum to half its face (both blocks are sampled; the slab's vertices are not inside the brick), as before.
+	for (int n : { 1, 2, 3 }) {
+		const Block slab { V3(0, 0, 0), M3::Identity(), V3(0.2825, 0.2894, 0.075) };
+		const Block brick { V3(0.05, -0.1, 0.075 + 0.03 - 1e-6), M3::Identity(), V3(0.0625, 0.13, 0.03) };
+		Scalar      sum = 0;
+		for (const Hit& h : fastSamples(brick, slab, V3(0, 0, 1), n, 0, nullptr))
+			sum += h.area;
+		EXPECT_NEAR(sum, 0.125 * 0.26 / 2, 1e-14) << "n = " << n;
+		EXPECT_TRUE(fastSamples(slab, brick, V3(0, 0, -1), n, 24, nullptr).empty() || n > 1) << "n = " << n;
+	}
 }
 
 TEST(FaceSamples, TrapezoidNodesAreTrapezoidNode)

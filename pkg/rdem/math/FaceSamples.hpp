@@ -18,6 +18,7 @@
 #include <pkg/rdem/math/BlockGeometry.hpp>
 #include <pkg/rdem/math/SegmentGrid.hpp>
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -47,12 +48,25 @@ namespace rdem {
 		TrapezoidNode<S>*                     node;
 	};
 
+	/* The part of node i's tributary interval, of the (n+1)-point trapezoid rule on [-h, h] (trapezoidNode: half a
+	   segment 2h/n to either side of the node, inward only at an end, length w·2h/n), that lies within [c - r, c + r]
+	   (the other block's extent along the same axis), as a fraction in [0, 1] of that interval [-]. h > 0, r >= 0 [m].
+	   A contact spring acts per unit contact area (paper §3.1 and eq. 13: springs and dashpots "per unit contact
+	   area"); the tributary area of a sample on X's face is in contact only where the other block lies across it. */
+	template <class S> S tributaryCover(int i, int n, S h, S c, S r)
+	{
+		const S x = h * (S(2 * i) / S(n) - 1), half = h / S(n);
+		const S lo = i > 0 ? x - half : x, hi = i < n ? x + half : x;
+		const S overlap = std::min(hi, c + r) - std::max(lo, c - r);
+		return overlap > 0 ? std::min(overlap / (hi - lo), S(1)) : S(0);
+	}
+
 	/// A face sample of X found inside Y (faceSamplesInside).
 	template <class S> struct FaceSampleHit {
 		int                    key;   ///< firstKey + face·(n+1)² + i·(n+1) + j, face = 2k + side (side 1: the +R_X e_k face)
 		Eigen::Matrix<S, 3, 1> point; ///< contact point: the sample moved by half its depth along u (global) [m]
 		S                      depth; ///< sampleDepth of the sample in Y along u [m]
-		S                      area;  ///< trapezoid weight × the face's cosine with -u, halved (both blocks are sampled) [m²]
+		S                      area; ///< trapezoid weight × the face's cosine with -u, halved (both blocks are sampled), times the part of its tributary rectangle across which Y lies (tributaryCover along both face axes) [m²]
 	};
 
 	/* The face samples of block X inside block Y along the unit direction u in which X separates from Y, passed to
@@ -121,15 +135,21 @@ namespace rdem {
 			}
 			const V t1 = X.rot.col(k1), t2 = X.rot.col(k2);
 			const S area = segmentArea(X.half[k1], X.half[k2], n); // of a segment of the face [m²]
+			// Y's extent along the face's axes, from the face centre: centre -qc·q and half-width Σ h_Y|q| (its projection
+			// on each axis; the tributary rectangle of a sample is in contact only across it, tributaryCover)
+			const S c1 = -qc.dot(q1), r1 = Y.half.dot(q1.cwiseAbs()), c2 = -qc.dot(q2), r2 = Y.half.dot(q2.cwiseAbs());
 			for (; key < end; key = next(key + 1)) {
-				const TrapezoidNode<S>& a   = node[(key - first) / (n + 1)];
-				const TrapezoidNode<S>& b   = node[(key - first) % (n + 1)];
+				const int               i = (key - first) / (n + 1), j = (key - first) % (n + 1);
+				const TrapezoidNode<S>& a   = node[i];
+				const TrapezoidNode<S>& b   = node[j];
 				const S                 sa  = X.half[k1] * a.x;
 				const V                 qa  = qc + sa * q1;
 				const S                 rb  = X.half[k2] * b.x;
 				const auto              hit = sampleDepthLocal<S>(Y.half, qa + rb * q2, uq);
 				if (!hit.hit) continue;
-				emit(FaceSampleHit<S> { key, fc + sa * t1 + rb * t2 + (hit.depth / 2) * u, hit.depth, area * a.w * b.w * cosine / 2 });
+				const S cover = tributaryCover<S>(i, n, X.half[k1], c1, r1) * tributaryCover<S>(j, n, X.half[k2], c2, r2);
+				if (!(cover > 0)) continue; // on Y's edge with nothing of Y across its tributary area: no contact area
+				emit(FaceSampleHit<S> { key, fc + sa * t1 + rb * t2 + (hit.depth / 2) * u, hit.depth, area * a.w * b.w * cosine / 2 * cover });
 			}
 		}
 	}
