@@ -84,6 +84,7 @@ namespace {
 	        const Vector3r&                   normal,
 	        const rdem::TrapezoidNodes<Real>& node,
 	        RdemGeom&                         g,
+	        bool                              clip,
 	        const vector<uint64_t>*           near)
 	{
 		const Vector3r u  = which == 0 ? Vector3r(-normal) : normal;
@@ -92,7 +93,7 @@ namespace {
 		const Vector3r x1 = which == 0 ? X.pos : Y.pos;
 		const Vector3r x2 = which == 0 ? Y.pos : X.pos;
 		rdem::faceSamplesInside<Real>(
-		        X, Y, u, n, which * 6 * (n + 1) * (n + 1), near ? near->data() : nullptr, node, [&](const rdem::FaceSampleHit<Real>& hit) {
+		        X, Y, u, n, which * 6 * (n + 1) * (n + 1), near ? near->data() : nullptr, node, clip, [&](const rdem::FaceSampleHit<Real>& hit) {
 			        g.sampleKey.push_back(hit.key);
 			        g.samplePoint.push_back(hit.point);
 			        g.sampleNormal.push_back(normal);
@@ -134,14 +135,15 @@ namespace {
 	        Real                              tol,
 	        int                               n,
 	        RdemGeom&                         g,
+	        bool                              clip,
 	        const vector<uint64_t>*           near = nullptr)
 	{
 		const Block&                     A      = pair.A;
 		const Block&                     B      = pair.B;
 		const Vector3r                   normal = rdem::contactNormal<Real>(pair, sat);
 		const rdem::TrapezoidNodes<Real> node(n);
-		sampleInside(A, s1, B, s2, 0, n, normal, node, g, near);
-		sampleInside(B, s2, A, s1, 1, n, normal, node, g, near);
+		sampleInside(A, s1, B, s2, 0, n, normal, node, g, clip, near);
+		sampleInside(B, s2, A, s1, 1, n, normal, node, g, clip, near);
 		edgeInside(pair, sat, s1, s2, tol, n, g);
 	}
 
@@ -370,14 +372,14 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::findContact(const Block& A, const Block& 
 	const rdem::SeparatingAxes<Real> sat(pair);
 	RdemGeom                         probe;
 	probe.samplesPerEdge = contactSamples();
-	sampleContacts(pair, sat, s1, s2, tol, contactSamples(), probe);
+	sampleContacts(pair, sat, s1, s2, tol, contactSamples(), probe, clipSampleAreas);
 	if (probe.sampleKey.empty() && contactSamples() == 1 && segmentsPerEdge > 1 && rdem::facesCross<Real>(A, B, faceTouchTolerance(A, B))) {
 		/* Vertices only, and no vertex of either block in or on the other although they overlap: faces that cross (a beam
 		   across a wall). The contact then samples the face grid of segmentsPerEdge for its life; its samples count from
 		   the depth at which they enter (δ₀), so the switch adds no energy. Blocks side by side with coincident faces (a
 		   course's head joints) have their vertices on each other's edges and keep the vertex samples. */
 		probe.samplesPerEdge = segmentsPerEdge;
-		sampleContacts(pair, sat, s1, s2, tol, segmentsPerEdge, probe);
+		sampleContacts(pair, sat, s1, s2, tol, segmentsPerEdge, probe, clipSampleAreas);
 	}
 	if (probe.sampleKey.empty()) return false;
 	auto g  = shared_ptr<RdemGeom>(new RdemGeom(probe));
@@ -520,7 +522,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	if (g.nPatch() > 0) g.clearPatch(); // and the configuration it was derived in
 	if (tried) markDerived(A, B, state1.ori, state2.ori, g);
 	g.clearSamples();
-	if (overlap) sampleContacts(pair, sat, state1, state2, tol, g.samplesPerEdge, g, nearSamples(pair, *I, g));
+	if (overlap) sampleContacts(pair, sat, state1, state2, tol, g.samplesPerEdge, g, clipSampleAreas, nearSamples(pair, *I, g));
 	if (!from.pos.empty()) handOverToSamples(from, g, p);
 	return true; // a real interaction stays; the law erases it when no sample is in contact
 }

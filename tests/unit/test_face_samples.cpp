@@ -38,7 +38,7 @@ M3 randomRotation(std::mt19937& gen) { return rdem_test::randomQuaternion<Scalar
 
 /* The full test: every sample (i, j) of every face of X whose outward normal n_f has -n_f·u > 0, with its point made
    in Y's frame from that face's centre and axes (sampleDepthLocal), kept if its bit is set in near (nullptr: all). */
-std::vector<Hit> everySample(const Block& X, const Block& Y, const V3& u, int n, int firstKey, const std::uint64_t* near)
+std::vector<Hit> everySample(const Block& X, const Block& Y, const V3& u, int n, int firstKey, const std::uint64_t* near, bool clip)
 {
 	std::vector<Hit> hits;
 	const int        perFace = (n + 1) * (n + 1);
@@ -62,10 +62,11 @@ std::vector<Hit> everySample(const Block& X, const Block& Y, const V3& u, int n,
 				if (near && !((near[key / 64] >> (key % 64)) & 1)) continue;
 				const auto   a = rdem::trapezoidNode<Scalar>(i, n), b = rdem::trapezoidNode<Scalar>(j, n);
 				const Scalar sa = X.half[k1] * a.x, rb = X.half[k2] * b.x;
-				const V3     qa  = qc + sa * q1;
-				const auto   hit = rdem::sampleDepthLocal<Scalar>(Y.half, qa + rb * q2, uq);
-				const Scalar cover
-				        = rdem::tributaryCover<Scalar>(i, n, X.half[k1], c1, r1) * rdem::tributaryCover<Scalar>(j, n, X.half[k2], c2, r2);
+				const V3     qa    = qc + sa * q1;
+				const auto   hit   = rdem::sampleDepthLocal<Scalar>(Y.half, qa + rb * q2, uq);
+				const Scalar cover = clip
+				        ? rdem::tributaryCover<Scalar>(i, n, X.half[k1], c1, r1) * rdem::tributaryCover<Scalar>(j, n, X.half[k2], c2, r2)
+				        : Scalar(1);
 				if (hit.hit && cover > 0)
 					hits.push_back(
 					        Hit { key, fc + sa * t1 + rb * t2 + (hit.depth / 2) * u, hit.depth, area * a.w * b.w * cosine / 2 * cover });
@@ -74,18 +75,18 @@ std::vector<Hit> everySample(const Block& X, const Block& Y, const V3& u, int n,
 	return hits;
 }
 
-std::vector<Hit> fastSamples(const Block& X, const Block& Y, const V3& u, int n, int firstKey, const std::uint64_t* near)
+std::vector<Hit> fastSamples(const Block& X, const Block& Y, const V3& u, int n, int firstKey, const std::uint64_t* near, bool clip = true)
 {
 	std::vector<Hit>                   hits;
 	const rdem::TrapezoidNodes<Scalar> node(n);
-	rdem::faceSamplesInside<Scalar>(X, Y, u, n, firstKey, near, node, [&](const Hit& h) { hits.push_back(h); });
+	rdem::faceSamplesInside<Scalar>(X, Y, u, n, firstKey, near, node, clip, [&](const Hit& h) { hits.push_back(h); });
 	return hits;
 }
 
 // Both ways, hit by hit to the bit; returns the number of hits.
-int compareToTheBit(const Block& X, const Block& Y, const V3& u, int n, int firstKey, const std::uint64_t* near)
+int compareToTheBit(const Block& X, const Block& Y, const V3& u, int n, int firstKey, const std::uint64_t* near, bool clip = true)
 {
-	const std::vector<Hit> full = everySample(X, Y, u, n, firstKey, near), fast = fastSamples(X, Y, u, n, firstKey, near);
+	const std::vector<Hit> full = everySample(X, Y, u, n, firstKey, near, clip), fast = fastSamples(X, Y, u, n, firstKey, near, clip);
 	EXPECT_EQ(fast.size(), full.size());
 	for (size_t h = 0; h < std::min(fast.size(), full.size()); ++h) {
 		EXPECT_EQ(fast[h].key, full[h].key);
@@ -135,6 +136,9 @@ TEST(FaceSamples, CornerOfALargeFaceOnTheEdgeOfASmallBlockCarriesTheOverlapOnly)
 	ASSERT_EQ(inSlab.size(), 1u);
 	EXPECT_NEAR(inBrick[0].area, d * 0.13 / 2, 1e-12);
 	EXPECT_NEAR(inSlab[0].area, d * 0.13 / 2, 1e-12);
+	const auto unclipped = fastSamples(slab, brick, u, 1, 0, nullptr, false);
+	ASSERT_EQ(unclipped.size(), 1u);
+	EXPECT_NEAR(unclipped[0].area, 0.565 * 0.5788 / 8, 1e-12);
 	compareToTheBit(slab, brick, u, 1, 0, nullptr);
 	compareToTheBit(brick, slab, V3(-u), 1, 24, nullptr);
 }
@@ -188,7 +192,7 @@ TEST(FaceSamples, RandomPairsGiveEverySampleInContactToTheBit)
 		const auto  ones = std::vector<std::uint64_t>(size_t((all + 63) / 64), ~std::uint64_t(0));
 		const auto  bits = randomBits(gen, all);
 		for (const std::uint64_t* near : { static_cast<const std::uint64_t*>(nullptr), ones.data(), bits.data() }) {
-			const int found = compareToTheBit(A, B, u, n, 0, near) + compareToTheBit(B, A, V3(-u), n, 6 * (n + 1) * (n + 1), near);
+			const int found = compareToTheBit(A, B, u, n, 0, near, k % 2) + compareToTheBit(B, A, V3(-u), n, 6 * (n + 1) * (n + 1), near, k % 2);
 			(found > 0 ? hits : empty)++;
 		}
 	}
@@ -222,7 +226,7 @@ TEST(FaceSamples, GridNeighboursStrainedAlongAnEdgeToTheBit)
 		const V3                      normal = rdem::contactNormal<Scalar>(pair, rdem::SeparatingAxes<Scalar>(pair));
 		const auto                    bits   = randomBits(gen, 2 * 6 * 9);
 		for (const std::uint64_t* near : { static_cast<const std::uint64_t*>(nullptr), bits.data() })
-			hits += compareToTheBit(A, B, V3(-normal), 2, 0, near) + compareToTheBit(B, A, normal, 2, 6 * 9, near);
+			hits += compareToTheBit(A, B, V3(-normal), 2, 0, near, k % 2) + compareToTheBit(B, A, normal, 2, 6 * 9, near, k % 2);
 	}
 	EXPECT_GE(hits, 400);
 }

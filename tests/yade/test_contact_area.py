@@ -1,4 +1,4 @@
-"""A sampled contact's area and the time step it sets (rdem::tributaryCover, doc/sphinx/rdemTheory.rst §4).
+"""A sampled contact's area and the time step it sets with Ig2_RdemBlock_RdemBlock_RdemGeom.clipSampleAreas (rdem::tributaryCover).
 
 A face sample acts over the part of its tributary rectangle across which the other block lies (paper §3.1 and eq. 13:
 springs and dashpots per unit contact area). The case is that of the two-storey house of scripts/building.py --big
@@ -20,10 +20,11 @@ DEPTH = 1e-6  # overlap along z [m]
 
 class ContactArea(unittest.TestCase):
 
-	def scene(self):
+	def scene(self, clip=True):
 		harness.freshScene()
 		mat = O.materials.append(RdemMat(young=16.7e9, poisson=0.15, density=1800, dampingNormal=1, dampingShear=1))
 		O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=True, contactSamples=1, dt=1e-10)
+		rdem.geomFunctor().clipSampleAreas = clip
 		slab = O.bodies.append(rdem.block((0, 0, 0), SLAB, mat, fixed=True))
 		brick = O.bodies.append(
 		        rdem.block((-SLAB[0] - BRICK[0] + D, -SLAB[1], -SLAB[2] - BRICK[2] + DEPTH), BRICK, mat))
@@ -40,6 +41,15 @@ class ContactArea(unittest.TestCase):
 		self.assertEqual(len(I.geom.patch), 0)
 		for a in I.geom.sampleArea:
 			self.assertAlmostEqual(a / (D * BRICK[1] / 2), 1, delta=1e-9)
+
+	def testWithoutClipTheSlabCornerTakesAnEighthOfItsFace(self):
+		# the default (the validated walls and the paper's cube): the slab's corner sample takes a quarter of the slab's
+		# face, halved; the brick's corner a quarter of its top face, halved, whatever the overlap
+		slab, brick = self.scene(clip=False)
+		areas = sorted(O.interactions[slab, brick].geom.sampleArea)
+		self.assertEqual(len(areas), 2)
+		self.assertAlmostEqual(areas[0] / (4 * BRICK[0] * BRICK[1] / 8), 1, delta=1e-9)
+		self.assertAlmostEqual(areas[1] / (4 * SLAB[0] * SLAB[1] / 8), 1, delta=1e-9)
 
 	def testStepOfTheOverlap(self):
 		# The brick moves along x, y, z only, each axis a spring-dashpot oscillator of the whole contact area

@@ -66,7 +66,7 @@ namespace rdem {
 		int                    key;   ///< firstKey + face·(n+1)² + i·(n+1) + j, face = 2k + side (side 1: the +R_X e_k face)
 		Eigen::Matrix<S, 3, 1> point; ///< contact point: the sample moved by half its depth along u (global) [m]
 		S                      depth; ///< sampleDepth of the sample in Y along u [m]
-		S                      area; ///< trapezoid weight × the face's cosine with -u, halved (both blocks are sampled), times the part of its tributary rectangle across which Y lies (tributaryCover along both face axes) [m²]
+		S                      area; ///< trapezoid weight × the face's cosine with -u, halved (both blocks are sampled); with clip, times the part of its tributary rectangle across which Y lies (tributaryCover along both face axes) [m²]
 	};
 
 	/* The face samples of block X inside block Y along the unit direction u in which X separates from Y, passed to
@@ -75,7 +75,9 @@ namespace rdem {
 	   key / 64), only the samples whose bit is set are tested; nullptr: all. The same points, depths and areas, to the
 	   bit, as testing every sample of every face of X that faces Y with sampleDepthLocal (tests/unit/test_face_samples.cpp):
 	   the faces that cannot reach Y (faceMayEnterLocal) and those turned away from u are skipped before their samples are
-	   made, X's axes are turned into Y's frame once per call, and the trapezoid nodes made once (TrapezoidNodes). */
+	   made, X's axes are turned into Y's frame once per call, and the trapezoid nodes made once (TrapezoidNodes).
+	   clip: each sample's area is only the part of its tributary rectangle across which Y lies (tributaryCover; a
+	   sample with none is not in contact); false: the whole rectangle (Ig2_RdemBlock_RdemBlock_RdemGeom.clipSampleAreas). */
 	template <class S, class Emit>
 	void faceSamplesInside(
 	        const OrientedBlock<S>&       X,
@@ -85,6 +87,7 @@ namespace rdem {
 	        int                           firstKey,
 	        const std::uint64_t*          near,
 	        const TrapezoidNodes<S>&      node,
+	        bool                          clip,
 	        Emit&&                        emit)
 	{
 		using V                              = Eigen::Matrix<S, 3, 1>;
@@ -147,7 +150,7 @@ namespace rdem {
 				const S                 rb  = X.half[k2] * b.x;
 				const auto              hit = sampleDepthLocal<S>(Y.half, qa + rb * q2, uq);
 				if (!hit.hit) continue;
-				const S cover = tributaryCover<S>(i, n, X.half[k1], c1, r1) * tributaryCover<S>(j, n, X.half[k2], c2, r2);
+				const S cover = clip ? tributaryCover<S>(i, n, X.half[k1], c1, r1) * tributaryCover<S>(j, n, X.half[k2], c2, r2) : S(1);
 				if (!(cover > 0)) continue; // on Y's edge with nothing of Y across its tributary area: no contact area
 				emit(FaceSampleHit<S> { key, fc + sa * t1 + rb * t2 + (hit.depth / 2) * u, hit.depth, area * a.w * b.w * cosine / 2 * cover });
 			}
