@@ -714,6 +714,26 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::addStiffness(
 	}
 }
 
+void Law2_RdemGeom_RdemPhys_FaceSprings::addDashpots(Scene* sc, const vector<const Interaction*>& inIdOrder, rdem::BlockStiffness<Real>& C, Real capDt)
+{
+	for (const Interaction* I : inIdOrder) {
+		const auto& g = *static_cast<const RdemGeom*>(I->geom.get());
+		const auto& p = *static_cast<const RdemPhys*>(I->phys.get());
+		// a bond whose segments are all intact has no dashpot (forPointSprings): addStiffness adds nothing to C for it
+		const bool broken = std::any_of(p.segState.begin(), p.segState.end(), [](int s) { return s != int(rdem::SegmentState::Intact); });
+		if (g.sampleKey.empty() && g.nPatch() == 0 && !broken) continue;
+		C.beginPair(I->getId1(), I->getId2());
+		forPointSprings(
+		        sc,
+		        *I,
+		        capDt,
+		        [&](long b1, long b2, const Vector3r&, const Vector3r& r1, const Vector3r& r2, const Vector3r& n, Real, Real, Real cn, Real cs) {
+			        C.addPointSpring(b1, b2, r1, r2, n, cn, cs);
+		        });
+		C.endPair();
+	}
+}
+
 void Law2_RdemGeom_RdemPhys_FaceSprings::addOmega2Bound(Scene* sc, vector<Real>& omega2)
 {
 	for (const Interaction* I : rdem::interactionsInIdOrder(sc)) {

@@ -27,6 +27,8 @@ public:
 	/// capped by dashpotCap for capDt; interactions in the order of their bodies' ids.
 	void
 	addStiffness(Scene* sc, const vector<const Interaction*>& inIdOrder, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt) override;
+	/// addStiffness's C alone, from the interactions that can have a dashpot (a contact sample, a patch, a broken segment).
+	void addDashpots(Scene* sc, const vector<const Interaction*>& inIdOrder, rdem::BlockStiffness<Real>& C, Real capDt) override;
 	/// Per point spring, 2(k_t/m + k_r/I_min) on each free body (rdem::pointSpringOmega2).
 	void addOmega2Bound(Scene* sc, vector<Real>& omega2) override;
 	/* Stability caps (c_n, c_s) of a contact dashpot at point C with normal n (explicit central differences) [N·s/m], for

@@ -34,6 +34,8 @@ public:
 	/// No dashpots. Nothing while the engine is dead.
 	void
 	addStiffness(Scene* sc, const vector<const Interaction*>& inIdOrder, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt) override;
+	/// The elements and cells have no dashpots: nothing.
+	void addDashpots(Scene*, const vector<const Interaction*>&, rdem::BlockStiffness<Real>&, Real) override { }
 	/// omega2Bound on the bodies that are not fixed; nothing while the engine is dead.
 	void addOmega2Bound(Scene* sc, vector<Real>& omega2) override;
 	/// Number of elements (paper's hexahedra).

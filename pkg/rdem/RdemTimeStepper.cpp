@@ -146,10 +146,17 @@ void RdemTimeStepper::assemble(
 {
 	for (RdemStiffnessSource* source : RdemSharedState::of(sc, shared).stiffnessSources)
 		source->addStiffness(sc, inIdOrder, K, C, capDt); // the law's springs and dashpots, the Poisson engine's elements and cells
-	const size_t       nB     = sc->bodies->size();
-	const vector<char> bonded = contactBound ? bondedBodies(sc) : vector<char>();
-	scale.assign(nB, rdem::BodyScale<Real>());
-	const ContactSetup setup = contactBound ? contactSetup(sc) : ContactSetup();
+	bodyScales(sc, scale);
+	if (!contactBound) return;
+	const vector<char> bonded = bondedBodies(sc);
+	const ContactSetup setup  = contactSetup(sc);
+	for (const auto& b : *sc->bodies)
+		if (b && !rdem::isGhost(*sc, *b) && b->state->blockedDOFs != State::DOF_ALL && !bonded[size_t(b->id)]) addContactsToCome(K, *b, setup);
+}
+
+void RdemTimeStepper::bodyScales(Scene* sc, vector<rdem::BodyScale<Real>>& scale)
+{
+	scale.assign(sc->bodies->size(), rdem::BodyScale<Real>());
 	for (const auto& b : *sc->bodies) {
 		if (!b) continue;
 		// On a rank of a distributed run (yade.mpy), a ghost's motion is its owner's: its DOFs are fixed here, so that
@@ -158,7 +165,6 @@ void RdemTimeStepper::assemble(
 		const unsigned blocked = rdem::isGhost(*sc, *b) ? unsigned(State::DOF_ALL) : unsigned(s.blockedDOFs);
 		const Real     f       = rdem::inertialFactor(s.densityScaling); // the inertial mass and inertia (density scaling)
 		scale[size_t(b->id)]   = rdem::bodyScale<Real>(s.mass * f, Vector3r(s.inertia * f), s.ori.toRotationMatrix(), blocked);
-		if (contactBound && blocked != State::DOF_ALL && !bonded[size_t(b->id)]) addContactsToCome(K, *b, setup);
 	}
 }
 
@@ -167,7 +173,19 @@ Real RdemTimeStepper::lanczos(Scene* sc, const vector<const Interaction*>& inIdO
 	const size_t                  nB = sc->bodies->size();
 	rdem::BlockStiffness<Real>    K(nB), C(nB);
 	vector<rdem::BodyScale<Real>> scale;
-	assemble(sc, inIdOrder, K, C, scale);
+	/* After a break (keepStiffest), K is the same: a broken segment keeps its spring as a contact spring of the same k̄A
+	   (forPointSprings), and the Poisson cells' terms only scale down with the intact fraction (releaseOnCrack); its
+	   dashpot is new. So λ_K and its Ritz vector are kept (springCriticalDt, saved), and the dashpots' part is redone:
+	   C alone first (RdemStiffnessSource::addDashpots, the interactions that can have a dashpot), K only if the damped
+	   limit's lower bound from λ_K and λ_C is below what the step can use (then the Lanczos runs on Δt²K̃ + 2ΔtC̃ need
+	   it). The same numbers as assembling both, to the bit: C's terms come in the same order. */
+	const bool keep = keepStiffest && ritzVector.size() == 6 * nB && springCriticalDt > 0 && math::isfinite(springCriticalDt);
+	if (keep) {
+		for (RdemStiffnessSource* source : RdemSharedState::of(sc, shared).stiffnessSources)
+			source->addDashpots(sc, inIdOrder, C, capDt);
+		bodyScales(sc, scale);
+	} else
+		assemble(sc, inIdOrder, K, C, scale);
 	rdem::NormalisedOperators<Real> ops(scale);
 	const size_t                    n          = ops.size();
 	const vector<char>              mask       = ops.mask();
@@ -178,10 +196,6 @@ Real RdemTimeStepper::lanczos(Scene* sc, const vector<const Interaction*>& inIdO
 		// warm start mixed with 10 % of a generic vector: a new stiff spot (a contact) far from the old mode is still found
 		return rdem::lanczosLargest<Real>(normalised(X), n, mask, start, 2, lanczosMaxSteps, lanczosTolerance, Real(0.1));
 	};
-	/* After a break (keepStiffest), K is the same: a broken segment keeps its spring as a contact spring of the same k̄A
-	   (forPointSprings), and the Poisson cells' terms only scale down with the intact fraction (releaseOnCrack); its
-	   dashpot is new. So λ_K and its Ritz vector are kept (springCriticalDt, saved), and the dashpots' part is redone. */
-	const bool keep    = keepStiffest && ritzVector.size() == n && springCriticalDt > 0 && math::isfinite(springCriticalDt);
 	const Real lambdaK = keep ? Real(4) / (springCriticalDt * springCriticalDt) : Real(0);
 	const auto est     = keep ? rdem::LargestEigenvalue<Real> { lambdaK, 0, 0 } : largest(K, ritzVector);
 	if (!keep) {
@@ -198,6 +212,11 @@ Real RdemTimeStepper::lanczos(Scene* sc, const vector<const Interaction*>& inIdO
 			start[i] = ritzVector[i] + dashpotRitzVector[i];
 	// an automatic step under contactLimit is at most contactDt: a root above it need not be found closer
 	const Real enough = active && contactLimit ? rdem::criticallyDampedStep(springCriticalDt) : std::numeric_limits<Real>::infinity();
+	if (keep && !(rdem::dampedCriticalStep(est.upper(), dashpotRate) >= enough)) { // the Lanczos runs below need K
+		rdem::BlockStiffness<Real>    again(nB); // C and the scales once more, as assemble makes them with K (already made)
+		vector<rdem::BodyScale<Real>> same;
+		assemble(sc, inIdOrder, K, again, same);
+	}
 	const auto both   = [&](const Real* x, Real* kx, Real* cx) { ops.applyBoth(K, C, x, kx, cx); };
 	const auto damped = rdem::dampedCriticalStepOfBoth<Real>(
 	        both, normalised(K), n, mask, start, est.upper(), dashpotRate, lanczosMaxSteps, lanczosTolerance, 8, enough);

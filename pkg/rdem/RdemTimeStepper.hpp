@@ -91,6 +91,8 @@ private:
 	Real gershgorin(Scene* scene);
 	/// keepStiffest: take λ_K and its Ritz vector from the last estimate (springCriticalDt), redo the dashpots' λ_C and the damped limit.
 	Real lanczos(Scene* scene, const vector<const Interaction*>& inIdOrder, bool keepStiffest = false);
+	/// Each body's mass normalisation (inertial masses; a ghost of a distributed run fixed), by body id.
+	void bodyScales(Scene* scene, vector<rdem::BodyScale<Real>>& scale);
 	/// Refuse or warn about a fixed O.dt above the scene's limits (over all ranks of a distributed run) [s].
 	void checkFixedDt(Scene* scene, Real criticalDtAll, Real springCriticalDtAll);
 	/// The step for which the dashpots are capped as the law caps them (Law2…::dashpotCap): O.dt when the estimate
