@@ -8,6 +8,7 @@
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
 #include <pkg/rdem/RdemBondKeeper.hpp>
+#include <pkg/rdem/RdemCellNetwork.hpp>
 #include <pkg/rdem/RdemRanks.hpp>
 #include <stdexcept>
 
@@ -45,6 +46,7 @@ void RdemBondKeeper::action()
 		scene->interactions->insertInteractionMPI(I); // in place of the collider's potential interaction of the pair, if any
 		++restored;
 	}
+	if (restored > 0) RdemCellNetwork::generation += 1; // the Poisson cells take the bonds put back, as after a build
 	LOG_INFO("rank " << scene->subdomain << ": " << restored << " of " << kept.size() << " bonds across subdomains put back");
 	// the master and the other ranks drop the bonds of bodies they no longer hold: the last references, in the simulation's
 	// thread, to what may come from Python (an RdemJoint made in a script), which needs the GIL (RdemCellNetwork::rebuild)

@@ -41,18 +41,36 @@ namespace {
 	}
 }
 
-bool RdemCellNetwork::refresh(Scene* scene)
+bool RdemCellNetwork::refresh(Scene* scene, long bondChanges)
 {
 	// A scene without cells (the paper's hexahedra, or no build) stays without them until the next build: its
 	// interactions, which come and go at nearly every step once contacts form, are then never scanned.
 	if (builtGeneration == generation && nCellBlocks == 0) return false;
 	const long nB = long(scene->bodies->size()), nI = long(scene->interactions->size());
-	if (builtGeneration != generation || builtInteractions != nI || builtBodies != nB) rebuild(scene);
+	/* The network holds the real bonds with cell coefficients, which only RdemPoissonEngine.build gives (a bond made
+	   later by utils.createInteraction has none until the next build); a released one leaves it at the next
+	   updateStrains (bondChanges). The collider's insertions and erasures of contacts change the container's size at
+	   nearly every step, not the bonds: then only a pointer per bond is checked (bondsInContainer). */
+	if (builtGeneration != generation || builtBodies != nB || builtBondChanges != bondChanges) rebuild(scene, bondChanges);
+	else if (seenInteractions != nI) {
+		if (!bondsInContainer(scene)) rebuild(scene, bondChanges);
+		seenInteractions = nI;
+	}
 	return nCellBlocks > 0;
 }
 
-void RdemCellNetwork::rebuild(Scene* scene)
+bool RdemCellNetwork::bondsInContainer(Scene* scene) const
 {
+	// InteractionContainer::erase moves the last interaction into the erased one's place and leaves the erased one's linIx
+	auto&      c = *scene->interactions;
+	const long n = long(c.size());
+	return std::all_of(
+	        intr.begin(), intr.end(), [&](const shared_ptr<Interaction>& I) { return I->linIx >= 0 && I->linIx < n && c[size_t(I->linIx)] == I; });
+}
+
+void RdemCellNetwork::rebuild(Scene* scene, long bondChanges)
+{
+	++nRebuilds;
 	releaseBonds(intr, phys);
 	bond.clear();
 	body.clear();
@@ -127,10 +145,11 @@ void RdemCellNetwork::rebuild(Scene* scene)
 	scalePrev.assign(body.size(), 1);
 	for (size_t i = 0; i < body.size(); ++i)
 		scalePrev[i] = state[i]->cellScale;
-	builtGeneration   = generation;
-	builtInteractions = long(scene->interactions->size());
-	builtBodies       = long(scene->bodies->size());
-	brokenSeen        = -1;
+	builtGeneration  = generation;
+	builtBodies      = long(scene->bodies->size());
+	builtBondChanges = bondChanges;
+	seenInteractions = long(scene->interactions->size());
+	brokenSeen       = -1;
 }
 
 void RdemCellNetwork::updateIntact(long brokenSprings)
@@ -149,9 +168,9 @@ void RdemCellNetwork::updateIntact(long brokenSprings)
 	}
 }
 
-void RdemCellNetwork::updateStrains(Scene* scene, long brokenSprings, int threads)
+void RdemCellNetwork::updateStrains(Scene* scene, long brokenSprings, long bondChanges, int threads)
 {
-	if (!refresh(scene)) return;
+	if (!refresh(scene, bondChanges)) return;
 	updateIntact(brokenSprings);
 	const long nBlocks = long(body.size()), nBonds = long(bond.size());
 #ifdef YADE_OPENMP
@@ -305,7 +324,7 @@ long RdemCellNetwork::reduceMasterStresses(Scene* scene)
 
 void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released, int threads, const StressSync& sync)
 {
-	if (!refresh(scene)) {
+	if (!refresh(scene, builtBondChanges)) {
 		if (sync) { // the sync is collective on YADE's MPI: a rank without cells takes part with none
 			vector<Vector3r> none;
 			sync(vector<Body::id_t>(), none);
@@ -389,7 +408,7 @@ vector<Real> RdemCellNetwork::omega2Bound(Scene* scene)
 	   share. Each bond q is bounded like a normal spring of stiffness κ_q = Σ_r |K_qr| at its face centre, with the
 	   Gershgorin terms 2κ(1/m + |r×n|²/I_min) of each of its free blocks (as RdemTimeStepper does for springs) [1/s²]. */
 	vector<Real> w2(scene->bodies->size(), 0);
-	if (!refresh(scene)) return w2;
+	if (!refresh(scene, builtBondChanges)) return w2;
 	vector<Vector3r> row(body.size(), Vector3r::Zero()); // per cell and axis d: Σ_r |K(d, d_r)| |c_r|
 	for (size_t i = 0; i < body.size(); ++i) {
 		if (!hasCell[i]) continue;
@@ -451,7 +470,7 @@ vector<Real> RdemCellNetwork::omega2Bound(Scene* scene)
 
 void RdemCellNetwork::addStiffness(Scene* scene, bool releaseOnCrack, long brokenSprings, rdem::BlockStiffness<Real>& K)
 {
-	if (!refresh(scene)) return;
+	if (!refresh(scene, builtBondChanges)) return;
 	updateIntact(brokenSprings);
 	// the openings u_n = n·(P₂ - P₁) at the face centres, as updateStrains, linearised: gradients n and r×n
 	vector<size_t> openingOf(bond.size());

@@ -25,12 +25,17 @@ public:
 	/// Called by applyForces between the cells' ∂W/∂ε and the bonds' forces with the blocks' ids and their ∂W/∂ε [N·m] (by
 	/// compact index): on YADE's MPI, RdemGhostExchange replaces the ghosts' by their owners' (it needs bonds the rank lacks).
 	using StressSync = std::function<void(const vector<Body::id_t>& body, vector<Vector3r>& stress)>;
-	/// Rebuilds the arrays if the scene changed since the last call; false if there is no cell.
-	bool refresh(Scene* scene);
+	/* Rebuilds the arrays if what defines them changed since the last call: a new RdemPoissonEngine.build (generation),
+	   the bodies' count (and RdemBondKeeper's bonds put back, which bump generation), bondChanges
+	   (RdemSharedState::bondChanges: bonds released by the law), or a bond that is no longer in the interaction container (O.interactions.erase, the erasure of a
+	   body; looked for when the container's size changed). Contacts that come and go leave them. False if there is no cell. */
+	bool refresh(Scene* scene, long bondChanges);
 	/// Before the law: poses, openings u_n = n·(P₂ - P₁) at the face centres, crack scales, RdemState::strain,
 	/// ::cellScale and ::cellStress of every cell; brokenSprings: the scene's count (RdemSharedState), the crack scales
 	/// are recomputed when it changes. On `threads` OpenMP threads (the calling engine's ompThreads, ≤ 0: all).
-	void updateStrains(Scene* scene, long brokenSprings, int threads);
+	/// bondChanges: RdemSharedState::bondChanges; only here does a change of it rebuild the arrays, so that the step's
+	/// later calls (applyForces, the time stepper's) use the bonds whose openings this one computed, as before.
+	void updateStrains(Scene* scene, long brokenSprings, long bondChanges, int threads);
 	/// After the law: ∂W/∂ε of every cell (its elastic stress plus the reaction of its bonds' offset correction), then the
 	/// normal force -Σ c ∂W/∂ε of every bond at its face centre, added to the blocks in a fixed order. Adds the cells'
 	/// energy ½ s εᵀKε and the energy released by a drop of s [J]. Threads as for updateStrains.
@@ -51,6 +56,8 @@ public:
 	void addStiffness(Scene* scene, bool releaseOnCrack, long brokenSprings, rdem::BlockStiffness<Real>& K);
 	/// Number of blocks with a cell.
 	size_t nCells() const { return nCellBlocks; }
+	/// How many times the arrays were built (read by RdemPoissonEngine.cellRebuilds, for tests).
+	long rebuilds() const { return nRebuilds; }
 	/// Incremented by RdemPoissonEngine::build: arrays made before it are rebuilt.
 	static long generation;
 
@@ -84,8 +91,12 @@ private:
 	vector<char>       booksEnergy;  // per compact block on the master (YADE's MPI): whether this rank books its cell's energy
 	vector<Real>       scalePrev;    // per compact block: cell scale of the last step
 	size_t             nCellBlocks     = 0;
-	long               builtGeneration = -1, builtInteractions = -1, builtBodies = -1, brokenSeen = -1;
-	void               rebuild(Scene* scene);
+	long               builtGeneration = -1, builtBodies = -1, builtBondChanges = -1, brokenSeen = -1;
+	long               seenInteractions = -1; // the container's size when the bonds were last found in it
+	long               nRebuilds        = 0;
+	void               rebuild(Scene* scene, long bondChanges);
+	/// Whether every bond's interaction is still in the scene's container (an erased one keeps its old linIx).
+	bool bondsInContainer(Scene* scene) const;
 	/// Cell i's strain from ε (before the condensation), its crack scale and elastic stress (RdemState).
 	void setStrain(size_t i, const Vector3r& eps, Real scale);
 	/// The cells' ∂W/∂ε: the elastic part s K ε plus the reaction Cᵀ g of its bonds' offset correction (C the condensation).

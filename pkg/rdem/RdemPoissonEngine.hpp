@@ -42,6 +42,8 @@ public:
 	int nElements() const { return int(nodes.size() / 8); }
 	/// Number of blocks with a Poisson cell.
 	int nCells() const;
+	/// How many times the cells' network was built (RdemCellNetwork::rebuilds).
+	long cellRebuilds() const { return cells.rebuilds(); }
 	/// The cells at run time (RdemCellStrainUpdater updates their strains before the interaction loop).
 	RdemCellNetwork& cellNetwork() { return cells; }
 	/// The RdemPoissonEngine of the scene, or nullptr.
@@ -78,6 +80,7 @@ With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemPoisson``, the elements' or
 		.def("elementScales",&RdemPoissonEngine::elementScales,"Per element, the current force scale (1 intact, 0 released by a crack or an erased block).")
 		.add_property("nElements",&RdemPoissonEngine::nElements,"Number of elements (the paper's hexahedra).")
 		.add_property("nCells",&RdemPoissonEngine::nCells,"Number of blocks with a Poisson cell.")
+		.add_property("cellRebuilds",&RdemPoissonEngine::cellRebuilds,"How many times the cells' run-time network was made from the scene's bonds: at the first step after a ``build``, when bodies are added or a bond is released or erased; not when contacts come and go (read-only, for tests).")
 	);
 	// clang-format on
 	DECLARE_LOGGER;
