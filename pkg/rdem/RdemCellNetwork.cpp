@@ -48,12 +48,16 @@ bool RdemCellNetwork::refresh(Scene* scene, long bondChanges)
 	if (builtGeneration == generation && nCellBlocks == 0) return false;
 	const long nB = long(scene->bodies->size()), nI = long(scene->interactions->size());
 	/* The network holds the real bonds with cell coefficients, which only RdemPoissonEngine.build gives (a bond made
-	   later by utils.createInteraction has none until the next build); a released one leaves it at the next
-	   updateStrains (bondChanges). The collider's insertions and erasures of contacts change the container's size at
-	   nearly every step, not the bonds: then only a pointer per bond is checked (bondsInContainer). */
-	if (builtGeneration != generation || builtBodies != nB || builtBondChanges != bondChanges) rebuild(scene, bondChanges);
+	   later by utils.createInteraction has none until the next build). It is made again when the bodies change, and,
+	   when the container's size changed (the collider's insertions and erasures of contacts change it at nearly every
+	   step), if a bond was released since (bondChanges: the law's releases) or erased (its interaction is no longer in
+	   the container, bondsInContainer): what a rebuild at every change of the size gave, whose arrays it would make
+	   anew with the same bonds in the same order (the container keeps the order of the interactions it does not
+	   erase, but for the last one, which takes an erased one's place). A released bond stays until then, with intact
+	   fraction 0 (updateIntact). */
+	if (builtGeneration != generation || builtBodies != nB) rebuild(scene, bondChanges);
 	else if (seenInteractions != nI) {
-		if (!bondsInContainer(scene)) rebuild(scene, bondChanges);
+		if (builtBondChanges != bondChanges || !bondsInContainer(scene)) rebuild(scene, bondChanges);
 		seenInteractions = nI;
 	}
 	return nCellBlocks > 0;

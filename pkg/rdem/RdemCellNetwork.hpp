@@ -25,16 +25,15 @@ public:
 	/// Called by applyForces between the cells' ∂W/∂ε and the bonds' forces with the blocks' ids and their ∂W/∂ε [N·m] (by
 	/// compact index): on YADE's MPI, RdemGhostExchange replaces the ghosts' by their owners' (it needs bonds the rank lacks).
 	using StressSync = std::function<void(const vector<Body::id_t>& body, vector<Vector3r>& stress)>;
-	/* Rebuilds the arrays if what defines them changed since the last call: a new RdemPoissonEngine.build (generation),
-	   the bodies' count (and RdemBondKeeper's bonds put back, which bump generation), bondChanges
-	   (RdemSharedState::bondChanges: bonds released by the law), or a bond that is no longer in the interaction container (O.interactions.erase, the erasure of a
-	   body; looked for when the container's size changed). Contacts that come and go leave them. False if there is no cell. */
+	/* Rebuilds the arrays if what defines them changed since the last call: a new RdemPoissonEngine.build (generation;
+	   RdemBondKeeper's bonds put back bump it too), the bodies' count, and, once the interaction container's size
+	   changes, a bond released since (bondChanges: RdemSharedState::bondChanges) or erased (O.interactions.erase, the
+	   erasure of a body). Contacts that come and go leave them. False if there is no cell. */
 	bool refresh(Scene* scene, long bondChanges);
 	/// Before the law: poses, openings u_n = n·(P₂ - P₁) at the face centres, crack scales, RdemState::strain,
 	/// ::cellScale and ::cellStress of every cell; brokenSprings: the scene's count (RdemSharedState), the crack scales
 	/// are recomputed when it changes. On `threads` OpenMP threads (the calling engine's ompThreads, ≤ 0: all).
-	/// bondChanges: RdemSharedState::bondChanges; only here does a change of it rebuild the arrays, so that the step's
-	/// later calls (applyForces, the time stepper's) use the bonds whose openings this one computed, as before.
+	/// bondChanges: RdemSharedState::bondChanges (the step's other calls pass the one of the last rebuild).
 	void updateStrains(Scene* scene, long brokenSprings, long bondChanges, int threads);
 	/// After the law: ∂W/∂ε of every cell (its elastic stress plus the reaction of its bonds' offset correction), then the
 	/// normal force -Σ c ∂W/∂ε of every bond at its face centre, added to the blocks in a fixed order. Adds the cells'
