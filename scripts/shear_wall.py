@@ -422,7 +422,7 @@ dissipated = [
 ]
 ax.plot(drift, [a + b + c for a, b, c in zip(h['workH'], h['workV'], h['workM'])], 'k-', label='work of the actuator, the vertical load and the couple')
 ax.plot(drift, [a + b for a, b in zip(h['rdemElastic'], h['rdemPoisson'])], label='elastic (springs and cells)')
-ax.plot(drift, dissipated, label='dissipated (breaks, fracture, crushing, dashpots, friction, damping)')
+ax.plot(drift, dissipated, label='dissipated (breaks, dropped contact springs, fracture, crushing, dashpots, friction, damping)')
 ax.plot(drift, h['nonviscDamp'], ':', label="of which Cundall's damping")
 ax.plot(drift, h['kinetic'], label='kinetic')
 ax.set_ylabel('energy [J]')
