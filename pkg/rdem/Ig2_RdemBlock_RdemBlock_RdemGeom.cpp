@@ -536,25 +536,30 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	const ContactHistory from = g.nPatch() > 0 && p.contactKey.empty() && p.contactOffset.size() == g.nPatch()
 	        ? patchHistory(g, p, A, B, (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized())
 	        : ContactHistory();
-	/* The energies of the last step's samples (the law's, rdem::contactSpringForce: its depths are still in g, its
-	   offsets and shear elongations in p), for the samples this step drops while loaded: a vertex that slides off the
-	   other block's face, or whose coincident twin of the other block takes over with no history, takes its spring with it. */
-	static thread_local vector<Real> sampleEnergy;
+	/* The last step's samples, whose history the law kept in p (RdemPhys::contactKey, contactOffset, contactShear), are
+	   set aside (swapped: no copy) while g is sampled again, so that a sample this step drops while it is loaded books
+	   the elastic energy the law gave its spring in the last step (rdem::contactSpringForce): a point that slides past
+	   the edge of the other block's face takes its spring with it. */
+	static thread_local vector<int>  lastKey;
+	static thread_local vector<Real> lastDepth, lastArea;
 	const bool                       sampled = scene->trackEnergy && g.nPatch() == 0 && !g.sampleKey.empty() && g.sampleKey == p.contactKey;
 	if (sampled) {
-		sampleEnergy.resize(g.sampleKey.size());
-		for (size_t k = 0; k < g.sampleKey.size(); ++k)
-			sampleEnergy[k] = rdem::contactSpringEnergy<Real>(
-			        p.kn * (p.weightNormal * g.sampleArea[k]),
-			        p.ks * (p.weightShear * g.sampleArea[k]),
-			        math::max(g.sampleDepth[k] - p.contactOffset[k], Real(0)),
-			        p.contactShear[k]);
+		lastKey.swap(g.sampleKey);
+		lastDepth.swap(g.sampleDepth);
+		lastArea.swap(g.sampleArea);
 	}
 	if (g.nPatch() > 0) g.clearPatch(); // and the configuration it was derived in
 	if (tried) markDerived(A, B, state1.ori, state2.ori, g);
 	g.clearSamples();
 	if (overlap) sampleContacts(pair, sat, state1, state2, tol, g.samplesPerEdge, g, nearSamples(pair, *I, g));
-	if (sampled) releaseSprings(p, rdem::sumOfDropped(p.contactKey, sampleEnergy, g.sampleKey.data(), g.sampleKey.size()));
+	if (sampled)
+		releaseSprings(p, rdem::sumOfDropped(lastKey, g.sampleKey.data(), g.sampleKey.size(), [&](size_t j) {
+			               return rdem::contactSpringEnergy<Real>(
+			                       p.kn * (p.weightNormal * lastArea[j]),
+			                       p.ks * (p.weightShear * lastArea[j]),
+			                       math::max(lastDepth[j] - p.contactOffset[j], Real(0)),
+			                       p.contactShear[j]);
+		               }));
 	if (!from.pos.empty()) {
 		Real released = 0;
 		handOverToSamples(from, g, p, released);
