@@ -540,24 +540,27 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	   set aside (swapped: no copy) while g is sampled again, so that a sample this step drops while it is loaded books
 	   the elastic energy the law gave its spring in the last step (rdem::contactSpringForce): a point that slides past
 	   the edge of the other block's face takes its spring with it. */
-	static thread_local vector<int>  lastKey;
-	static thread_local vector<Real> lastDepth, lastArea;
-	const bool                       sampled = scene->trackEnergy && g.nPatch() == 0 && !g.sampleKey.empty() && g.sampleKey == p.contactKey;
+	struct LastSamples {
+		vector<int>  key;
+		vector<Real> depth, area;
+	};
+	static thread_local LastSamples last; // one thread-local object: one look-up of the thread's storage
+	const bool                      sampled = scene->trackEnergy && g.nPatch() == 0 && !g.sampleKey.empty() && g.sampleKey == p.contactKey;
 	if (sampled) {
-		lastKey.swap(g.sampleKey);
-		lastDepth.swap(g.sampleDepth);
-		lastArea.swap(g.sampleArea);
+		last.key.swap(g.sampleKey);
+		last.depth.swap(g.sampleDepth);
+		last.area.swap(g.sampleArea);
 	}
 	if (g.nPatch() > 0) g.clearPatch(); // and the configuration it was derived in
 	if (tried) markDerived(A, B, state1.ori, state2.ori, g);
 	g.clearSamples();
 	if (overlap) sampleContacts(pair, sat, state1, state2, tol, g.samplesPerEdge, g, nearSamples(pair, *I, g));
 	if (sampled)
-		releaseSprings(p, rdem::sumOfDropped(lastKey, g.sampleKey.data(), g.sampleKey.size(), [&](size_t j) {
+		releaseSprings(p, rdem::sumOfDropped(last.key, g.sampleKey.data(), g.sampleKey.size(), [&](size_t j) {
 			               return rdem::contactSpringEnergy<Real>(
-			                       p.kn * (p.weightNormal * lastArea[j]),
-			                       p.ks * (p.weightShear * lastArea[j]),
-			                       math::max(lastDepth[j] - p.contactOffset[j], Real(0)),
+			                       p.kn * (p.weightNormal * last.area[j]),
+			                       p.ks * (p.weightShear * last.area[j]),
+			                       math::max(last.depth[j] - p.contactOffset[j], Real(0)),
 			                       p.contactShear[j]);
 		               }));
 	if (!from.pos.empty()) {
