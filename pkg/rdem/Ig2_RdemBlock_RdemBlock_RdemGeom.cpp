@@ -555,7 +555,7 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	if (tried) markDerived(A, B, state1.ori, state2.ori, g);
 	g.clearSamples();
 	if (overlap) sampleContacts(pair, sat, state1, state2, tol, g.samplesPerEdge, g, nearSamples(pair, *I, g));
-	if (sampled)
+	if (sampled && g.sampleKey != last.key) // the same samples as in the last step (most steps): none dropped
 		releaseSprings(p, rdem::sumOfDropped(last.key, g.sampleKey.data(), g.sampleKey.size(), [&](size_t j) {
 			               return rdem::contactSpringEnergy<Real>(
 			                       p.kn * (p.weightNormal * last.area[j]),
