@@ -247,7 +247,7 @@ if cli.setup_only:
 	sys.exit(0)
 
 # 3. Recording -------------------------------------------------------------------------------------------------------
-ENERGIES = ('rdemElastic', 'rdemPoisson', 'rdemBondBreak', 'rdemDashpot', 'rdemFriction', 'rdemPoissonRelease', 'rdemFractureTension', 'rdemFractureShear',
+ENERGIES = ('rdemElastic', 'rdemPoisson', 'rdemBondBreak', 'rdemContactRelease', 'rdemDashpot', 'rdemFriction', 'rdemPoissonRelease', 'rdemFractureTension', 'rdemFractureShear',
             'rdemCrushing', 'nonviscDamp', 'kinetic', 'gravWork')
 # yade.plot keeps the history (plot.data): live curves with plot.plot() in a YADE with a GUI, history.txt by saveDataTxt.
 plot.reset()
@@ -417,12 +417,12 @@ ax.set_title('%s%s: sigma0 = %.2f MPa, H0/H = %g, %s' % (cli.wall, '' if validat
 ax.legend(fontsize=7)
 ax = axes[1]
 dissipated = [
-        sum(h[e][k] for e in ('rdemBondBreak', 'rdemDashpot', 'rdemFriction', 'rdemPoissonRelease', 'rdemFractureTension', 'rdemFractureShear', 'rdemCrushing', 'nonviscDamp'))
+        sum(h[e][k] for e in ('rdemBondBreak', 'rdemContactRelease', 'rdemDashpot', 'rdemFriction', 'rdemPoissonRelease', 'rdemFractureTension', 'rdemFractureShear', 'rdemCrushing', 'nonviscDamp'))
         for k in range(len(drift))
 ]
 ax.plot(drift, [a + b + c for a, b, c in zip(h['workH'], h['workV'], h['workM'])], 'k-', label='work of the actuator, the vertical load and the couple')
 ax.plot(drift, [a + b for a, b in zip(h['rdemElastic'], h['rdemPoisson'])], label='elastic (springs and cells)')
-ax.plot(drift, dissipated, label='dissipated (breaks, fracture, crushing, dashpots, friction, damping)')
+ax.plot(drift, dissipated, label='dissipated (breaks, dropped contact springs, fracture, crushing, dashpots, friction, damping)')
 ax.plot(drift, h['nonviscDamp'], ':', label="of which Cundall's damping")
 ax.plot(drift, h['kinetic'], label='kinetic')
 ax.set_ylabel('energy [J]')

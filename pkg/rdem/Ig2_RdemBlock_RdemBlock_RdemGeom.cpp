@@ -12,6 +12,7 @@
 #include <pkg/rdem/math/FaceSamples.hpp>
 #include <pkg/rdem/math/SegmentGrid.hpp>
 #include <pkg/rdem/math/SeparationBound.hpp>
+#include <pkg/rdem/math/SortedKeys.hpp>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -199,8 +200,10 @@ namespace {
 	   none; a round trip gives the old springs back. Each old dashpot force is shared among the new points that take it, by area, so that the second
 	   half of its step's work (rdem::contactSpringForce) is booked once, not once per new point. Returns the new points'
 	   offsets depth - c (-1: no history; the law starts the point at its depth) and replaces p's shear and dashpot
-	   arrays by the new points'. */
-	vector<Real> handOver(const ContactHistory& from, const vector<Vector3r>& pos, const vector<Real>& depth, const vector<Real>& area, RdemPhys& p)
+	   arrays by the new points'; `released` is set to the elastic energy the old points stored that the new ones do not
+	   (where a depth limits c, or no new point takes an old one's history) [J]. */
+	vector<Real>
+	handOver(const ContactHistory& from, const vector<Vector3r>& pos, const vector<Real>& depth, const vector<Real>& area, RdemPhys& p, Real& released)
 	{
 		const vector<int> near = rdem::nearestPoints<Real>(from.pos, pos);
 		const Real        kn = p.weightNormal * p.kn, ks = p.weightShear * p.ks;
@@ -221,22 +224,26 @@ namespace {
 		const Real       scaleN = scale.first, scaleS = scale.second;
 		vector<Vector3r> shear(pos.size(), Vector3r::Zero()), dashpot(pos.size(), Vector3r::Zero());
 		vector<Real>     offset(pos.size(), Real(-1));
+		Real             after = 0; // twice the elastic energy of the new points [J]
 		for (size_t i = 0; i < pos.size(); ++i) {
 			if (compression[i] < 0) continue;
 			const size_t j = size_t(near[i]);
 			shear[i]       = scaleS * p.contactShear[j];
 			dashpot[i]     = (area[i] / taken[j]) * p.contactDashpot[j];
-			offset[i]      = depth[i] - math::min(scaleN * compression[i], depth[i]);
+			const Real c   = math::min(scaleN * compression[i], depth[i]);
+			offset[i]      = depth[i] - c;
+			after += 2 * rdem::contactSpringEnergy<Real>(area[i] * kn, area[i] * ks, c, shear[i]);
 		}
+		released = (before - after) / 2;
 		p.contactShear.swap(shear);
 		p.contactDashpot.swap(dashpot);
 		return offset;
 	}
 
 	/// The history of a patch passed to this step's samples of g (handOver), as the law's sample history in p.
-	void handOverToSamples(const ContactHistory& from, const RdemGeom& g, RdemPhys& p)
+	void handOverToSamples(const ContactHistory& from, const RdemGeom& g, RdemPhys& p, Real& released)
 	{
-		vector<Real>     offset = handOver(from, g.samplePoint, g.sampleDepth, g.sampleArea, p);
+		vector<Real>     offset = handOver(from, g.samplePoint, g.sampleDepth, g.sampleArea, p, released);
 		vector<int>      key;
 		vector<Vector3r> shear, dashpot;
 		vector<Real>     kept;
@@ -424,6 +431,16 @@ void Ig2_RdemBlock_RdemBlock_RdemGeom::markDerived(const Block& A, const Block& 
 	g.patchTravel = patchTravelTolerance * math::min(A.half.minCoeff(), B.half.minCoeff());
 }
 
+void Ig2_RdemBlock_RdemBlock_RdemGeom::releaseSprings(RdemPhys& p, Real energy) const
+{
+	if (!scene->trackEnergy) return;
+	if (p.releasedIter != scene->iter) {
+		p.releasedEnergy = 0;
+		p.releasedIter   = scene->iter;
+	}
+	p.releasedEnergy += energy;
+}
+
 bool Ig2_RdemBlock_RdemBlock_RdemGeom::derivePatch(const Block& A, const Block& B, const Quaternionr& q1, const Quaternionr& q2, RdemGeom& g, RdemPhys* p) const
 {
 	const Real hMin = math::min(A.half.minCoeff(), B.half.minCoeff());
@@ -450,10 +467,12 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::derivePatch(const Block& A, const Block& 
 	if (!p && !touching) return false;
 	if (p) {
 		// The history of the old patch, or of the last step's samples, passed to the new springs (handOver).
-		const ContactHistory from   = g.nPatch() > 0 && p->contactKey.empty() && p->contactOffset.size() == g.nPatch()
-		          ? patchHistory(g, *p, A, B, (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized())
-		          : sampleHistory(g, *p);
-		vector<Real>         offset = handOver(from, mid, depth, fp.pointArea, *p);
+		const ContactHistory from     = g.nPatch() > 0 && p->contactKey.empty() && p->contactOffset.size() == g.nPatch()
+		            ? patchHistory(g, *p, A, B, (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized())
+		            : sampleHistory(g, *p);
+		Real                 released = 0;
+		vector<Real>         offset   = handOver(from, mid, depth, fp.pointArea, *p, released);
+		releaseSprings(*p, released);
 		p->contactKey.clear();
 		p->contactOffset.swap(offset);
 	}
@@ -519,11 +538,38 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::go(
 	const ContactHistory from = g.nPatch() > 0 && p.contactKey.empty() && p.contactOffset.size() == g.nPatch()
 	        ? patchHistory(g, p, A, B, (A.rot * g.segNormal1 - B.rot * g.segNormal2).normalized())
 	        : ContactHistory();
+	/* The last step's samples, whose history the law kept in p (RdemPhys::contactKey, contactOffset, contactShear), are
+	   set aside (swapped: no copy) while g is sampled again, so that a sample this step drops while it is loaded books
+	   the elastic energy the law gave its spring in the last step (rdem::contactSpringForce): a point that slides past
+	   the edge of the other block's face takes its spring with it. */
+	struct LastSamples {
+		vector<int>  key;
+		vector<Real> depth, area;
+	};
+	static thread_local LastSamples last; // one thread-local object: one look-up of the thread's storage
+	const bool                      sampled = scene->trackEnergy && g.nPatch() == 0 && !g.sampleKey.empty() && g.sampleKey == p.contactKey;
+	if (sampled) {
+		last.key.swap(g.sampleKey);
+		last.depth.swap(g.sampleDepth);
+		last.area.swap(g.sampleArea);
+	}
 	if (g.nPatch() > 0) g.clearPatch(); // and the configuration it was derived in
 	if (tried) markDerived(A, B, state1.ori, state2.ori, g);
 	g.clearSamples();
 	if (overlap) sampleContacts(pair, sat, state1, state2, tol, g.samplesPerEdge, g, clipSampleAreas, nearSamples(pair, *I, g));
-	if (!from.pos.empty()) handOverToSamples(from, g, p);
+	if (sampled && g.sampleKey != last.key) // the same samples as in the last step (most steps): none dropped
+		releaseSprings(p, rdem::sumOfDropped(last.key, g.sampleKey.data(), g.sampleKey.size(), [&](size_t j) {
+			               return rdem::contactSpringEnergy<Real>(
+			                       p.kn * (p.weightNormal * last.area[j]),
+			                       p.ks * (p.weightShear * last.area[j]),
+			                       math::max(last.depth[j] - p.contactOffset[j], Real(0)),
+			                       p.contactShear[j]);
+		               }));
+	if (!from.pos.empty()) {
+		Real released = 0;
+		handOverToSamples(from, g, p, released);
+		releaseSprings(p, released);
+	}
 	return true; // a real interaction stays; the law erases it when no sample is in contact
 }
 

@@ -118,6 +118,9 @@ private:
 	/// or found not to exist: it is not derived again before the blocks have moved by patchTravel relative to each other.
 	void
 	markDerived(const rdem::OrientedBlock<Real>& A, const rdem::OrientedBlock<Real>& B, const Quaternionr& q1, const Quaternionr& q2, RdemGeom& g) const;
+	/// Adds the elastic energy [J] of contact springs dropped from p in this step while loaded to what the law books as
+	/// rdemContactRelease (RdemPhys::releasedEnergy; with O.trackEnergy only).
+	void releaseSprings(RdemPhys& p, Real energy) const;
 	/// (Re)derives g's face-to-face patch (rdem::facePatch) for the blocks A, B with orientations q1, q2; false, with g
 	/// unchanged, if their faces do not meet (or, for a new contact, p null, if no spring overlaps yet). With p, the history
 	/// of the old patch or of the last step's samples passes to the new springs (handOver).

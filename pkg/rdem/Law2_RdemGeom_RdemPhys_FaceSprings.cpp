@@ -46,7 +46,7 @@ namespace {
 	/// e with its energies times share (rdem::energyShare: 1/2 for an interaction with a ghost of YADE's MPI).
 	Energies shareOf(Energies e, Real share)
 	{
-		for (Real* x : { &e.elastic, &e.dashpot, &e.friction, &e.bondBreak, &e.fractureTension, &e.fractureShear, &e.crushing })
+		for (Real* x : { &e.elastic, &e.dashpot, &e.friction, &e.bondBreak, &e.contactRelease, &e.fractureTension, &e.fractureShear, &e.crushing })
 			*x *= share;
 		return e;
 	}
@@ -577,6 +577,8 @@ bool Law2_RdemGeom_RdemPhys_FaceSprings::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	const bool   keep = g.nSegments() > 0 ? bondForces(g, p, pair, totalStress, e, breaks, on2)
 	          : g.nPatch() > 0            ? patchContactForces(g, p, pair, e, on2)
 	                                      : sampledContactForces(g, p, pair, e, on2);
+	// The contact springs the geometry functor dropped in this step while loaded (RdemPhys::releasedEnergy).
+	if (pair.trackEnergy && p.releasedIter == scene->iter) e.contactRelease += p.releasedEnergy;
 	if (breaks.tension) shared->tensionBreaks += breaks.tension;
 	if (breaks.shear) shared->shearBreaks += breaks.shear;
 	// Booked also for a bond released in this step: the elastic energy its last segments released as they broke

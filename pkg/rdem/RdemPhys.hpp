@@ -75,6 +75,11 @@ Stiffnesses and dashpot coefficients are *per unit area*; a segment or contact s
 	/// order (with Law2…::deferForces and O.trackEnergy; not saved: a step's own).
 	rdem::SpringEnergies<Real> stepEnergies;
 	long                       energyIter = -1;
+	/* The elastic energy of the contact springs that Ig2_RdemBlock_RdemBlock_RdemGeom dropped from this pair in step
+	   releasedIter while they were loaded (samples that left the sampled set, the shortfall of a history handed to new
+	   points), for the law to book as rdemContactRelease [J] (with O.trackEnergy; not saved: a step's own). */
+	Real releasedEnergy = 0;
+	long releasedIter   = -1;
 };
 REGISTER_SERIALIZABLE(RdemPhys);
 

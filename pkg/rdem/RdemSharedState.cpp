@@ -60,6 +60,9 @@ void RdemSharedState::bookSpringEnergies(Scene* scene, const rdem::SpringEnergie
 	const Real values[7] = { e.elastic, e.dashpot, e.friction, e.bondBreak, e.fractureTension, e.fractureShear, e.crushing };
 	for (int k = 0; k < (e.softening ? 7 : 4); ++k)
 		if (energyIx[k] < 0 || values[k] != 0) scene->energy->add(values[k], names[k], energyIx[k], /*reset every step: the elastic energy*/ k == 0);
+	// Made at its first release only: a scene whose contacts never drop a loaded spring keeps the energies it had.
+	static const std::string contactRelease = "rdemContactRelease";
+	if (e.contactRelease != 0) scene->energy->add(e.contactRelease, contactRelease, energyIx[7], false);
 }
 
 void RdemSharedState::releaseEnergies(Body::id_t id1, Body::id_t id2, const rdem::SpringEnergies<Real>& e)

@@ -87,7 +87,7 @@ public:
 	/// The physics that joined since the last call, in no particular order; empties the record (RdemForceAssembler).
 	vector<JoinedPhys> takeJoined();
 	/* The springs' energies of a step added to O.energy (rdemElastic, a current value; rdemDashpot, rdemFriction,
-	   rdemBondBreak and the softening ones, cumulated): by the law interaction by interaction when it applies its own
+	   rdemBondBreak, rdemContactRelease and the softening ones, cumulated): by the law interaction by interaction when it applies its own
 	   forces, else once per step by RdemForceAssembler, summed in a fixed order (bodies by id, each interaction once, then
 	   the interactions released in the step by their ids): a sum that O.load and the number of threads do not change. */
 	void bookSpringEnergies(Scene* scene, const rdem::SpringEnergies<Real>& e);
@@ -145,8 +145,8 @@ private:
 	};
 	std::mutex               releasedMutex; // as joined: rare
 	vector<ReleasedEnergies> released;
-	int                      energyIx[7] = { -1, -1, -1, -1, -1, -1, -1 }; // O.energy's indices of the springs' energies (not saved)
-	rdem::EngineListStamp    checkedEngines;                               // O.engines at the last check
+	int                      energyIx[8] = { -1, -1, -1, -1, -1, -1, -1, -1 }; // O.energy's indices of the springs' energies (not saved)
+	rdem::EngineListStamp    checkedEngines;                                   // O.engines at the last check
 	/* Once per engine list (the first step, and whenever O.engines changes): hands self (this object) to the plugin's
 	   engines and functors that have none, and throws std::runtime_error naming the engine that holds another one, is
 	   missing or is out of place: an RdemForceAssembler after the InteractionLoop whose law defers its forces, an

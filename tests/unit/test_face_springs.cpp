@@ -81,6 +81,19 @@ TEST(FaceSprings, ContactAtRestIsTheNormalSpring)
 	EXPECT_EQ(e.dashpot, 0.0);
 }
 
+TEST(FaceSprings, ContactSpringEnergyIsWhatTheSpringBooks)
+{
+	// k_n c²/2 + k_s |u_s|²/2, and the elastic energy contactSpringForce books for a point that sticks (a shear
+	// elongation of 1e-7 m gives k_s u_s = 5 N, below tan φ k_n δ = 47.7 N).
+	const double c = std::ldexp(1.0, -20), us = 1e-7;
+	EXPECT_EQ(rdem::contactSpringEnergy(1e8, 5e7, c, V(us, 0, 0)), 1e8 * c * c / 2 + 5e7 * us * us / 2);
+	V                            shear = V(us, 0, 0), dashpot = V::Zero();
+	rdem::SpringEnergies<double> e;
+	rdem::contactSpringForce(contact, c, nz, V::Zero().eval(), 1e-6, shear, dashpot, true, e);
+	EXPECT_EQ(e.elastic, rdem::contactSpringEnergy(1e8, 5e7, c, shear));
+	EXPECT_EQ(shear, V(us, 0, 0));
+}
+
 TEST(FaceSprings, NormalDashpotNeverPulls)
 {
 	V                            shear = V::Zero(), dashpot = V::Zero();

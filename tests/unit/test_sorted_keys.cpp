@@ -5,6 +5,7 @@
 #include <random>
 
 using yade::rdem::matchSortedKeys;
+using yade::rdem::sumOfDropped;
 
 namespace {
 std::vector<int> randomAscending(std::mt19937& rng, int maxKey, double p)
@@ -55,4 +56,59 @@ TEST(SortedKeys, RefusesKeysOutOfOrder)
 	int                    index[2];
 	EXPECT_THROW(matchSortedKeys(previous, unordered, 2, index), std::logic_error);
 	EXPECT_THROW(matchSortedKeys(previous, repeated, 2, index), std::logic_error);
+}
+
+/// value(j) of a list, as Ig2_RdemBlock_RdemBlock_RdemGeom computes a dropped sample's energy from its index.
+auto at(const std::vector<double>& v)
+{
+	return [&v](size_t j) { return v.at(j); };
+}
+
+TEST(SortedKeys, SumOfDroppedAddsTheValuesOfTheKeysNotKept)
+{
+	// previous {1, 3, 5, 8} with values 1, 10, 100, 1000; current keeps 3 and 8 and adds 4 and 9: dropped 1 and 5.
+	const std::vector<int>    previous { 1, 3, 5, 8 };
+	const std::vector<double> value { 1, 10, 100, 1000 };
+	const int                 current[] = { 3, 4, 8, 9 };
+	EXPECT_EQ(sumOfDropped(previous, current, 4, at(value)), 101.0);
+	EXPECT_EQ(sumOfDropped(previous, current, 0, at(value)), 1111.0); // nothing kept: all of it
+	const std::vector<int>    none;
+	const std::vector<double> noValue;
+	EXPECT_EQ(sumOfDropped(none, current, 4, at(noValue)), 0.0);
+	const int same[] = { 1, 3, 5, 8 };
+	EXPECT_EQ(sumOfDropped(previous, same, 4, at(value)), 0.0);
+	std::vector<size_t> asked; // value is asked for the dropped indices only
+	sumOfDropped(previous, current, 4, [&](size_t j) {
+		asked.push_back(j);
+		return 0.0;
+	});
+	EXPECT_EQ(asked, (std::vector<size_t> { 0, 2 }));
+}
+
+TEST(SortedKeys, SumOfDroppedMatchesABruteForceSearch)
+{
+	std::mt19937 rng(7);
+	for (int trial = 0; trial < 200; ++trial) {
+		std::vector<int> previous, current;
+		for (int key = 0; key < 60; ++key) {
+			if (rng() % 3 == 0) previous.push_back(key);
+			if (rng() % 3 == 0) current.push_back(key);
+		}
+		std::vector<double> value;
+		for (size_t j = 0; j < previous.size(); ++j)
+			value.push_back(double(rng() % 1000));
+		double expected = 0;
+		for (size_t j = 0; j < previous.size(); ++j)
+			if (std::find(current.begin(), current.end(), previous[j]) == current.end()) expected += value[j];
+		ASSERT_EQ(sumOfDropped(previous, current.data(), current.size(), at(value)), expected) << "trial " << trial;
+	}
+}
+
+TEST(SortedKeys, SumOfDroppedRefusesKeysOutOfOrder)
+{
+	const std::vector<int>    previous { 1, 2 }, unordered { 2, 1 };
+	const std::vector<double> value { 1, 2 };
+	const int                 current[] = { 2, 1 };
+	EXPECT_THROW(sumOfDropped(unordered, current, 0, at(value)), std::logic_error);
+	EXPECT_THROW(sumOfDropped(previous, current, 2, at(value)), std::logic_error);
 }

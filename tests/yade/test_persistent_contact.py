@@ -246,6 +246,45 @@ class PersistentContact(unittest.TestCase):
 			self.assertEqual(len(I.geom.sampleKey) > 0, not persistent)
 			self.assertAlmostEqual(O.energy['rdemElastic'] / E1, 1, delta=1e-9, msg='persistent %s' % persistent)
 
+	def testDroppedSpringsBookTheirEnergy(self):
+		# A contact spring that the geometry drops while it is compressed takes its elastic energy out of rdemElastic; that
+		# energy is booked as rdemContactRelease, so that rdemElastic + rdemContactRelease is what the springs held. Cube B
+		# stands on cube A with the same footprint, sunk uniformly by delta (E1 = k_n w_n A (delta - eps)^2 / 2), then is
+		# slid along x; both blocks are held and moved by hand, so that no dashpot or friction works. (1) Sampled at the
+		# vertices (persistentContacts off): four samples of A's top face and four of B's bottom face, A/8 each; slid by
+		# 2 um, A's vertices at x = -h and B's at x = h + s leave the other face while compressed and their springs go with
+		# half of E1 (the model's sampling: the other four keep theirs); the CS08 wall drops 13.6 J so in its run (11.5 J
+		# between 0.42 % and 0.45 % drift), 2 % of the work done on it, which was missing from its balance. (2) A patch (persistentContacts on) slid by h:
+		# derived again on half the area, its history handed over (handOver) needs the compression times sqrt(2), more
+		# than the depth, so the new springs store (delta / (delta - eps))^2 E1 / 2 and the rest is released. Tolerance
+		# 1e-9: round-off of depths of 1e-6 m from coordinates of 1e-2 m (1e-12 relative), as testHandOverMakesNoEnergy.
+		h, delta = 0.01, 1e-6
+		for persistent, slide, kept in ((False, 2e-6, 0.5), (True, h, 0.5 * (delta / (delta - self.EPS))**2)):
+			harness.freshScene()
+			mat = O.materials.append(RdemMat(young=YOUNG, poisson=0.2, density=2300, frictionAngle=0.5))
+			O.engines = rdem.engines(segmentsPerEdge=2, formulation=None, recontact=True, dt=1e-7)
+			rdem.geomFunctor().persistentContacts = persistent
+			O.trackEnergy = True
+			a = O.bodies.append(rdem.block((0, 0, 0), (h, h, h), mat, fixed=True))
+			x0 = Vector3(0, 0, 2 * h)
+			b = O.bodies.append(rdem.block(tuple(x0 - Vector3(0, 0, self.EPS)), (h, h, h), mat, fixed=True))
+			O.step()
+			O.bodies[b].state.pos = x0 - Vector3(0, 0, delta)
+			O.step()
+			I = O.interactions[a, b]
+			self.assertEqual(len(I.geom.sampleKey), 0 if persistent else 8)
+			E1 = O.energy['rdemElastic']
+			self.assertAlmostEqual(E1 / (I.phys.kn * I.phys.weightNormal * 4 * h * h * (delta - self.EPS)**2 / 2), 1, delta=1e-9)
+			O.bodies[b].state.pos = x0 + Vector3(slide, 0, -delta)
+			O.step()
+			I = O.interactions[a, b]
+			self.assertEqual(len(I.geom.patchAreas), 4 if persistent else 0)
+			self.assertEqual(len(I.geom.sampleKey), 0 if persistent else 4)
+			energy = dict(O.energy.items())
+			msg = 'persistent %s: %s' % (persistent, energy)
+			self.assertAlmostEqual(energy['rdemElastic'] / E1, kept, delta=1e-9, msg=msg)
+			self.assertAlmostEqual((energy['rdemElastic'] + energy.get('rdemContactRelease', 0.0)) / E1, 1, delta=1e-9, msg=msg)
+
 	def testEdgeNeighboursStaySampled(self):
 		# Two cubes of a grid that share an edge, strained into each other by e: the faces that meet overlap on a sliver
 		# e wide (1e-4 of a face at e = 1e-6 m, below the 1 % from which a patch is made), so the contact is sampled, and

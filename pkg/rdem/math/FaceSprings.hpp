@@ -24,7 +24,7 @@ namespace rdem {
 	/// Energies of one interaction in one step [J]: elastic (current value), the others dissipated in this step; the
 	/// softening springs' (rdem::softeningStep) only where softening is true.
 	template <class S> struct SpringEnergies {
-		S    elastic = 0, dashpot = 0, friction = 0, bondBreak = 0;
+		S    elastic = 0, dashpot = 0, friction = 0, bondBreak = 0, contactRelease = 0;
 		S    fractureTension = 0, fractureShear = 0, crushing = 0;
 		bool softening = false;
 		/// Adds another interaction's energies, each to each.
@@ -34,6 +34,7 @@ namespace rdem {
 			dashpot += o.dashpot;
 			friction += o.friction;
 			bondBreak += o.bondBreak;
+			contactRelease += o.contactRelease;
 			fractureTension += o.fractureTension;
 			fractureShear += o.fractureShear;
 			crushing += o.crushing;
@@ -82,6 +83,10 @@ namespace rdem {
 	{
 		return area * (wn * r.sigma * r.sigma / k.kn + ws * r.tau.squaredNorm() / k.ks) / 2;
 	}
+
+	/// Elastic energy of a contact spring of stiffnesses k_n, k_s [N/m] compressed by c >= 0 [m] with the elastic shear
+	/// elongation u_s [m] (eqs. 13, 17): k_n c²/2 + k_s |u_s|²/2 [J].
+	template <class S> S contactSpringEnergy(S kn, S ks, S c, const Eigen::Matrix<S, 3, 1>& us) { return kn * c * c / 2 + ks * us.squaredNorm() / 2; }
 
 	/// Constants of the contact spring of one point (eqs. 13, 17): springs k_n, k_s [N/m], dashpots c_n, c_s [N·s/m]
 	/// (each already capped for stability), tan φ of its friction.
@@ -135,7 +140,7 @@ namespace rdem {
 		const V fDs = slip ? V(V::Zero()) : V(-k.cs * vt); // shear dashpot, while sticking
 		const V fD  = (fN - fElast) * n + fDs;             // dashpot part of the force
 		if (track) {
-			e.elastic += fElast * delta / 2 + k.ks * shear.squaredNorm() / 2;
+			e.elastic += contactSpringEnergy(k.kn, k.ks, delta, shear);
 			e.dashpot -= (fD + dashpot).dot(v) * dt / 2;
 		}
 		dashpot = fD;

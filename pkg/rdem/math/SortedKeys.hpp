@@ -30,5 +30,26 @@ namespace rdem {
 		}
 	}
 
+	/// The sum of value(j) over the indices j of the keys previous[j] (strictly ascending) that are not among the `n` keys
+	/// of `current` (strictly ascending): what the history of the last step held for the keys this step dropped (the
+	/// elastic energy of the contact springs of samples that left the sampled set, Ig2_RdemBlock_RdemBlock_RdemGeom);
+	/// value is called for those indices only. O(previous + current); throws std::logic_error as matchSortedKeys if a
+	/// list is not strictly ascending.
+	template <class Key, class Value>
+	auto sumOfDropped(const std::vector<Key>& previous, const Key* current, size_t n, Value value) -> decltype(value(size_t(0)))
+	{
+		for (size_t k = 1; k < n; ++k)
+			if (!(current[k - 1] < current[k])) throw std::logic_error("rdem::sumOfDropped: current keys are not strictly ascending");
+		decltype(value(size_t(0))) sum = 0;
+		size_t                     k   = 0;
+		for (size_t j = 0; j < previous.size(); ++j) {
+			if (j > 0 && !(previous[j - 1] < previous[j])) throw std::logic_error("rdem::sumOfDropped: previous keys are not strictly ascending");
+			while (k < n && current[k] < previous[j])
+				++k;
+			if (!(k < n && current[k] == previous[j])) sum += value(j);
+		}
+		return sum;
+	}
+
 } // namespace rdem
 } // namespace yade
