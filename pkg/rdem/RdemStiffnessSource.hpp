@@ -28,12 +28,8 @@ public:
 	addStiffness(Scene* scene, const vector<const Interaction*>& inIdOrder, rdem::BlockStiffness<Real>& K, rdem::BlockStiffness<Real>& C, Real capDt)
 	        = 0;
 	/// Adds to C this source's dashpots alone, the same terms in the same order as addStiffness adds to C [N·s/m]
-	/// (RdemTimeStepper's update after a break, which keeps K). By default addStiffness with K thrown away.
-	virtual void addDashpots(Scene* scene, const vector<const Interaction*>& inIdOrder, rdem::BlockStiffness<Real>& C, Real capDt)
-	{
-		rdem::BlockStiffness<Real> K(C.nBodies());
-		addStiffness(scene, inIdOrder, K, C, capDt);
-	}
+	/// (RdemTimeStepper's update after a break, which keeps K).
+	virtual void addDashpots(Scene* scene, const vector<const Interaction*>& inIdOrder, rdem::BlockStiffness<Real>& C, Real capDt) = 0;
 	/// Adds to omega2[id], for every body that is not fixed, a Gershgorin bound of the squared eigenfrequency this
 	/// source's terms give it [1/s²].
 	virtual void addOmega2Bound(Scene* scene, vector<Real>& omega2) = 0;
