@@ -234,7 +234,7 @@ history = plot.data
 def record():
 	e = dict(O.energy.items())
 	data = dict(t=O.time - t0, groundX=shaker.accelerationAt(O.time)[0], breaks=sum(rdem.breakCounts()), input=-e.get('groundWork', 0.0) - e.get('gravWork', 0.0),
-	            dissipated=e.get('rdemDashpot', 0) + e.get('rdemFriction', 0) + e.get('rdemBondBreak', 0) + e.get('rdemContactRelease', 0) + e.get('rdemPoissonRelease', 0),
+	            dissipated=rdem.dissipatedEnergy(e),
 	            kinetic=e.get('kinetic', 0.0), total=O.energy.total())
 	for w in lay.walls:
 		for s in lay.storeys:

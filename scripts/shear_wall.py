@@ -417,7 +417,7 @@ ax.set_title('%s%s: sigma0 = %.2f MPa, H0/H = %g, %s' % (cli.wall, '' if validat
 ax.legend(fontsize=7)
 ax = axes[1]
 dissipated = [
-        sum(h[e][k] for e in ('rdemBondBreak', 'rdemContactRelease', 'rdemDashpot', 'rdemFriction', 'rdemPoissonRelease', 'rdemFractureTension', 'rdemFractureShear', 'rdemCrushing', 'nonviscDamp'))
+        sum(h[e][k] for e in rdem.measure.DISSIPATED + ('nonviscDamp',))
         for k in range(len(drift))
 ]
 ax.plot(drift, [a + b + c for a, b, c in zip(h['workH'], h['workV'], h['workM'])], 'k-', label='work of the actuator, the vertical load and the couple')

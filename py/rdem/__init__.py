@@ -34,10 +34,10 @@ except ModuleNotFoundError as e:  # plain Python: only the YADE-free modules (rd
 if _yade is not None:
 	from .build import block, blockGrid, bond, bondPairs, engines, run, poissonEngine, newtonIntegrator, timeStepper, law, geomFunctor, contactGate, collider
 	from . import masonry, earthquake
-	from .measure import segmentTable, bondSnapshot, brokenSegments, breakCounts, apparentPoisson
+	from .measure import segmentTable, bondSnapshot, brokenSegments, breakCounts, apparentPoisson, dissipatedEnergy
 	from .export import CrackExport
 
 __all__ = ['wallLayout', 'WallLayout', 'buildingLayout', 'BuildingLayout', 'ground_motion'] + ([
         'block', 'blockGrid', 'bond', 'bondPairs', 'masonry', 'earthquake', 'engines', 'run', 'poissonEngine', 'newtonIntegrator', 'timeStepper', 'law', 'geomFunctor', 'contactGate', 'collider', 'segmentTable', 'bondSnapshot', 'brokenSegments', 'breakCounts',
-        'apparentPoisson', 'CrackExport'
+        'apparentPoisson', 'dissipatedEnergy', 'CrackExport'
 ] if _yade is not None else [])

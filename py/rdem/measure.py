@@ -58,6 +58,18 @@ def brokenSegments(snapshot):
 	return out
 
 
+#: The plugin's cumulated dissipated energies in O.energy [J]: the springs' (Law2_RdemGeom_RdemPhys_FaceSprings: dashpots,
+#: friction, broken springs, contact springs dropped while loaded, and with softening bonds fracture and crushing) and the
+#: Poisson cells' released by cracks (RdemPoissonEngine); not YADE's own (``nonviscDamp``, Cundall's damping).
+DISSIPATED = ('rdemBondBreak', 'rdemContactRelease', 'rdemDashpot', 'rdemFriction', 'rdemPoissonRelease', 'rdemFractureTension', 'rdemFractureShear', 'rdemCrushing')
+
+
+def dissipatedEnergy(energies=None):
+	"""The sum of :data:`DISSIPATED` in ``energies`` (a dict of O.energy's items; default: O.energy now), each absent one 0 [J]."""
+	e = dict(O.energy.items()) if energies is None else energies
+	return sum(e.get(name, 0.0) for name in DISSIPATED)
+
+
 def breakCounts():
 	"""(tension, shear): restoring springs broken so far (eqs. 15, 16)."""
 	law = build.law()

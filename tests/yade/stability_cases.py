@@ -27,9 +27,8 @@ def elasticEnergy():
 
 
 def dissipatedEnergy():
-	"""Cumulated dashpot, friction, bond-break, contact-release and Poisson-release energies [J]."""
-	d = dict(O.energy.items())
-	return d.get('rdemDashpot', 0) + d.get('rdemFriction', 0) + d.get('rdemBondBreak', 0) + d.get('rdemContactRelease', 0) + d.get('rdemPoissonRelease', 0)
+	"""The plugin's cumulated dissipated energies (rdem.dissipatedEnergy) [J]."""
+	return rdem.dissipatedEnergy()
 
 
 def _velocities():
