@@ -52,11 +52,15 @@ void RdemInteractionLoop::prepareSleepers(const rdem::BodyTravel& travel)
 	keep.resize(n);
 }
 
-void RdemInteractionLoop::sleepIfCertified(long k, const shared_ptr<Interaction>& I)
+const RdemGap* RdemInteractionLoop::certifiedGap(const Interaction& I) const
 {
-	if (!I->geom || I->geom->getClassIndex() != RdemGap::getClassIndexStatic()) return;
-	const auto& gap = static_cast<const RdemGap&>(*I->geom);
-	if (gap.epoch != sleepEpoch) return; // no certificate, or one of another record: tested again next step
+	if (!I.geom || I.geom->getClassIndex() != RdemGap::getClassIndexStatic()) return nullptr;
+	const auto& gap = static_cast<const RdemGap&>(*I.geom);
+	return gap.epoch == sleepEpoch ? &gap : nullptr; // else no certificate, or one of another record
+}
+
+void RdemInteractionLoop::fallAsleep(long k, const shared_ptr<Interaction>& I, const RdemGap& gap)
+{
 	sleepers[size_t(k)] = Sleeper { I.get(), I->getId1(), I->getId2(), gap.reach };
 	keep[size_t(k)]     = I;
 }
@@ -165,26 +169,30 @@ void RdemInteractionLoop::action()
 	}
 	prepareSleepers(sh.travel);
 	const vector<IntrCallback::FuncPtr> callbackPtrs = prepareStep();
-	const InteractionContainer&         linIntrs     = *scene->interactions; // linIntrs, by position
 	const long                          size         = long(scene->interactions->size());
-	long                                slept        = 0;
+	// linIntrs and the sleepers by position, read through pointers the calls in the loop cannot change
+	const shared_ptr<Interaction>* const linIntrs = size > 0 ? &(*scene->interactions)[0] : nullptr;
+	Sleeper* const                       sleeping = sleepers.data();
+	const rdem::BodyTravel&              travel   = sh.travel;
+	long                                 slept    = 0;
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(guided) reduction(+ : slept) \
         num_threads(ompThreads > 0 ? math::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
 #endif
 	for (long k = 0; k < size; k++) {
-		const shared_ptr<Interaction>& I = linIntrs[size_t(k)];
-		Sleeper&                       s = sleepers[size_t(k)];
+		const shared_ptr<Interaction>& I = linIntrs[k];
+		Sleeper&                       s = sleeping[k];
 		if (s.I) {
 			// the certificate's test (rdem::BodyTravel::certifies: its epoch and record checked for the step above)
-			if (s.I == I.get() && sh.travel.withinReach(s.reach, s.id1, s.id2)) {
+			if (s.I == I.get() && travel.withinReach(s.reach, s.id1, s.id2)) {
 				slept++;
 				continue;
 			}
 			s.I = nullptr; // woken: another interaction at k, or the blocks may have moved enough to touch
 			keep[size_t(k)].reset();
 		}
-		if (visit(I, callbackPtrs)) sleepIfCertified(k, I);
+		if (!visit(I, callbackPtrs)) continue;
+		if (const RdemGap* gap = certifiedGap(*I)) fallAsleep(k, I, *gap);
 	}
 	sleptPairs += slept;
 	ig2->skippedTests += Real(slept); // tested by their certificate, as the functor would have

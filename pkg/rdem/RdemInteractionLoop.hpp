@@ -12,6 +12,7 @@
 namespace yade {
 
 class Ig2_RdemBlock_RdemBlock_RdemGeom;
+class RdemGap;
 
 /// YADE's InteractionLoop that does not visit the pairs of blocks certified apart (RdemGap) while their certificate holds.
 class RdemInteractionLoop : public InteractionLoop {
@@ -20,7 +21,7 @@ public:
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(RdemInteractionLoop,InteractionLoop,R"""(:yref:`InteractionLoop` of a refined-DEM scene (``rdem.engines()`` makes it): the same dispatchers, functors, callbacks and special constructor, and the same work for every interaction it visits, but it does not visit the pairs of blocks that :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom` certified apart while their certificate holds.
 
-After the first crack the collider's pairs are mostly grid neighbours whose bounding boxes overlap but which are apart by a strain-sized gap (107 730 of 126 232 interactions in the collapse of 10⁴ blocks): the geometry functor finds each of them apart in a few loads (:yref:`RdemGap`: the pair stays apart while the summed travel of its blocks $T_1+T_2$ stays below the certificate's reach $R$, the travel recorded by :yref:`RdemContactGate` in :yref:`RdemSharedState`), but YADE's loop reaches it through the interaction, both bodies, their shapes and states and the dispatch first. This loop keeps, by position in the interaction container, a flat array of the pairs whose geometry functor returned false with a certificate of the current travel record (*sleepers*: the interaction's address, both ids, $R$), and in the next steps skips a sleeper without touching its interaction while it is still the interaction at that position and $T_1+T_2<R$: exactly when the functor's certificate test (``rdem::BodyTravel::certifies``) would find it apart, so the run is the same to the last bit (tests/yade/test_interaction_loop.py). The pairs skipped are counted in the functor's :yref:`skippedTests<Ig2_RdemBlock_RdemBlock_RdemGeom.skippedTests>`, as if it had tested them, and in :yref:`sleptPairs<RdemInteractionLoop.sleptPairs>`.
+After the first crack many of the collider's pairs are grid neighbours whose bounding boxes overlap but which are apart by a strain-sized gap (6628 of the 12 650 interactions of the heavily cracked cube of doc/performance.md, 17 372 of 126 232 in the collapse of 10⁴ blocks after 3000 steps; pairs that only touch have no certificate and are visited): the geometry functor finds each of them apart in a few loads (:yref:`RdemGap`: the pair stays apart while the summed travel of its blocks $T_1+T_2$ stays below the certificate's reach $R$, the travel recorded by :yref:`RdemContactGate` in :yref:`RdemSharedState`), but YADE's loop reaches it through the interaction, both bodies, their shapes and states and the dispatch first. This loop keeps, by position in the interaction container, a flat array of the pairs whose geometry functor returned false with a certificate of the current travel record (*sleepers*: the interaction's address, both ids, $R$), and in the next steps skips a sleeper without touching its interaction while it is still the interaction at that position and $T_1+T_2<R$: exactly when the functor's certificate test (``rdem::BodyTravel::certifies``) would find it apart, so the run is the same to the last bit (tests/yade/test_interaction_loop.py). The pairs skipped are counted in the functor's :yref:`skippedTests<Ig2_RdemBlock_RdemBlock_RdemGeom.skippedTests>`, as if it had tested them, and in :yref:`sleptPairs<RdemInteractionLoop.sleptPairs>`.
 
 The sleepers are forgotten, and the loop is YADE's own for the step, whenever they cannot be trusted or the certificates do not apply: the travel record is not of this step or has restarted (a body erased, added or replaced), the number of bodies changed, a collider asks the loop to remove the pairs it did not see (``InteractionContainer::iterColliderLastRun``), the cell is periodic, ``loopOnSortedInteractions`` is set, the geometry functor does not share this loop's :yref:`RdemSharedState`, or YADE is built with MPI (a body's subdomain can change without the travel record seeing it). A sleeper whose position now holds another interaction (the container moves its last interaction into the place of an erased one) is visited. A sleeping pair reset in place (``InteractionContainer::requestErase``, which ``O.interactions.erase`` calls) is tested again only when its certificate runs out, where YADE's loop tests it at once: its certificate proves the blocks apart, so the results are the same, but the certificates made afterwards, and so ``skippedTests``, can differ.)""",
 		((bool,sleepApart,true,,"Skip the pairs certified apart without visiting them (above); False: YADE's :yref:`InteractionLoop` at every step, the reference the tests compare against. The same results either way."))
@@ -52,9 +53,10 @@ private:
 	void wakeAll();
 	/// Makes the sleepers' arrays as long as the interaction container, forgetting them if they cannot be trusted.
 	void prepareSleepers(const rdem::BodyTravel& travel);
-	/// Records the interaction at position k, that the geometry functor just found apart, as a sleeper if its RdemGap
-	/// holds a certificate of the current travel record.
-	void sleepIfCertified(long k, const shared_ptr<Interaction>& I);
+	/// I's RdemGap if it holds a certificate of the current travel record (sleepEpoch), else nullptr.
+	const RdemGap* certifiedGap(const Interaction& I) const;
+	/// Records I, at position k and found apart with the certificate gap, as a sleeper.
+	void fallAsleep(long k, const shared_ptr<Interaction>& I, const RdemGap& gap);
 	/* One interaction, as YADE's InteractionLoop::action treats it in a scene that is not periodic; returns whether the
 	   geometry functor found a pair that was not real apart. */
 	bool visit(const shared_ptr<Interaction>& I, const vector<IntrCallback::FuncPtr>& callbackPtrs);
