@@ -31,6 +31,14 @@ Ig2_RdemBlock_RdemBlock_RdemGeom* RdemInteractionLoop::sleepFunctor(const RdemSh
 #endif
 }
 
+bool RdemInteractionLoop::worthSleeping(const Ig2_RdemBlock_RdemBlock_RdemGeom& ig2)
+{
+	const Real skipped = ig2.skippedTests.get();
+	const bool worth   = certificatesSeen || skipped != skippedSeen;
+	skippedSeen        = skipped;
+	return worth;
+}
+
 void RdemInteractionLoop::wakeAll()
 {
 	sleepers.clear();
@@ -162,8 +170,9 @@ void RdemInteractionLoop::action()
 {
 	RdemSharedState&                  sh  = RdemSharedState::of(scene, shared); // checks the engines when they changed
 	Ig2_RdemBlock_RdemBlock_RdemGeom* ig2 = sleepFunctor(sh);
-	if (!ig2) {
+	if (!ig2 || !worthSleeping(*ig2)) {
 		wakeAll();
+		certificatesSeen = false;
 		InteractionLoop::action();
 		return;
 	}
@@ -174,9 +183,9 @@ void RdemInteractionLoop::action()
 	const shared_ptr<Interaction>* const linIntrs = size > 0 ? &(*scene->interactions)[0] : nullptr;
 	Sleeper* const                       sleeping = sleepers.data();
 	const rdem::BodyTravel&              travel   = sh.travel;
-	long                                 slept    = 0;
+	long                                 slept = 0, fellAsleep = 0;
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(guided) reduction(+ : slept) \
+#pragma omp parallel for schedule(guided) reduction(+ : slept, fellAsleep) \
         num_threads(ompThreads > 0 ? math::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
 #endif
 	for (long k = 0; k < size; k++) {
@@ -192,8 +201,12 @@ void RdemInteractionLoop::action()
 			keep[size_t(k)].reset();
 		}
 		if (!visit(I, callbackPtrs)) continue;
-		if (const RdemGap* gap = certifiedGap(*I)) fallAsleep(k, I, *gap);
+		if (const RdemGap* gap = certifiedGap(*I)) {
+			fallAsleep(k, I, *gap);
+			fellAsleep++;
+		}
 	}
+	certificatesSeen = fellAsleep > 0;
 	sleptPairs += slept;
 	ig2->skippedTests += Real(slept); // tested by their certificate, as the functor would have
 }
