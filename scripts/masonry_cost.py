@@ -100,7 +100,7 @@ def timing(w):
 	O.timingEnabled = False
 	byName = {type(e).__name__: e.execTime * 1e-9 for e in O.engines}  # execTime in ns
 	per = 1e6 / (cli.steps * len(w.ids))
-	return dict(poisson=(byName.get('RdemCellStrainUpdater', 0) + byName['RdemPoissonEngine']) * per, loop=byName['InteractionLoop'] * per, step=total * per)
+	return dict(poisson=(byName.get('RdemCellStrainUpdater', 0) + byName['RdemPoissonEngine']) * per, loop=byName.get('RdemInteractionLoop', byName.get('InteractionLoop', 0)) * per, step=total * per)
 
 
 results = dict(input=vars(cli), rounds=[])

@@ -15,6 +15,7 @@
 #include <pkg/rdem/RdemCellStrainUpdater.hpp>
 #include <pkg/rdem/RdemContactGate.hpp>
 #include <pkg/rdem/RdemForceAssembler.hpp>
+#include <pkg/rdem/RdemInteractionLoop.hpp>
 #include <pkg/rdem/RdemPoissonEngine.hpp>
 #include <pkg/rdem/RdemSharedState.hpp>
 #include <pkg/rdem/RdemTimeStepper.hpp>
@@ -119,6 +120,7 @@ void RdemSharedState::checkEngines(Scene* scene, const shared_ptr<RdemSharedStat
 	for (size_t i = 0; i < scene->engines.size(); ++i) {
 		Engine* e = scene->engines[i].get();
 		if (auto* il = dynamic_cast<InteractionLoop*>(e)) {
+			if (auto* rl = dynamic_cast<RdemInteractionLoop*>(il)) hand(rl->shared, "RdemInteractionLoop", i);
 			bool ours = false;
 			for (const auto& f : il->lawDispatcher->functors)
 				if (auto* law = dynamic_cast<Law2_RdemGeom_RdemPhys_FaceSprings*>(f.get())) {

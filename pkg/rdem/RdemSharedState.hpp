@@ -39,6 +39,20 @@ namespace rdem {
 		vector<Real>         radius; ///< circumradius of the block about its centroid, 0 for other shapes [m]
 		/// Whether the record holds the configurations of step iter of a scene that is not periodic.
 		bool currentFor(const Scene& scene) const;
+		/// Whether the summed travel of bodies id1 and id2 is still below reach [m] (of the record as it is: see certifies).
+		bool withinReach(Real reach, Body::id_t id1, Body::id_t id2) const
+		{
+			const Real t = travel[size_t(id1)] + travel[size_t(id2)];
+			return t >= 0 && t < reach;
+		}
+		/* Whether a certificate that the pair id1, id2 stays apart up to a summed travel of reach [m], made against the
+		   record of epoch certEpoch (RdemGap), holds in this step of scene: the one test of a certificate, made by
+		   Ig2_RdemBlock_RdemBlock_RdemGeom, and by RdemInteractionLoop for the pairs it does not visit (it checks the epoch
+		   and currentFor once per step, then withinReach by pair). */
+		bool certifies(const Scene& scene, long certEpoch, Real reach, Body::id_t id1, Body::id_t id2) const
+		{
+			return certEpoch == epoch && currentFor(scene) && withinReach(reach, id1, id2);
+		}
 	};
 
 	/// O.engines as last seen, without owning the engines (an engine that held the list it is in would never be freed).

@@ -7,7 +7,7 @@ spring breaks, no Poisson engine when ``formulation=None``.
 import math
 import os
 from yade import O, utils, Vector3, Quaternion
-from yade.wrapper import (Body, RdemBlock, RdemMat, RdemJoint, ForceResetter, InsertionSortCollider, Bo1_Box_Aabb, InteractionLoop, Ig2_RdemBlock_RdemBlock_RdemGeom,
+from yade.wrapper import (Body, RdemBlock, RdemMat, RdemJoint, ForceResetter, InsertionSortCollider, Bo1_Box_Aabb, RdemInteractionLoop, Ig2_RdemBlock_RdemBlock_RdemGeom,
                           Ip2_RdemMat_RdemMat_RdemPhys, Law2_RdemGeom_RdemPhys_FaceSprings, RdemPoissonEngine, RdemCellStrainUpdater, RdemTimeStepper,
                           NewtonIntegrator, RdemContactGate, RdemFiniteGuard, RdemForceAssembler, RdemLeapfrogEnergy, RdemSharedState)
 
@@ -359,8 +359,8 @@ def engines(segmentsPerEdge=2,
 	L = LABELS
 	# one RdemSharedState for every engine and functor of the plugin: the crack state, the deferred forces' record, the travel
 	shared = RdemSharedState()
-	loop = InteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0, shared=shared, label=L['geom'])], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), crackBand=bool(crackBand), strengthCoV=strengthCoV, strengthPerSegment=bool(strengthPerSegment), stiffnessCoV=stiffnessCoV, seed=int(seed), label=L['phys'])],
-	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True, totalStress=failureStress == 'total', shared=shared, label=L['law'])], label=L['loop'])
+	loop = RdemInteractionLoop([Ig2_RdemBlock_RdemBlock_RdemGeom(segmentsPerEdge=segmentsPerEdge, contactSamplesPerEdge=contactSamples or 0, shared=shared, label=L['geom'])], [Ip2_RdemMat_RdemMat_RdemPhys(formulation=formulation, softening=bool(softening), crackBand=bool(crackBand), strengthCoV=strengthCoV, strengthPerSegment=bool(strengthPerSegment), stiffnessCoV=stiffnessCoV, seed=int(seed), label=L['phys'])],
+	                       [Law2_RdemGeom_RdemPhys_FaceSprings(deferForces=True, totalStress=failureStress == 'total', shared=shared, label=L['law'])], shared=shared, label=L['loop'])
 	eng = [ForceResetter()]
 	if recontact not in (True, False, 'always'):
 		raise ValueError("recontact = %r: must be True, False or 'always'" % (recontact, ))

@@ -1,0 +1,214 @@
+/*************************************************************************
+*  Copyright (C) 2026 yade-rdem authors                                  *
+*                                                                        *
+*  This program is free software; it is licensed under the terms of the  *
+*  GNU General Public License v2 or later. See file LICENSE for details. *
+*************************************************************************/
+#include <core/Scene.hpp>
+#include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
+#include <pkg/rdem/RdemInteractionLoop.hpp>
+
+namespace yade {
+
+YADE_PLUGIN((RdemInteractionLoop));
+CREATE_LOGGER(RdemInteractionLoop);
+
+Ig2_RdemBlock_RdemBlock_RdemGeom* RdemInteractionLoop::sleepFunctor(const RdemSharedState& sh) const
+{
+#ifdef YADE_MPI
+	/* YADE's loop erases the pairs of two bodies of other subdomains; a body's subdomain can change in place (mpy's
+	   migration) without the travel record restarting, so a sleeper could be such a pair: not proven equal, not used. */
+	(void)sh;
+	return nullptr;
+#else
+	// currentFor: the record of this step (RdemContactGate ran before this loop) of a scene that is not periodic.
+	if (!sleepApart || loopOnSortedInteractions || !sh.travel.currentFor(*scene)) return nullptr;
+	// A collider that leaves the removal of the pairs it did not see to this loop needs every pair visited.
+	if (scene->interactions->iterColliderLastRun >= 0 && scene->interactions->iterColliderLastRun == scene->iter) return nullptr;
+	for (const auto& f : geomDispatcher->functors)
+		if (auto* ig2 = dynamic_cast<Ig2_RdemBlock_RdemBlock_RdemGeom*>(f.get())) return ig2->shared.get() == &sh ? ig2 : nullptr;
+	return nullptr;
+#endif
+}
+
+bool RdemInteractionLoop::worthSleeping(const Ig2_RdemBlock_RdemBlock_RdemGeom& ig2)
+{
+	const Real skipped = ig2.skippedTests.get();
+	const bool worth   = certificatesSeen || skipped != skippedSeen;
+	skippedSeen        = skipped;
+	return worth;
+}
+
+void RdemInteractionLoop::wakeAll()
+{
+	sleepers.clear();
+	keep.clear();
+	sleepEpoch = -1;
+}
+
+void RdemInteractionLoop::prepareSleepers(const rdem::BodyTravel& travel)
+{
+	const long nBodies = long(scene->bodies->size());
+	if (travel.epoch != sleepEpoch || nBodies != sleepBodies) {
+		wakeAll();
+		sleepEpoch  = travel.epoch;
+		sleepBodies = nBodies;
+	}
+	// Positions beyond the container's end are dropped (and their interactions released); new ones have no sleeper.
+	const size_t n = size_t(scene->interactions->size());
+	sleepers.resize(n);
+	keep.resize(n);
+}
+
+const RdemGap* RdemInteractionLoop::certifiedGap(const Interaction& I) const
+{
+	if (!I.geom || I.geom->getClassIndex() != RdemGap::getClassIndexStatic()) return nullptr;
+	const auto& gap = static_cast<const RdemGap&>(*I.geom);
+	return gap.epoch == sleepEpoch ? &gap : nullptr; // else no certificate, or one of another record
+}
+
+void RdemInteractionLoop::fallAsleep(long k, const shared_ptr<Interaction>& I, const RdemGap& gap)
+{
+	sleepers[size_t(k)] = Sleeper { I.get(), I->getId1(), I->getId2(), gap.reach };
+	keep[size_t(k)]     = I;
+}
+
+vector<IntrCallback::FuncPtr> RdemInteractionLoop::prepareStep()
+{
+	lawDispatcher->scene  = scene;
+	physDispatcher->scene = scene;
+	geomDispatcher->scene = scene;
+	geomDispatcher->updateScenePtr();
+	physDispatcher->updateScenePtr();
+	lawDispatcher->updateScenePtr();
+	// callbacks return the function to call for each interaction of this step, or NULL: not called in this step
+	vector<IntrCallback::FuncPtr> callbackPtrs;
+	for (const auto& cb : callbacks) {
+		cb->scene = scene;
+		callbackPtrs.push_back(cb->stepInit());
+	}
+	return callbackPtrs;
+}
+
+/* As the body of the loop of YADE's InteractionLoop::action (core/InteractionLoop.cpp of YADE 2025.2.0, GPL v2 or later,
+   as this plugin), for the steps this loop makes itself (sleepFunctor): no periodic shift (the cell is not periodic),
+   no removal of the pairs the collider did not see (not asked), no subdomains (not with MPI), linIntrs in its order. */
+bool RdemInteractionLoop::visit(const shared_ptr<Interaction>& I, const vector<IntrCallback::FuncPtr>& callbackPtrs)
+{
+	const shared_ptr<Body>& b1_ = Body::byId(I->getId1(), scene);
+	const shared_ptr<Body>& b2_ = Body::byId(I->getId2(), scene);
+	if (!b1_ || !b2_) { // a body vanished
+		scene->interactions->requestErase(I);
+		return false;
+	}
+	if (b1_->isClump() || b2_->isClump()) return false;
+	// no geometry functor for these shapes (known), or a body without a shape: no interaction possible
+	if (!I->functorCache.geomExists || !b1_->shape || !b2_->shape) {
+		assert(!I->isReal());
+		return false;
+	}
+	bool swap = false;
+	if (!I->functorCache.geom) {
+		I->functorCache.geom = geomDispatcher->getFunctor2D(b1_->shape, b2_->shape, swap);
+		if (!I->functorCache.geom) { // remember that there is none
+			I->functorCache.geomExists = false;
+			return false;
+		}
+	}
+	// the geometry functor takes the bodies in its order: swap them within the interaction (not remembered)
+	if (swap) I->swapOrder();
+	const shared_ptr<Body>& b1      = swap ? b2_ : b1_;
+	const shared_ptr<Body>& b2      = swap ? b1_ : b2_;
+	const bool              wasReal = I->isReal();
+	if (!I->functorCache.geom->go(b1->shape, b2->shape, *b1->state, *b2->state, Vector3r::Zero(), /*force*/ false, I)) {
+		if (wasReal) {
+			LOG_WARN("IGeomFunctor returned false on existing interaction!");
+			scene->interactions->requestErase(I); // reset, perhaps erased in the next step
+		}
+		return !wasReal;
+	}
+	applyPhysicsAndLaw(I, *b1, *b2, wasReal, callbackPtrs);
+	return false;
+}
+
+/* The rest of the body of YADE's loop (core/InteractionLoop.cpp, as visit): the physics, the law and the callbacks of an
+   interaction whose geometry functor returned true. */
+void RdemInteractionLoop::applyPhysicsAndLaw(
+        const shared_ptr<Interaction>& I, Body& b1, Body& b2, bool wasReal, const vector<IntrCallback::FuncPtr>& callbackPtrs)
+{
+	bool swap = false;
+	if (!I->functorCache.phys) {
+		I->functorCache.phys = physDispatcher->getFunctor2D(b1.material, b2.material, swap);
+		assert(!swap); // IPhysFunctors are symmetric
+	}
+	if (!I->functorCache.phys)
+		throw std::runtime_error(
+		        "Undefined or ambiguous IPhys dispatch for types " + b1.material->getClassName() + " and " + b2.material->getClassName() + ".");
+	I->functorCache.phys->go(b1.material, b2.material, I);
+	assert(I->phys);
+	if (!wasReal) I->iterMadeReal = scene->iter; // created right now
+	// the law's functor is cached once the interaction has its geometry and physics
+	if (!I->functorCache.constLaw) {
+		I->functorCache.constLaw = lawDispatcher->getFunctor2D(I->geom, I->phys, swap);
+		if (!I->functorCache.constLaw) {
+			LOG_FATAL(
+			        "None of given Law2 functors can handle interaction #"
+			        << I->getId1() << "+" << I->getId2() << ", types geom:" << I->geom->getClassName() << "=" << I->geom->getClassIndex()
+			        << " and phys:" << I->phys->getClassName() << "=" << I->phys->getClassIndex()
+			        << " (LawDispatcher::getFunctor2D returned empty functor)");
+			exit(1);
+		}
+		assert(!swap); // the arguments are of different types
+	}
+	if (!I->functorCache.constLaw->go(I->geom, I->phys, I.get())) scene->interactions->requestErase(I);
+	if (!I->isReal()) return; // the law may have reset it
+	for (size_t j = 0; j < callbacks.size(); j++)
+		if (callbackPtrs[j] != NULL) (*(callbackPtrs[j]))(callbacks[j].get(), I.get());
+}
+
+void RdemInteractionLoop::action()
+{
+	RdemSharedState&                  sh  = RdemSharedState::of(scene, shared); // checks the engines when they changed
+	Ig2_RdemBlock_RdemBlock_RdemGeom* ig2 = sleepFunctor(sh);
+	if (!ig2 || !worthSleeping(*ig2)) {
+		wakeAll();
+		certificatesSeen = false;
+		InteractionLoop::action();
+		return;
+	}
+	prepareSleepers(sh.travel);
+	const vector<IntrCallback::FuncPtr> callbackPtrs = prepareStep();
+	const long                          size         = long(scene->interactions->size());
+	// linIntrs and the sleepers by position, read through pointers the calls in the loop cannot change
+	const shared_ptr<Interaction>* const linIntrs = size > 0 ? &(*scene->interactions)[0] : nullptr;
+	Sleeper* const                       sleeping = sleepers.data();
+	const rdem::BodyTravel&              travel   = sh.travel;
+	long                                 slept = 0, fellAsleep = 0;
+#ifdef YADE_OPENMP
+#pragma omp parallel for schedule(guided) reduction(+ : slept, fellAsleep) \
+        num_threads(ompThreads > 0 ? math::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
+#endif
+	for (long k = 0; k < size; k++) {
+		const shared_ptr<Interaction>& I = linIntrs[k];
+		Sleeper&                       s = sleeping[k];
+		if (s.I) {
+			// the certificate's test (rdem::BodyTravel::certifies: its epoch and record checked for the step above)
+			if (s.I == I.get() && travel.withinReach(s.reach, s.id1, s.id2)) {
+				slept++;
+				continue;
+			}
+			s.I = nullptr; // woken: another interaction at k, or the blocks may have moved enough to touch
+			keep[size_t(k)].reset();
+		}
+		if (!visit(I, callbackPtrs)) continue;
+		if (const RdemGap* gap = certifiedGap(*I)) {
+			fallAsleep(k, I, *gap);
+			fellAsleep++;
+		}
+	}
+	certificatesSeen = fellAsleep > 0;
+	sleptPairs += slept;
+	ig2->skippedTests += Real(slept); // tested by their certificate, as the functor would have
+}
+
+} // namespace yade
