@@ -297,23 +297,34 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::knownApart(
 		return true;
 	}
 	if (!skipApart || gap.witness < 0) return false;
-	const Vector3r xB  = s2.pos + shift2;
-	const Real     tol = touchTolerance(hA, hB);
-	const Real     o   = rdem::faceAxisOverlap<Real>(s1.pos, s1.ori, hA, xB, s2.ori, hB, gap.witness);
-	const Real     eps = rdem::faceAxisRoundOff<Real>(s1.pos, hA, xB, hB);
-	if (!(o <= tol - eps)) return false; // tested in full (findContact)
+	const WitnessVerdict verdict = witnessVerdict(s1.pos, s1.ori, hA, s2.pos + shift2, s2.ori, hB, gap.witness);
+	if (!verdict.apart) return false; // tested in full (findContact)
 	witnessTests += 1;
-	/* The witness leaves a slack of at least tol - o - eps on its axis: a certificate if that exceeds the margin (its
-	   square roots only where it may: the margin is at least 1e-6 of the largest half-extents). */
-	const Real slack = tol - o - eps;
-	if (slack > Real(1e-6) * (hA.maxCoeff() + hB.maxCoeff()) && slack > rdem::separationMargin<Real>(hA, hB)) {
+	if (certifiableSlack(verdict.slack, hA, hB)) {
 		const Real t = travelled();
 		if (t >= 0) {
-			gap.reach = t + slack - rdem::separationMargin<Real>(hA, hB);
+			gap.reach = t + verdict.slack - rdem::separationMargin<Real>(hA, hB);
 			gap.epoch = travel->epoch;
 		}
 	}
 	return true;
+}
+
+Ig2_RdemBlock_RdemBlock_RdemGeom::WitnessVerdict Ig2_RdemBlock_RdemBlock_RdemGeom::witnessVerdict(
+        const Vector3r& xA, const Quaternionr& qA, const Vector3r& hA, const Vector3r& xB, const Quaternionr& qB, const Vector3r& hB, int axis)
+{
+	const Real tol = touchTolerance(hA, hB);
+	const Real o   = rdem::faceAxisOverlap<Real>(xA, qA, hA, xB, qB, hB, axis);
+	const Real eps = rdem::faceAxisRoundOff<Real>(xA, hA, xB, hB);
+	// the witness leaves a slack of at least tol - o - eps on its axis
+	return { o <= tol - eps, tol - o - eps };
+}
+
+bool Ig2_RdemBlock_RdemBlock_RdemGeom::certifiableSlack(Real slack, const Vector3r& hA, const Vector3r& hB)
+{
+	// a certificate if the slack exceeds the margin (its square roots only where it may: the margin is at least 1e-6 of
+	// the largest half-extents)
+	return slack > Real(1e-6) * (hA.maxCoeff() + hB.maxCoeff()) && slack > rdem::separationMargin<Real>(hA, hB);
 }
 
 bool Ig2_RdemBlock_RdemBlock_RdemGeom::bond(const Block& A, const Block& B, const shared_ptr<Interaction>& I) const

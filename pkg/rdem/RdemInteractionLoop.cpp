@@ -6,6 +6,7 @@
 *************************************************************************/
 #include <core/Scene.hpp>
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
+#include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemInteractionLoop.hpp>
 
 namespace yade {
@@ -33,9 +34,10 @@ Ig2_RdemBlock_RdemBlock_RdemGeom* RdemInteractionLoop::sleepFunctor(const RdemSh
 
 bool RdemInteractionLoop::worthSleeping(const Ig2_RdemBlock_RdemBlock_RdemGeom& ig2)
 {
-	const Real skipped = ig2.skippedTests.get();
-	const bool worth   = certificatesSeen || skipped != skippedSeen;
-	skippedSeen        = skipped;
+	const Real skipped = ig2.skippedTests.get(), witnessed = ig2.witnessTests.get();
+	const bool worth = certificatesSeen || skipped != skippedSeen || witnessed != witnessSeen;
+	skippedSeen      = skipped;
+	witnessSeen      = witnessed;
 	return worth;
 }
 
@@ -60,17 +62,28 @@ void RdemInteractionLoop::prepareSleepers(const rdem::BodyTravel& travel)
 	keep.resize(n);
 }
 
-const RdemGap* RdemInteractionLoop::certifiedGap(const Interaction& I) const
+bool RdemInteractionLoop::fallAsleep(long k, const shared_ptr<Interaction>& I, const Ig2_RdemBlock_RdemBlock_RdemGeom& ig2)
 {
-	if (!I.geom || I.geom->getClassIndex() != RdemGap::getClassIndexStatic()) return nullptr;
-	const auto& gap = static_cast<const RdemGap&>(*I.geom);
-	return gap.epoch == sleepEpoch ? &gap : nullptr; // else no certificate, or one of another record
+	if (!I->geom || I->geom->getClassIndex() != RdemGap::getClassIndexStatic()) return false;
+	const auto& gap = static_cast<const RdemGap&>(*I->geom);
+	Sleeper     s { I.get(), I->getId1(), I->getId2(), gap.reach, -1, Vector3r::Zero(), Vector3r::Zero() };
+	if (gap.epoch != sleepEpoch) { // no certificate, or one of another record: its witness axis, if it has one
+		if (!ig2.skipApart || gap.witness < 0) return false;
+		s.witness = gap.witness;
+		s.hA      = static_cast<const RdemBlock&>(*Body::byId(s.id1, scene)->shape).extents; // the functor's order (visit)
+		s.hB      = static_cast<const RdemBlock&>(*Body::byId(s.id2, scene)->shape).extents;
+	}
+	sleepers[size_t(k)] = s;
+	keep[size_t(k)]     = I;
+	return true;
 }
 
-void RdemInteractionLoop::fallAsleep(long k, const shared_ptr<Interaction>& I, const RdemGap& gap)
+bool RdemInteractionLoop::stillApart(const Sleeper& s, const rdem::BodyTravel& travel)
 {
-	sleepers[size_t(k)] = Sleeper { I.get(), I->getId1(), I->getId2(), gap.reach };
-	keep[size_t(k)]     = I;
+	if (s.witness < 0) return travel.withinReach(s.reach, s.id1, s.id2); // the certificate's test (BodyTravel::certifies)
+	const size_t a = size_t(s.id1), b = size_t(s.id2);
+	const auto   v = Ig2_RdemBlock_RdemBlock_RdemGeom::witnessVerdict(travel.pos[a], travel.ori[a], s.hA, travel.pos[b], travel.ori[b], s.hB, s.witness);
+	return v.apart && !Ig2_RdemBlock_RdemBlock_RdemGeom::certifiableSlack(v.slack, s.hA, s.hB);
 }
 
 vector<IntrCallback::FuncPtr> RdemInteractionLoop::prepareStep()
@@ -183,32 +196,32 @@ void RdemInteractionLoop::action()
 	const shared_ptr<Interaction>* const linIntrs = size > 0 ? &(*scene->interactions)[0] : nullptr;
 	Sleeper* const                       sleeping = sleepers.data();
 	const rdem::BodyTravel&              travel   = sh.travel;
-	long                                 slept = 0, fellAsleep = 0;
+	long                                 slept = 0, witnessed = 0, fellAsleep = 0;
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(guided) reduction(+ : slept, fellAsleep) \
+#pragma omp parallel for schedule(guided) reduction(+ : slept, witnessed, fellAsleep) \
         num_threads(ompThreads > 0 ? math::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
 #endif
 	for (long k = 0; k < size; k++) {
 		const shared_ptr<Interaction>& I = linIntrs[k];
 		Sleeper&                       s = sleeping[k];
 		if (s.I) {
-			// the certificate's test (rdem::BodyTravel::certifies: its epoch and record checked for the step above)
-			if (s.I == I.get() && travel.withinReach(s.reach, s.id1, s.id2)) {
-				slept++;
+			// the functor's test (the epoch and the record of the certificates checked for the step above)
+			if (s.I == I.get() && stillApart(s, travel)) {
+				if (s.witness < 0) slept++;
+				else
+					witnessed++;
 				continue;
 			}
 			s.I = nullptr; // woken: another interaction at k, or the blocks may have moved enough to touch
 			keep[size_t(k)].reset();
 		}
 		if (!visit(I, callbackPtrs)) continue;
-		if (const RdemGap* gap = certifiedGap(*I)) {
-			fallAsleep(k, I, *gap);
-			fellAsleep++;
-		}
+		if (fallAsleep(k, I, *ig2)) fellAsleep++;
 	}
 	certificatesSeen = fellAsleep > 0;
-	sleptPairs += slept;
-	ig2->skippedTests += Real(slept); // tested by their certificate, as the functor would have
+	sleptPairs += slept + witnessed;
+	ig2->skippedTests += Real(slept);     // tested by their certificate, as the functor would have
+	ig2->witnessTests += Real(witnessed); // by their witness axis
 }
 
 } // namespace yade
