@@ -35,7 +35,7 @@ Ig2_RdemBlock_RdemBlock_RdemGeom* RdemInteractionLoop::sleepFunctor(const RdemSh
 bool RdemInteractionLoop::worthSleeping(const Ig2_RdemBlock_RdemBlock_RdemGeom& ig2)
 {
 	const Real skipped = ig2.skippedTests.get(), witnessed = ig2.witnessTests.get();
-	const bool worth = certificatesSeen || skipped != skippedSeen || witnessed != witnessSeen;
+	const bool worth = fellAsleepLastStep || skipped != skippedSeen || witnessed != witnessSeen;
 	skippedSeen      = skipped;
 	witnessSeen      = witnessed;
 	return worth;
@@ -78,9 +78,10 @@ bool RdemInteractionLoop::fallAsleep(long k, const shared_ptr<Interaction>& I, c
 	return true;
 }
 
-bool RdemInteractionLoop::stillApart(const Sleeper& s, const rdem::BodyTravel& travel)
+bool RdemInteractionLoop::stillApart(const Sleeper& s, const rdem::BodyTravel& travel, bool witness)
 {
 	if (s.witness < 0) return travel.withinReach(s.reach, s.id1, s.id2); // the certificate's test (BodyTravel::certifies)
+	if (!witness) return false;                                          // the functor makes no witness test (skipApart off)
 	const size_t a = size_t(s.id1), b = size_t(s.id2);
 	const auto   v = Ig2_RdemBlock_RdemBlock_RdemGeom::witnessVerdict(travel.pos[a], travel.ori[a], s.hA, travel.pos[b], travel.ori[b], s.hB, s.witness);
 	return v.apart && !Ig2_RdemBlock_RdemBlock_RdemGeom::certifiableSlack(v.slack, s.hA, s.hB);
@@ -185,7 +186,7 @@ void RdemInteractionLoop::action()
 	Ig2_RdemBlock_RdemBlock_RdemGeom* ig2 = sleepFunctor(sh);
 	if (!ig2 || !worthSleeping(*ig2)) {
 		wakeAll();
-		certificatesSeen = false;
+		fellAsleepLastStep = false;
 		InteractionLoop::action();
 		return;
 	}
@@ -196,6 +197,7 @@ void RdemInteractionLoop::action()
 	const shared_ptr<Interaction>* const linIntrs = size > 0 ? &(*scene->interactions)[0] : nullptr;
 	Sleeper* const                       sleeping = sleepers.data();
 	const rdem::BodyTravel&              travel   = sh.travel;
+	const bool                           witness  = ig2->skipApart;
 	long                                 slept = 0, witnessed = 0, fellAsleep = 0;
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(guided) reduction(+ : slept, witnessed, fellAsleep) \
@@ -206,7 +208,7 @@ void RdemInteractionLoop::action()
 		Sleeper&                       s = sleeping[k];
 		if (s.I) {
 			// the functor's test (the epoch and the record of the certificates checked for the step above)
-			if (s.I == I.get() && stillApart(s, travel)) {
+			if (s.I == I.get() && stillApart(s, travel, witness)) {
 				if (s.witness < 0) slept++;
 				else
 					witnessed++;
@@ -218,7 +220,7 @@ void RdemInteractionLoop::action()
 		if (!visit(I, callbackPtrs)) continue;
 		if (fallAsleep(k, I, *ig2)) fellAsleep++;
 	}
-	certificatesSeen = fellAsleep > 0;
+	fellAsleepLastStep = fellAsleep > 0;
 	sleptPairs += slept + witnessed;
 	ig2->skippedTests += Real(slept);     // tested by their certificate, as the functor would have
 	ig2->witnessTests += Real(witnessed); // by their witness axis

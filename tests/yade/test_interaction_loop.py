@@ -153,6 +153,21 @@ class SleepingPairs(unittest.TestCase):
 		self.assertSameBits(on, off)
 		self.assertGreater(slept, 0)
 
+	def testSkipApartTurnedOff(self):
+		# Ig2_RdemBlock_RdemBlock_RdemGeom.skipApart turned off while pairs sleep: the functor then makes no witness test
+		# (nor certificates), so the loop wakes its witness sleepers: the same bits and the same counts of pairs found
+		# apart by certificate and by witness as YADE's loop.
+		collapse('skipoff')
+
+		def disturb(k):
+			if k == 20:
+				rdem.build.geomFunctor().skipApart = False
+
+		on, _, _ = self.continued('skipoff', True, 40, disturb)
+		off, _, _ = self.continued('skipoff', False, 40, disturb)
+		self.assertGreater(on['witnessed'], 0)  # witness tests before the switch
+		self.assertSameBits(on, off)
+
 	def testSharedStateChecked(self):
 		# The loop's RdemSharedState must be the geometry functor's (its travel decides the certificates): another one is
 		# refused at the first step, as for the plugin's other engines.
