@@ -626,7 +626,6 @@ void Law2_RdemGeom_RdemPhys_FaceSprings::recordRelease(const Interaction& I, con
 	auto                              record = RdemReleasedBond::of(I.getId1(), I.getId2(), g, p, scene->iter);
 	const std::lock_guard<std::mutex> lock(releasedMutex); // rare: once per bond in a run
 	releasedBonds.push_back(std::move(record));
-	shared->bondChanges += 1; // the Poisson cells drop it (RdemCellNetwork::refresh)
 }
 
 boost::python::list Law2_RdemGeom_RdemPhys_FaceSprings::releasedBondsPy()

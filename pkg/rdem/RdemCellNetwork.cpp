@@ -41,7 +41,7 @@ namespace {
 	}
 }
 
-bool RdemCellNetwork::refresh(Scene* scene, long bondChanges)
+bool RdemCellNetwork::refresh(Scene* scene)
 {
 	// A scene without cells (the paper's hexahedra, or no build) stays without them until the next build: its
 	// interactions, which come and go at nearly every step once contacts form, are then never scanned.
@@ -50,31 +50,56 @@ bool RdemCellNetwork::refresh(Scene* scene, long bondChanges)
 	/* The network holds the real bonds with cell coefficients, which only RdemPoissonEngine.build gives (a bond made
 	   later by utils.createInteraction has none until the next build). It is made again when the bodies change, and,
 	   when the container's size changed (the collider's insertions and erasures of contacts change it at nearly every
-	   step), if a bond was released since (bondChanges: the law's releases) or erased (its interaction is no longer in
-	   the container, bondsInContainer): what a rebuild at every change of the size gave, whose arrays it would make
-	   anew with the same bonds in the same order (the container keeps the order of the interactions it does not
-	   erase, but for the last one, which takes an erased one's place). A released bond stays until then, with intact
-	   fraction 0 (updateIntact). */
-	if (builtGeneration != generation || builtBodies != nB) rebuild(scene, bondChanges);
+	   step), if a bond left the container without being released (O.interactions.erase, the erasure of a body), or once
+	   the bonds the law released are a quarter of the network's. A released bond stays until then with intact fraction 0
+	   (updateIntact), so that it releases the cells of both its blocks (their crack scale drops to 0) in the step after
+	   its release, as a bond whose springs broke one by one does; its terms are zero from then on, and a release costs no
+	   rebuild (a cracking building releases bonds at nearly every step). The container keeps the order of the
+	   interactions it does not erase, but for the last one, which takes an erased one's place. */
+	if (builtGeneration != generation || builtBodies != nB) rebuild(scene);
 	else if (seenInteractions != nI) {
-		if (builtBondChanges != bondChanges || !bondsInContainer(scene)) rebuild(scene, bondChanges);
+		const BondCensus census = bondCensus(scene);
+		if (census.erased || 4 * census.released > bond.size()) rebuild(scene);
 		seenInteractions = nI;
 	}
 	return nCellBlocks > 0;
 }
 
-bool RdemCellNetwork::bondsInContainer(Scene* scene) const
+bool RdemCellNetwork::released(size_t k) const
+{
+	// reset (then maybe a contact) with every spring broken: the law released it; with springs intact, it was erased
+	const Interaction& I    = *intr[k];
+	const bool         gone = !I.isReal() || !static_cast<const RdemGeom*>(I.geom.get())->bonded;
+	return gone && static_cast<const RdemPhys*>(phys[k].get())->nIntact() == 0;
+}
+
+RdemCellNetwork::BondCensus RdemCellNetwork::bondCensus(Scene* scene) const
 {
 	// InteractionContainer::erase moves the last interaction into the erased one's place and leaves the erased one's linIx
 	auto&      c = *scene->interactions;
 	const long n = long(c.size());
-	return std::all_of(
-	        intr.begin(), intr.end(), [&](const shared_ptr<Interaction>& I) { return I->linIx >= 0 && I->linIx < n && c[size_t(I->linIx)] == I; });
+	BondCensus census;
+	for (size_t k = 0; k < intr.size(); ++k) {
+		const shared_ptr<Interaction>& I = intr[k];
+		if (released(k)) census.released += 1;
+		else if (!I->isReal() || !(I->linIx >= 0 && I->linIx < n && c[size_t(I->linIx)] == I))
+			census.erased = true;
+	}
+	return census;
 }
 
-void RdemCellNetwork::rebuild(Scene* scene, long bondChanges)
+void RdemCellNetwork::rebuild(Scene* scene)
 {
 	++nRebuilds;
+	/* Bonds released since the last updateIntact (their intact fraction still above 0) release the cells of both
+	   blocks now, as updateIntact would have done, unless a new build defines the cells afresh. */
+	vector<Body::id_t> releasedCells;
+	if (builtGeneration == generation)
+		for (size_t k = 0; k < bond.size(); ++k)
+			if (intact[k] > 0 && released(k)) {
+				if (bond[k].c1 != 0) releasedCells.push_back(body[bond[k].i1]);
+				if (bond[k].c2 != 0) releasedCells.push_back(body[bond[k].i2]);
+			}
 	releaseBonds(intr, phys);
 	bond.clear();
 	body.clear();
@@ -149,9 +174,12 @@ void RdemCellNetwork::rebuild(Scene* scene, long bondChanges)
 	scalePrev.assign(body.size(), 1);
 	for (size_t i = 0; i < body.size(); ++i)
 		scalePrev[i] = state[i]->cellScale;
+	for (Body::id_t id : releasedCells) { // after scalePrev: applyForces books the energy the drop releases
+		const auto it = compact.find(id);
+		if (it != compact.end()) state[it->second]->cellScale = 0;
+	}
 	builtGeneration  = generation;
 	builtBodies      = long(scene->bodies->size());
-	builtBondChanges = bondChanges;
 	seenInteractions = long(scene->interactions->size());
 	brokenSeen       = -1;
 }
@@ -162,19 +190,14 @@ void RdemCellNetwork::updateIntact(long brokenSprings)
 	if (brokenSprings == brokenSeen) return;
 	brokenSeen = brokenSprings;
 	for (size_t k = 0; k < bond.size(); ++k) {
-		const Interaction& I = *intr[k];
-		if (!I.isReal() || !static_cast<const RdemGeom*>(I.geom.get())->bonded) { // released (then maybe a contact): off for good
-			intact[k] = 0;
-			continue;
-		}
-		const auto& p = *static_cast<const RdemPhys*>(I.phys.get());
+		const auto& p = *static_cast<const RdemPhys*>(phys[k].get()); // also of a released bond: 0 for good
 		intact[k]     = Real(p.nIntact()) / Real(p.segState.size());
 	}
 }
 
-void RdemCellNetwork::updateStrains(Scene* scene, long brokenSprings, long bondChanges, int threads)
+void RdemCellNetwork::updateStrains(Scene* scene, long brokenSprings, int threads)
 {
-	if (!refresh(scene, bondChanges)) return;
+	if (!refresh(scene)) return;
 	updateIntact(brokenSprings);
 	const long nBlocks = long(body.size()), nBonds = long(bond.size());
 #ifdef YADE_OPENMP
@@ -328,7 +351,7 @@ long RdemCellNetwork::reduceMasterStresses(Scene* scene)
 
 void RdemCellNetwork::applyForces(Scene* scene, bool releaseOnCrack, Real& energy, Real& released, int threads, const StressSync& sync)
 {
-	if (!refresh(scene, builtBondChanges)) {
+	if (!refresh(scene)) {
 		if (sync) { // the sync is collective on YADE's MPI: a rank without cells takes part with none
 			vector<Vector3r> none;
 			sync(vector<Body::id_t>(), none);
@@ -412,7 +435,7 @@ vector<Real> RdemCellNetwork::omega2Bound(Scene* scene)
 	   share. Each bond q is bounded like a normal spring of stiffness κ_q = Σ_r |K_qr| at its face centre, with the
 	   Gershgorin terms 2κ(1/m + |r×n|²/I_min) of each of its free blocks (as RdemTimeStepper does for springs) [1/s²]. */
 	vector<Real> w2(scene->bodies->size(), 0);
-	if (!refresh(scene, builtBondChanges)) return w2;
+	if (!refresh(scene)) return w2;
 	vector<Vector3r> row(body.size(), Vector3r::Zero()); // per cell and axis d: Σ_r |K(d, d_r)| |c_r|
 	for (size_t i = 0; i < body.size(); ++i) {
 		if (!hasCell[i]) continue;
@@ -474,7 +497,7 @@ vector<Real> RdemCellNetwork::omega2Bound(Scene* scene)
 
 void RdemCellNetwork::addStiffness(Scene* scene, bool releaseOnCrack, long brokenSprings, rdem::BlockStiffness<Real>& K)
 {
-	if (!refresh(scene, builtBondChanges)) return;
+	if (!refresh(scene)) return;
 	updateIntact(brokenSprings);
 	// the openings u_n = n·(P₂ - P₁) at the face centres, as updateStrains, linearised: gradients n and r×n
 	vector<size_t> openingOf(bond.size());

@@ -27,14 +27,14 @@ public:
 	using StressSync = std::function<void(const vector<Body::id_t>& body, vector<Vector3r>& stress)>;
 	/* Rebuilds the arrays if what defines them changed since the last call: a new RdemPoissonEngine.build (generation;
 	   RdemBondKeeper's bonds put back bump it too), the bodies' count, and, once the interaction container's size
-	   changes, a bond released since (bondChanges: RdemSharedState::bondChanges) or erased (O.interactions.erase, the
-	   erasure of a body). Contacts that come and go leave them. False if there is no cell. */
-	bool refresh(Scene* scene, long bondChanges);
+	   changes, a bond erased without being released (O.interactions.erase, the erasure of a body) or released bonds
+	   making up a quarter of the network. Contacts that come and go leave them, and so does a release: a released bond
+	   stays, with intact fraction 0, and releases its cells. False if there is no cell. */
+	bool refresh(Scene* scene);
 	/// Before the law: poses, openings u_n = n·(P₂ - P₁) at the face centres, crack scales, RdemState::strain,
 	/// ::cellScale and ::cellStress of every cell; brokenSprings: the scene's count (RdemSharedState), the crack scales
 	/// are recomputed when it changes. On `threads` OpenMP threads (the calling engine's ompThreads, ≤ 0: all).
-	/// bondChanges: RdemSharedState::bondChanges (the step's other calls pass the one of the last rebuild).
-	void updateStrains(Scene* scene, long brokenSprings, long bondChanges, int threads);
+	void updateStrains(Scene* scene, long brokenSprings, int threads);
 	/// After the law: ∂W/∂ε of every cell (its elastic stress plus the reaction of its bonds' offset correction), then the
 	/// normal force -Σ c ∂W/∂ε of every bond at its face centre, added to the blocks in a fixed order. Adds the cells'
 	/// energy ½ s εᵀKε and the energy released by a drop of s [J]. Threads as for updateStrains.
@@ -90,12 +90,19 @@ private:
 	vector<char>       booksEnergy;  // per compact block on the master (YADE's MPI): whether this rank books its cell's energy
 	vector<Real>       scalePrev;    // per compact block: cell scale of the last step
 	size_t             nCellBlocks     = 0;
-	long               builtGeneration = -1, builtBodies = -1, builtBondChanges = -1, brokenSeen = -1;
+	long               builtGeneration = -1, builtBodies = -1, brokenSeen = -1;
 	long               seenInteractions = -1; // the container's size when the bonds were last found in it
 	long               nRebuilds        = 0;
-	void               rebuild(Scene* scene, long bondChanges);
-	/// Whether every bond's interaction is still in the scene's container (an erased one keeps its old linIx).
-	bool bondsInContainer(Scene* scene) const;
+	void               rebuild(Scene* scene);
+	/// Whether bond k was released by the law (its interaction reset, or a contact since).
+	bool released(size_t k) const;
+	/// What became of the network's bonds: whether one left the container without being released (an erased one keeps
+	/// its old linIx), and how many were released.
+	struct BondCensus {
+		bool   erased   = false;
+		size_t released = 0;
+	};
+	BondCensus bondCensus(Scene* scene) const;
 	/// Cell i's strain from ε (before the condensation), its crack scale and elastic stress (RdemState).
 	void setStrain(size_t i, const Vector3r& eps, Real scale);
 	/// The cells' ∂W/∂ε: the elastic part s K ε plus the reaction Cᵀ g of its bonds' offset correction (C the condensation).

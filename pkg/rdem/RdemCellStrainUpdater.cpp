@@ -16,7 +16,7 @@ void RdemCellStrainUpdater::action()
 {
 	// The cells belong to the scene's RdemPoissonEngine, which applies their forces after the loop (RdemSharedState::cells).
 	RdemSharedState& sh = RdemSharedState::of(scene, shared); // checks the engines when they changed
-	if (sh.cells) sh.cells->updateStrains(scene, sh.brokenSprings(), sh.bondChanges, ompThreads);
+	if (sh.cells) sh.cells->updateStrains(scene, sh.brokenSprings(), ompThreads);
 }
 
 } // namespace yade

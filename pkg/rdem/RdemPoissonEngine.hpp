@@ -80,7 +80,7 @@ With :yref:`O.trackEnergy<Omega.trackEnergy>`: ``rdemPoisson``, the elements' or
 		.def("elementScales",&RdemPoissonEngine::elementScales,"Per element, the current force scale (1 intact, 0 released by a crack or an erased block).")
 		.add_property("nElements",&RdemPoissonEngine::nElements,"Number of elements (the paper's hexahedra).")
 		.add_property("nCells",&RdemPoissonEngine::nCells,"Number of blocks with a Poisson cell.")
-		.add_property("cellRebuilds",&RdemPoissonEngine::cellRebuilds,"How many times the cells' run-time network was made from the scene's bonds: at the first step after a ``build``, when bodies are added or a bond is released or erased; not when contacts come and go (read-only, for tests).")
+		.add_property("cellRebuilds",&RdemPoissonEngine::cellRebuilds,"How many times the cells' run-time network was made from the scene's bonds: at the first step after a ``build``, when bodies are added or erased or a bond is erased, and once the bonds released by the law are a quarter of its bonds (a released bond stays until then as a term of zero, having released the cells of both its blocks); not when contacts come and go (read-only, for tests).")
 	);
 	// clang-format on
 	DECLARE_LOGGER;
@@ -98,24 +98,24 @@ private:
 	void                 buildCells(const std::set<Body::id_t>& ids);
 	void                 clearCells(const std::set<Body::id_t>& ids);
 	// run, in RdemPoissonEngine.cpp
-	void                    hex8Action();
-	void                    cellAction();
-	vector<Real>            hex8Omega2Bound() const;
-	vector<rdem::Mat24<Real>> stiffness;   // the distinct K_p of the elements, rebuilt from refPos, lambda, skin (not saved)
-	vector<size_t>          stiffnessOf; // per element, its K_p in stiffness (not saved)
-	vector<shared_ptr<Interaction>> bonds;     // the 12 bonds of each element, looked up once (not saved)
-	vector<Real>            scales;    // force scale of each element, see elementScales (not saved)
-	vector<Vector3r>        nodalForce; // this step's force of each element on each of its nodes, 8 per element (not saved)
-	vector<size_t>          nodeFirst;  // the nodal forces on body b are nodalForce[nodeSlot[k]], k in [nodeFirst[b], nodeFirst[b+1]) (not saved)
-	vector<size_t>          nodeSlot;
-	vector<Vector3r>        nodeRef;           // per body: its reference position, from refPos (the same in all its elements) (not saved)
-	vector<Vector3r>        nodePos;           // per body: its position in this step, copied once per step for the elements (not saved)
-	long                    scalesBroken = -1; // broken springs in the scene when scales were computed
-	long                    scalesIntrs  = -1; // number of interactions then
-	RdemCellNetwork         cells;             // the cells at run time (not saved: rebuilt from the states and interactions)
-	void                    prepare();
-	rdem::Mat24<Real>       elementStiffness(size_t e) const;
-	bool                    prepared() const { return stiffnessOf.size() == size_t(nElements()); }
+	void                            hex8Action();
+	void                            cellAction();
+	vector<Real>                    hex8Omega2Bound() const;
+	vector<rdem::Mat24<Real>>       stiffness;   // the distinct K_p of the elements, rebuilt from refPos, lambda, skin (not saved)
+	vector<size_t>                  stiffnessOf; // per element, its K_p in stiffness (not saved)
+	vector<shared_ptr<Interaction>> bonds;       // the 12 bonds of each element, looked up once (not saved)
+	vector<Real>                    scales;      // force scale of each element, see elementScales (not saved)
+	vector<Vector3r>                nodalForce;  // this step's force of each element on each of its nodes, 8 per element (not saved)
+	vector<size_t>                  nodeFirst;   // the nodal forces on body b are nodalForce[nodeSlot[k]], k in [nodeFirst[b], nodeFirst[b+1]) (not saved)
+	vector<size_t>                  nodeSlot;
+	vector<Vector3r>                nodeRef;           // per body: its reference position, from refPos (the same in all its elements) (not saved)
+	vector<Vector3r>                nodePos;           // per body: its position in this step, copied once per step for the elements (not saved)
+	long                            scalesBroken = -1; // broken springs in the scene when scales were computed
+	long                            scalesIntrs  = -1; // number of interactions then
+	RdemCellNetwork                 cells;             // the cells at run time (not saved: rebuilt from the states and interactions)
+	void                            prepare();
+	rdem::Mat24<Real>               elementStiffness(size_t e) const;
+	bool                            prepared() const { return stiffnessOf.size() == size_t(nElements()); }
 };
 REGISTER_SERIALIZABLE(RdemPoissonEngine);
 

@@ -13,7 +13,6 @@
 #include <core/Interaction.hpp>
 #include <pkg/rdem/RdemStiffnessSource.hpp>
 #include <pkg/rdem/math/FaceSprings.hpp>
-#include <atomic>
 #include <boost/weak_ptr.hpp>
 #include <functional>
 #include <mutex>
@@ -83,9 +82,6 @@ public:
 	OpenMPAccumulator<int> tensionBreaks, shearBreaks;
 	/// Restoring springs broken so far (tension + shear): what the engines that follow cracks watch.
 	long brokenSprings() const { return long(tensionBreaks.get()) + long(shearBreaks.get()); }
-	/// Bonds released so far by Law2_RdemGeom_RdemPhys_FaceSprings (as it records them; the law's threads, rarely: once
-	/// per bond in a run): RdemCellNetwork rebuilds its bonds when it changes. Not saved: a loaded scene builds anew.
-	std::atomic<long> bondChanges { 0 };
 	/// Interactions that started or stopped leaving deferred forces since the last takeActiveSetChanges (law's threads).
 	OpenMPAccumulator<int> activeSetChanges;
 	/// How many interactions started or stopped leaving deferred forces since the last call; resets the record. Lets

@@ -95,6 +95,25 @@ class CellNetworkRefresh(unittest.TestCase):
 		self.assertEqual(self.engine.cellRebuilds, 2, 'a body erased')
 		self.matchesFreshNetwork('a body erased')
 
+	def testReleasedBond(self):
+		"""Bonds the law releases at once (every spring broken in one step, the blocks apart) release the cells of both
+		their blocks at the next step, as bonds whose springs broke one by one do, and stay in the network as zero
+		terms instead of making it again: a cracking building releases bonds at nearly every step."""
+		mover = self.ids[len(self.ids) // 2]
+		mine = [I for I in O.interactions.withBody(mover) if I.isReal and I.geom.bonded]
+		for I in mine:
+			I.phys.tensileStrength, I.phys.cohesion = 1e3, 1e3  # [Pa]: the springs break in tension at the move
+		O.bodies[mover].state.pos += Vector3(0, 0, 2.0)  # 2 m above the wall: apart from every block
+		O.step()  # the law releases the bonds to the other wall blocks (the one to the top platen is held by its cell's stress)
+		released = [(I.id1, I.id2) for I in mine if not (I.isReal and I.geom.bonded)]
+		self.assertGreaterEqual(len(released), 4)
+		cells = {i for pair in released for i in pair}
+		self.assertTrue(all(O.bodies[i].state.cellScale == 1 for i in cells), 'released in one step, from intact')
+		O.step()  # the cells see the releases
+		self.assertEqual([i for i in cells if O.bodies[i].state.cellScale != 0], [], 'the cells of the released bonds')
+		self.assertEqual(self.engine.cellRebuilds, 1, 'a release makes no new network')
+		self.matchesFreshNetwork('bonds released')
+
 	def testNewBuild(self):
 		self.engine.build(self.ids)
 		O.step()
