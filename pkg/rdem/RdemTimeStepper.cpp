@@ -344,9 +344,11 @@ void RdemTimeStepper::postLoad(RdemTimeStepper&)
 bool RdemTimeStepper::isActivated()
 {
 	if (timeStepUpdateInterval < 1) throw std::invalid_argument("RdemTimeStepper.timeStepUpdateInterval = 0: must be an integer >= 1 [steps]");
-	// also at once when a spring breaks: its contact dashpot acts from the next step, and may need a shorter step now
+	/* also at once when a spring breaks: its contact dashpot acts from the next step, and may need a shorter step now;
+	   not while the step is held by contactLimit (contactLimited): that step allows for a critical dashpot on the
+	   stiffest mode, which is what a break brings, as a contact that forms between two updates does */
 	const bool due = scene->iter % timeStepUpdateInterval == 0 || !(scene->dt > 0 && math::isfinite(scene->dt)) || (!active && scene->dt != checkedDt)
-	        || brokenSprings(scene) != brokenAtEstimate;
+	        || (brokenSprings(scene) != brokenAtEstimate && !contactLimited);
 	return rdem::anyOverRanks(*scene, due); // distributed: all ranks together (computeTimeStep reduces over them)
 }
 
@@ -410,6 +412,8 @@ void RdemTimeStepper::computeTimeStep(Scene* sc)
 		checkedDt = sc->dt;
 		return;
 	}
+	// the damped limit at or above contactDt, over all ranks: breaks wait for the next regular update (isActivated)
+	contactLimited = active && math::isfinite(all[2]) && all[0] >= all[2];
 	if (active) sc->dt = safety * math::min(all[0], all[2]);
 	else
 		checkFixedDt(sc, all[0], all[1]);

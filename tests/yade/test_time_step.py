@@ -183,5 +183,31 @@ class TimeStep(unittest.TestCase):
 		self.assertEqual(rows, 20)
 		self.assertGreater(damped, 10)  # most of them with dashpots acting
 
+	def testBreaksWaitWhileContactLimited(self):
+		# While the automatic step is held by contactLimit (contactDt = (sqrt(2) - 1) 2/omega_max, which allows for a
+		# critically damped contact on the stiffest mode), a spring that breaks, which brings such a contact, waits for
+		# the regular update as a contact that forms between two updates does; while the damped limit is below contactDt,
+		# and without the contact limit, a step with a break triggers an update. The cracking 4x4x4 cube of
+		# testBreakUpdateAgainstFreshEstimate, 3000 steps: the steps with breaks between two regular updates, by whether
+		# the last update was held by the contact limit, and whether they triggered an update.
+		for limit in (True, False):
+			harness.freshScene()
+			CompressionTest(blocksPerEdge=4, rate=0.1, dt=None)
+			ts = rdem.timeStepper()
+			ts.contactLimit = limit
+			O.timingEnabled = True
+			waited, updated = [0, 0], [0, 0]  # by contactLimited before the step
+			while O.iter < 3000:
+				before, calls, held = sum(rdem.breakCounts()), ts.execCount, ts.contactLimited
+				O.step()
+				if (O.iter - 1) % ts.timeStepUpdateInterval == 0 or sum(rdem.breakCounts()) == before:
+					continue
+				(updated if ts.execCount > calls else waited)[held] += 1
+			print('contactLimit %s: breaks between regular updates, held by the contact limit: %d waited, %d updated; '
+			      'not held: %d waited, %d updated' % (limit, waited[1], updated[1], waited[0], updated[0]))
+			self.assertEqual(updated[1], 0)
+			self.assertEqual(waited[0], 0)
+			self.assertGreater(waited[1] if limit else updated[0], 10)
+
 if __name__ == '__main__':
 	harness.run(TimeStep)
