@@ -37,8 +37,7 @@ namespace {
 	}
 
 	/// Overlaps below this are touching, not contact: grid neighbours along an edge or a corner overlap by round-off [m].
-	Real touchTolerance(const Vector3r& hA, const Vector3r& hB) { return 1e-9 * math::min(hA.minCoeff(), hB.minCoeff()); }
-	Real touchTolerance(const Block& A, const Block& B) { return touchTolerance(A.half, B.half); }
+	Real touchTolerance(const Block& A, const Block& B) { return rdem::touchTolerance<Real>(A.half, B.half); }
 
 	/// How far outside a block a vertex may lie and still count as on its surface (rdem::facesCross): round-off of the
 	/// positions of blocks laid side by side, 1e-6 of the smaller half-extent [m].
@@ -297,10 +296,10 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::knownApart(
 		return true;
 	}
 	if (!skipApart || gap.witness < 0) return false;
-	const WitnessVerdict verdict = witnessVerdict(s1.pos, s1.ori, hA, s2.pos + shift2, s2.ori, hB, gap.witness);
+	const auto verdict = rdem::witnessVerdict<Real>(s1.pos, s1.ori, hA, s2.pos + shift2, s2.ori, hB, gap.witness);
 	if (!verdict.apart) return false; // tested in full (findContact)
 	witnessTests += 1;
-	if (certifiableSlack(verdict.slack, hA, hB)) {
+	if (rdem::certifiableSlack<Real>(verdict.slack, hA, hB)) {
 		const Real t = travelled();
 		if (t >= 0) {
 			gap.reach = t + verdict.slack - rdem::separationMargin<Real>(hA, hB);
@@ -308,23 +307,6 @@ bool Ig2_RdemBlock_RdemBlock_RdemGeom::knownApart(
 		}
 	}
 	return true;
-}
-
-Ig2_RdemBlock_RdemBlock_RdemGeom::WitnessVerdict Ig2_RdemBlock_RdemBlock_RdemGeom::witnessVerdict(
-        const Vector3r& xA, const Quaternionr& qA, const Vector3r& hA, const Vector3r& xB, const Quaternionr& qB, const Vector3r& hB, int axis)
-{
-	const Real tol = touchTolerance(hA, hB);
-	const Real o   = rdem::faceAxisOverlap<Real>(xA, qA, hA, xB, qB, hB, axis);
-	const Real eps = rdem::faceAxisRoundOff<Real>(xA, hA, xB, hB);
-	// the witness leaves a slack of at least tol - o - eps on its axis
-	return { o <= tol - eps, tol - o - eps };
-}
-
-bool Ig2_RdemBlock_RdemBlock_RdemGeom::certifiableSlack(Real slack, const Vector3r& hA, const Vector3r& hB)
-{
-	// a certificate if the slack exceeds the margin (its square roots only where it may: the margin is at least 1e-6 of
-	// the largest half-extents)
-	return slack > Real(1e-6) * (hA.maxCoeff() + hB.maxCoeff()) && slack > rdem::separationMargin<Real>(hA, hB);
 }
 
 bool Ig2_RdemBlock_RdemBlock_RdemGeom::bond(const Block& A, const Block& B, const shared_ptr<Interaction>& I) const

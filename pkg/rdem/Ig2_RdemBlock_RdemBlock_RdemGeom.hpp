@@ -58,19 +58,6 @@ public:
 	Real                    witnessTestsPy() const { return witnessTests.get(); }
 	/// The sample grid of sampled contacts: contactSamplesPerEdge, or segmentsPerEdge if that is 0.
 	int contactSamples() const { return contactSamplesPerEdge > 0 ? contactSamplesPerEdge : segmentsPerEdge; }
-	/// What the witness axis of a pair found apart says in this step (knownApart): whether the blocks are still apart
-	/// along it, and the slack it leaves [m].
-	struct WitnessVerdict {
-		bool apart;
-		Real slack;
-	};
-	/* The witness test of knownApart for blocks at xA, qA and xB, qB with half-extents hA, hB and witness axis `axis`
-	   (RdemGap::witness): apart if the overlap along the axis (rdem::faceAxisOverlap) is below the touch tolerance by
-	   more than the round-off (rdem::faceAxisRoundOff). One function for the functor and RdemInteractionLoop. */
-	static WitnessVerdict
-	witnessVerdict(const Vector3r& xA, const Quaternionr& qA, const Vector3r& hA, const Vector3r& xB, const Quaternionr& qB, const Vector3r& hB, int axis);
-	/// Whether the slack of a witness verdict makes a certificate (RdemGap::reach), for blocks of half-extents hA, hB.
-	static bool certifiableSlack(Real slack, const Vector3r& hA, const Vector3r& hB);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Ig2_RdemBlock_RdemBlock_RdemGeom,IGeomFunctor,R"""(Geometry functor of two :yref:`RdemBlock`, producing :yref:`RdemGeom`.
 

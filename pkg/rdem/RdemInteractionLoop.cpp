@@ -8,6 +8,7 @@
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemInteractionLoop.hpp>
+#include <pkg/rdem/math/SeparationBound.hpp>
 
 namespace yade {
 
@@ -83,8 +84,8 @@ bool RdemInteractionLoop::stillApart(const Sleeper& s, const rdem::BodyTravel& t
 	if (s.witness < 0) return travel.withinReach(s.reach, s.id1, s.id2); // the certificate's test (BodyTravel::certifies)
 	if (!witness) return false;                                          // the functor makes no witness test (skipApart off)
 	const size_t a = size_t(s.id1), b = size_t(s.id2);
-	const auto   v = Ig2_RdemBlock_RdemBlock_RdemGeom::witnessVerdict(travel.pos[a], travel.ori[a], s.hA, travel.pos[b], travel.ori[b], s.hB, s.witness);
-	return v.apart && !Ig2_RdemBlock_RdemBlock_RdemGeom::certifiableSlack(v.slack, s.hA, s.hB);
+	const auto   v = rdem::witnessVerdict<Real>(travel.pos[a], travel.ori[a], s.hA, travel.pos[b], travel.ori[b], s.hB, s.witness);
+	return v.apart && !rdem::certifiableSlack<Real>(v.slack, s.hA, s.hB);
 }
 
 vector<IntrCallback::FuncPtr> RdemInteractionLoop::prepareStep()

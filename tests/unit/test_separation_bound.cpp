@@ -300,11 +300,39 @@ TEST(SeparationBound, AWitnessBelowTheToleranceMeansBlocksOverlapIsFalse)
 		const Q      qA(Eigen::AngleAxisd(uniform(gen, 0, 1e-10), randomUnit(gen))), qB(Eigen::AngleAxisd(uniform(gen, 0, 1e-10), randomUnit(gen)));
 		const rdem::BlockPair<double> pair(blockAt(xA, qA, h), blockAt(xB, qB, h));
 		const int                     axis = rdem::faceSeparation(pair, tolGrid).axis;
+		const auto                    v    = rdem::witnessVerdict<double>(xA, qA, h, xB, qB, h, axis);
 		const double                  o    = rdem::faceAxisOverlap<double>(xA, qA, h, xB, qB, h, axis);
-		if (o <= tolGrid - rdem::faceAxisRoundOff<double>(xA, h, xB, h)) {
+		EXPECT_EQ(v.slack, tolGrid - o - rdem::faceAxisRoundOff<double>(xA, h, xB, h)) << "pair " << k;
+		if (v.apart) {
 			++decided;
 			EXPECT_FALSE(rdem::blocksOverlap(pair, tolGrid)) << "pair " << k;
+			EXPECT_FALSE(rdem::certifiableSlack<double>(v.slack, h, h)) << "touching pairs make no certificate, pair " << k;
 		}
 	}
 	EXPECT_GT(decided, 1500); // most pairs touch within the tolerance and are decided by the witness (91 % of e)
+}
+
+TEST(SeparationBound, AWitnessGapMakesACertificateOnlyBeyondTheMargin)
+{
+	// Two 2 cm blocks side by side along x, turned together by a random rotation, with a gap g between their faces:
+	// the witness axis (A's x axis) is apart with the slack tol + g less the round-off bound (faceAxisOverlap is -g
+	// to round-off, ~1e-17 m here), and the slack makes a certificate once it exceeds separationMargin, 1e-6 of the
+	// half-extents' norms (3.5e-8 m), not below it. A gap of -2 tol (pressed together) is not apart.
+	std::mt19937 gen(11);
+	const V3     h(0.01, 0.01, 0.01);
+	const double tolGrid = rdem::touchTolerance<double>(h, h), margin = rdem::separationMargin<double>(h, h);
+	EXPECT_EQ(tolGrid, 1e-9 * 0.01);
+	for (int k = 0; k < 200; ++k) {
+		const Q      q = randomRotation(gen);
+		const V3     xA(uniform(gen, -1, 1), uniform(gen, -1, 1), uniform(gen, -1, 1));
+		const double g   = k % 4 == 0 ? -2 * tolGrid : std::pow(10.0, uniform(gen, -10, -5));
+		const V3     xB  = xA + q * V3(0.02 + g, 0, 0);
+		const auto   v   = rdem::witnessVerdict<double>(xA, q, h, xB, q, h, 0);
+		const double eps = rdem::faceAxisRoundOff<double>(xA, h, xB, h);
+		EXPECT_NEAR(v.slack, tolGrid + g - eps, 1e-15) << "gap " << g;
+		EXPECT_EQ(v.apart, g > 0) << "gap " << g;
+		if (std::abs(v.slack - margin) > 1e-15) {
+			EXPECT_EQ(rdem::certifiableSlack<double>(v.slack, h, h), v.slack > margin) << "gap " << g;
+		}
+	}
 }

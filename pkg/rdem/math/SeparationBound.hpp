@@ -152,6 +152,46 @@ namespace rdem {
 		return S(1e-12) * (xA.cwiseAbs().maxCoeff() + xB.cwiseAbs().maxCoeff() + hA.sum() + hB.sum());
 	}
 
+	/// Overlaps below this are touching, not contact: grid neighbours along an edge or a corner overlap by round-off [m].
+	template <class S> S touchTolerance(const Eigen::Matrix<S, 3, 1>& hA, const Eigen::Matrix<S, 3, 1>& hB)
+	{
+		return S(1e-9) * std::min(hA.minCoeff(), hB.minCoeff());
+	}
+
+	/// What the witness axis of a pair found apart says in a later step: whether the blocks are still apart along it,
+	/// and the slack it leaves [m].
+	template <class S> struct WitnessVerdict {
+		bool apart;
+		S    slack;
+	};
+
+	/* The witness test for blocks at xA, qA and xB, qB with half-extents hA, hB and witness axis `axis` (0–5, as
+	   faceAxisOverlap): apart if the overlap along the axis is below the touch tolerance by more than the round-off
+	   (faceAxisRoundOff), which makes it the decision blocksOverlap would take; the slack tol - o - eps is left on the
+	   axis. One function for the geometry functor (Ig2_RdemBlock_RdemBlock_RdemGeom) and RdemInteractionLoop. */
+	template <class S>
+	WitnessVerdict<S> witnessVerdict(
+	        const Eigen::Matrix<S, 3, 1>& xA,
+	        const Eigen::Quaternion<S>&   qA,
+	        const Eigen::Matrix<S, 3, 1>& hA,
+	        const Eigen::Matrix<S, 3, 1>& xB,
+	        const Eigen::Quaternion<S>&   qB,
+	        const Eigen::Matrix<S, 3, 1>& hB,
+	        int                           axis)
+	{
+		const S tol = touchTolerance<S>(hA, hB);
+		const S o   = faceAxisOverlap<S>(xA, qA, hA, xB, qB, hB, axis);
+		const S eps = faceAxisRoundOff<S>(xA, hA, xB, hB);
+		return { o <= tol - eps, tol - o - eps };
+	}
+
+	/// Whether the slack of a witness verdict makes a certificate (RdemGap::reach), for blocks of half-extents hA, hB: it
+	/// exceeds separationMargin (its square roots only where it may: the margin is at least 1e-6 of the largest half-extents).
+	template <class S> bool certifiableSlack(S slack, const Eigen::Matrix<S, 3, 1>& hA, const Eigen::Matrix<S, 3, 1>& hB)
+	{
+		return slack > S(1e-6) * (hA.maxCoeff() + hB.maxCoeff()) && slack > separationMargin<S>(hA, hB);
+	}
+
 	/* How far a point q, given in block Y's frame (q = R_Yᵀ(p - x_Y)), lies outside the region in which sampleDepthLocal can
 	   find it inside Y, Y's box grown by tol·h_k along each axis k (its slab test |q_k| ≤ (1 + tol) h_k): the largest
 	   |q_k| - (1 + tol) h_k [m]; ≤ 0 where the point may be inside. The sample certificate of a sampled contact
