@@ -51,15 +51,16 @@ bool RdemCellNetwork::refresh(Scene* scene)
 	   later by utils.createInteraction has none until the next build). It is made again when the bodies change, and,
 	   when the container's size changed (the collider's insertions and erasures of contacts change it at nearly every
 	   step), if a bond left the container without being released (O.interactions.erase, the erasure of a body), or once
-	   the bonds the law released are a quarter of the network's. A released bond stays until then with intact fraction 0
-	   (updateIntact), so that it releases the cells of both its blocks (their crack scale drops to 0) in the step after
-	   its release, as a bond whose springs broke one by one does; its terms are zero from then on, and a release costs no
-	   rebuild (a cracking building releases bonds at nearly every step). The container keeps the order of the
+	   the bonds the law released are a quarter of the network's and their cells have seen them. A released bond stays
+	   until then with intact fraction 0 (updateIntact), so that it releases the cells of both its blocks (their crack
+	   scale drops to 0, and applyForces books the energy) in the step after its release, as a bond whose springs broke
+	   one by one does; its terms are zero from then on, and a release costs no rebuild (a cracking building releases
+	   bonds at nearly every step). The container keeps the order of the
 	   interactions it does not erase, but for the last one, which takes an erased one's place. */
 	if (builtGeneration != generation || builtBodies != nB) rebuild(scene);
 	else if (seenInteractions != nI) {
 		const BondCensus census = bondCensus(scene);
-		if (census.erased || 4 * census.released > bond.size()) rebuild(scene);
+		if (census.erased || (!census.unseen && 4 * census.released > bond.size())) rebuild(scene);
 		seenInteractions = nI;
 	}
 	return nCellBlocks > 0;
@@ -73,6 +74,13 @@ bool RdemCellNetwork::released(size_t k) const
 	return gone && static_cast<const RdemPhys*>(phys[k].get())->nIntact() == 0;
 }
 
+bool RdemCellNetwork::cellsReleased(size_t k) const
+{
+	const Bond& b    = bond[k];
+	const auto  done = [&](size_t i, Real c) { return c == 0 || !hasCell[i] || state[i]->cellScale == 0; };
+	return done(b.i1, b.c1) && done(b.i2, b.c2);
+}
+
 RdemCellNetwork::BondCensus RdemCellNetwork::bondCensus(Scene* scene) const
 {
 	// InteractionContainer::erase moves the last interaction into the erased one's place and leaves the erased one's linIx
@@ -81,8 +89,11 @@ RdemCellNetwork::BondCensus RdemCellNetwork::bondCensus(Scene* scene) const
 	BondCensus census;
 	for (size_t k = 0; k < intr.size(); ++k) {
 		const shared_ptr<Interaction>& I = intr[k];
-		if (released(k)) census.released += 1;
-		else if (!I->isReal() || !(I->linIx >= 0 && I->linIx < n && c[size_t(I->linIx)] == I))
+		if (released(k)) {
+			if (cellsReleased(k)) census.released += 1;
+			else
+				census.unseen = true;
+		} else if (!I->isReal() || !(I->linIx >= 0 && I->linIx < n && c[size_t(I->linIx)] == I))
 			census.erased = true;
 	}
 	return census;
@@ -91,12 +102,12 @@ RdemCellNetwork::BondCensus RdemCellNetwork::bondCensus(Scene* scene) const
 void RdemCellNetwork::rebuild(Scene* scene)
 {
 	++nRebuilds;
-	/* Bonds released since the last updateIntact (their intact fraction still above 0) release the cells of both
-	   blocks now, as updateIntact would have done, unless a new build defines the cells afresh. */
+	/* Bonds released whose cells have not dropped yet (updateStrains has not run since) release the cells of both
+	   blocks now, as updateStrains would have done, unless a new build defines the cells afresh. */
 	vector<Body::id_t> releasedCells;
 	if (builtGeneration == generation)
 		for (size_t k = 0; k < bond.size(); ++k)
-			if (intact[k] > 0 && released(k)) {
+			if (released(k) && !cellsReleased(k)) {
 				if (bond[k].c1 != 0) releasedCells.push_back(body[bond[k].i1]);
 				if (bond[k].c2 != 0) releasedCells.push_back(body[bond[k].i2]);
 			}
@@ -177,6 +188,8 @@ void RdemCellNetwork::rebuild(Scene* scene)
 	for (Body::id_t id : releasedCells) { // after scalePrev: applyForces books the energy the drop releases
 		const auto it = compact.find(id);
 		if (it != compact.end()) state[it->second]->cellScale = 0;
+		else if (const auto& b = Body::byId(id, scene)) // left the network with its last bond (its cell's energy unbooked)
+			static_cast<RdemState*>(b->state.get())->cellScale = 0;
 	}
 	builtGeneration  = generation;
 	builtBodies      = long(scene->bodies->size());

@@ -28,7 +28,7 @@ public:
 	/* Rebuilds the arrays if what defines them changed since the last call: a new RdemPoissonEngine.build (generation;
 	   RdemBondKeeper's bonds put back bump it too), the bodies' count, and, once the interaction container's size
 	   changes, a bond erased without being released (O.interactions.erase, the erasure of a body) or released bonds
-	   making up a quarter of the network. Contacts that come and go leave them, and so does a release: a released bond
+	   making up a quarter of the network, once their cells have seen them. Contacts that come and go leave them, and so does a release: a released bond
 	   stays, with intact fraction 0, and releases its cells. False if there is no cell. */
 	bool refresh(Scene* scene);
 	/// Before the law: poses, openings u_n = n·(P₂ - P₁) at the face centres, crack scales, RdemState::strain,
@@ -97,12 +97,16 @@ private:
 	/// Whether bond k was released by the law (its interaction reset, or a contact since).
 	bool released(size_t k) const;
 	/// What became of the network's bonds: whether one left the container without being released (an erased one keeps
-	/// its old linIx), and how many were released.
+	/// its old linIx), how many were released with their cells released too (cellsReleased), and whether a release
+	/// is still unseen by the cells (updateStrains has not run since).
 	struct BondCensus {
 		bool   erased   = false;
 		size_t released = 0;
+		bool   unseen   = false;
 	};
 	BondCensus bondCensus(Scene* scene) const;
+	/// Whether the cells that bond k is part of (its sides with a coefficient) have dropped to crack scale 0.
+	bool cellsReleased(size_t k) const;
 	/// Cell i's strain from ε (before the condensation), its crack scale and elastic stress (RdemState).
 	void setStrain(size_t i, const Vector3r& eps, Real scale);
 	/// The cells' ∂W/∂ε: the elastic part s K ε plus the reaction Cᵀ g of its bonds' offset correction (C the condensation).

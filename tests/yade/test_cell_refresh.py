@@ -114,6 +114,31 @@ class CellNetworkRefresh(unittest.TestCase):
 		self.assertEqual(self.engine.cellRebuilds, 1, 'a release makes no new network')
 		self.matchesFreshNetwork('bonds released')
 
+	def testManyReleasedBonds(self):
+		"""Once the released bonds are a quarter of the network's and their cells have dropped, the network is made again
+		without them at the next change of the container; the cells stay released (the crack scale never rises), and
+		the forces are those of a fresh network."""
+		bonds = [I for I in O.interactions if I.isReal and I.geom.bonded]
+		movers = self.ids[:len(self.ids) // 2]
+		lift = {i: Vector3(0, 0, 2.0 + 0.1 * i) for i in movers}  # far above the wall, apart from each other
+		for i in movers:
+			for I in O.interactions.withBody(i):
+				if I.isReal and I.geom.bonded:
+					I.phys.tensileStrength, I.phys.cohesion = 1e3, 1e3  # [Pa]
+			O.bodies[i].state.pos += lift[i]
+		O.step()  # the law releases their bonds
+		released = [(I.id1, I.id2) for I in bonds if not (I.isReal and I.geom.bonded)]
+		self.assertGreater(4 * len(released), len(bonds), 'more than a quarter released')
+		O.step()  # the collider erases them; the cells see the releases, and the network keeps them as zero terms
+		cells = {i for pair in released for i in pair}
+		self.assertEqual([i for i in cells if O.bodies[i].state.cellScale != 0], [], 'the cells of the released bonds')
+		self.assertEqual(self.engine.cellRebuilds, 1, 'the releases unseen by the cells when the container changed')
+		O.bodies[movers[0]].state.pos -= lift[movers[0]]  # back into its place: the collider pairs it with its neighbours
+		O.step()
+		self.assertEqual(self.engine.cellRebuilds, 2, 'a quarter released, seen by the cells')
+		self.assertEqual([i for i in cells if O.bodies[i].state.cellScale != 0], [], 'the cells stay released')
+		self.matchesFreshNetwork('a quarter released')
+
 	def testNewBuild(self):
 		self.engine.build(self.ids)
 		O.step()
