@@ -55,8 +55,8 @@ bool RdemCellNetwork::refresh(Scene* scene)
 	   until then with intact fraction 0 (updateIntact), so that it releases the cells of both its blocks (their crack
 	   scale drops to 0, and applyForces books the energy) in the step after its release, as a bond whose springs broke
 	   one by one does; its terms are zero from then on, and a release costs no rebuild (a cracking building releases
-	   bonds at nearly every step). The container keeps the order of the
-	   interactions it does not erase, but for the last one, which takes an erased one's place. */
+	   bonds at nearly every step). The container keeps the order of the interactions it does not erase, but for the
+	   last one, which takes an erased one's place. */
 	if (builtGeneration != generation || builtBodies != nB) rebuild(scene);
 	else if (seenInteractions != nI) {
 		const BondCensus census = bondCensus(scene);

@@ -28,8 +28,8 @@ public:
 	/* Rebuilds the arrays if what defines them changed since the last call: a new RdemPoissonEngine.build (generation;
 	   RdemBondKeeper's bonds put back bump it too), the bodies' count, and, once the interaction container's size
 	   changes, a bond erased without being released (O.interactions.erase, the erasure of a body) or released bonds
-	   making up a quarter of the network, once their cells have seen them. Contacts that come and go leave them, and so does a release: a released bond
-	   stays, with intact fraction 0, and releases its cells. False if there is no cell. */
+	   making up a quarter of the network, once their cells have seen them. Contacts that come and go leave them, and so
+	   does a release: a released bond stays, with intact fraction 0, and releases its cells. False if there is no cell. */
 	bool refresh(Scene* scene);
 	/// Before the law: poses, openings u_n = n·(P₂ - P₁) at the face centres, crack scales, RdemState::strain,
 	/// ::cellScale and ::cellStress of every cell; brokenSprings: the scene's count (RdemSharedState), the crack scales

@@ -41,6 +41,18 @@ def forces():
 	return [(O.forces.f(b.id), O.forces.t(b.id)) for b in O.bodies if b]
 
 
+def liftApart(blocks):
+	"""Weakens every bond of `blocks` (f_t = c = 1 kPa: their springs break in tension at the move) and lifts each block
+	2 + 0.1 id m above its place, apart from the wall and from each other. Returns the lifts by id."""
+	lift = {i: Vector3(0, 0, 2.0 + 0.1 * i) for i in blocks}
+	for i in blocks:
+		for I in O.interactions.withBody(i):
+			if I.isReal and I.geom.bonded:
+				I.phys.tensileStrength, I.phys.cohesion = 1e3, 1e3  # [Pa]
+		O.bodies[i].state.pos += lift[i]
+	return lift
+
+
 def largestDifference(a, b):
 	scale = max(max(f.norm(), t.norm()) for f, t in a)
 	return max(max((fa - fb).norm(), (ta - tb).norm()) for (fa, ta), (fb, tb) in zip(a, b)) / scale
@@ -101,9 +113,7 @@ class CellNetworkRefresh(unittest.TestCase):
 		terms instead of making it again: a cracking building releases bonds at nearly every step."""
 		mover = self.ids[len(self.ids) // 2]
 		mine = [I for I in O.interactions.withBody(mover) if I.isReal and I.geom.bonded]
-		for I in mine:
-			I.phys.tensileStrength, I.phys.cohesion = 1e3, 1e3  # [Pa]: the springs break in tension at the move
-		O.bodies[mover].state.pos += Vector3(0, 0, 2.0)  # 2 m above the wall: apart from every block
+		liftApart([mover])
 		O.step()  # the law releases the bonds to the other wall blocks (the one to the top platen is held by its cell's stress)
 		released = [(I.id1, I.id2) for I in mine if not (I.isReal and I.geom.bonded)]
 		self.assertGreaterEqual(len(released), 4)
@@ -120,12 +130,7 @@ class CellNetworkRefresh(unittest.TestCase):
 		the forces are those of a fresh network."""
 		bonds = [I for I in O.interactions if I.isReal and I.geom.bonded]
 		movers = self.ids[:len(self.ids) // 2]
-		lift = {i: Vector3(0, 0, 2.0 + 0.1 * i) for i in movers}  # far above the wall, apart from each other
-		for i in movers:
-			for I in O.interactions.withBody(i):
-				if I.isReal and I.geom.bonded:
-					I.phys.tensileStrength, I.phys.cohesion = 1e3, 1e3  # [Pa]
-			O.bodies[i].state.pos += lift[i]
+		lift = liftApart(movers)
 		O.step()  # the law releases their bonds
 		released = [(I.id1, I.id2) for I in bonds if not (I.isReal and I.geom.bonded)]
 		self.assertGreater(4 * len(released), len(bonds), 'more than a quarter released')
