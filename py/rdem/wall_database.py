@@ -53,7 +53,9 @@ RULES = {
                        'head joints have none; both keep compression and friction'),
         'bond': ('running bond (one wythe) or English bond (one and a half bricks)', 'assumed, the table gives no bond: one wythe when the '
                  'wall is about one unit thick (the unit width is taken as the wall thickness), English bond, the usual bond of a '
-                 'one-and-a-half-brick wall, when t = l + joint + w; the overlap of running bond is half a unit'),
+                 'one-and-a-half-brick wall, when t = l + joint + w; the overlap of running bond is half a unit. The length is the one '
+                 'nearest the tested length that the bond lays (rdem.wall_layout): running bond of whole and half units, English bond of whole '
+                 'stretchers or whole stretchers and a three-quarter bat, as a mason closes a course'),
         'blocksPerUnit': ('2 along the unit, 1 through, round(2 h/l) >= 1 up', 'the user guide, accuracy against cost: a unit must be able to split '
                           '(1 block per brick: +23 % on MI1), 2 against 4 blocks per brick -0.6 %; blocks about as tall as long'),
         'beams': (dict(height=0.2, young=30e9, poisson=0.2, density=2400.0), 'assumed: reinforced concrete beams (EN1992-1-1 Table 3.1, C25/30: '
@@ -119,10 +121,12 @@ def readTable(path=None):
 	return out
 
 
-def _nearestModules(target, module, joint, smallest):
-	"""The number n >= ``smallest`` of modules with n*module - joint nearest to ``target`` (ties: the smaller)."""
-	n = max(smallest, int(round((target + joint) / module)))
-	return n
+def _nearestModules(target, module, joint, smallest, allowed=lambda n: True):
+	"""The number n >= ``smallest`` of modules, with ``allowed(n)``, whose n*module - joint is nearest to ``target``
+	(ties: the smaller)."""
+	x = (target + joint) / module
+	candidates = [n for n in range(max(smallest, int(math.floor(x)) - 4), max(smallest, int(math.ceil(x)) + 4) + 1) if allowed(n)]
+	return min(candidates, key=lambda n: (abs(n - x), n))
 
 
 def geometry(row):
@@ -137,10 +141,11 @@ def geometry(row):
 		raise ValueError('Bed Joints = %r: must be one of %s' % (row['Bed Joints'], ', '.join(sorted(joints))))
 	tj = joints[row['Bed Joints']]
 	if abs(t - (l + tj + w)) <= 0.02 * t:
-		# one and a half bricks: English bond, whole stretchers (the header is as deep as two stretchers and a joint)
+		# one and a half bricks: English bond (the header is as deep as two stretchers and a joint) of whole
+		# stretchers, or whole stretchers and a three-quarter bat (rdem.wall_layout): q quarter modules, q mod 4 in {0, 3}
 		bond, width = 'english', w
-		n = _nearestModules(L, l + tj, tj, 2)
-		length, thickness = n * (l + tj) - tj, l + tj + w
+		q = _nearestModules(L, (l + tj) / 4, tj, 8, lambda q: q % 4 in (0, 3))
+		length, thickness = q * (l + tj) / 4 - tj, l + tj + w
 	elif abs(t - w) <= 0.05 * t:
 		# one wythe: running bond of whole units and half units, the unit as wide as the wall
 		bond, width = 'running', t

@@ -216,10 +216,16 @@ def _runningCourse(k, quarters, modules):
 def _englishCourse(k, quarters, modules):
 	"""English bond, even courses stretchers on the front face, odd courses headers on it. A header run is header,
 	queen closer, headers, queen closer, header ($2n - 1$ headers for $n$ stretchers), so that it laps the stretchers
-	by $L/4$. One brick thick (2 modules): stretchers in both wythes / headers through. One and a half bricks
-	(3 modules): front stretchers and a header run behind them / a header run and back stretchers behind it."""
+	by $L/4$. A length of $n$ stretchers and three quarters ends every stretcher row with a three-quarter bat and
+	the header run with headers alone (header, queen closer, $2n$ headers): its joints stay on odd quarters, a quarter
+	from the stretchers' joints, as at the near end. One brick thick (2 modules): stretchers in both wythes / headers
+	through. One and a half bricks (3 modules): front stretchers and a header run behind them / a header run and back
+	stretchers behind it."""
 	n = quarters // 4
-	stretchers, headers = 'S' * n, 'HQ' + 'H' * (2 * n - 3) + 'QH'
+	if quarters % 4 == 3:
+		stretchers, headers = 'S' * n + 'T', 'HQ' + 'H' * (2 * n)
+	else:
+		stretchers, headers = 'S' * n, 'HQ' + 'H' * (2 * n - 3) + 'QH'
 	if modules == 2:
 		return _row(stretchers, 0) + _row(stretchers, 1) if k % 2 == 0 else _row(headers, 0)
 	return _row(stretchers, 0) + _row(headers, 1) if k % 2 == 0 else _row(headers, 0) + _row(stretchers, 2)
@@ -266,7 +272,8 @@ _LENGTH_RULES = {
         'stack': (lambda Q: Q >= 4 and Q % 4 == 0, 'n*l + (n-1)*t, n >= 1 bricks per course'),
         'running': (lambda Q: Q >= 4 and Q % 2 == 0, 'n*l + (n-1)*t or (n+1/2)*(l+t) - t, n >= 1 bricks per course (half bats at both ends of '
                     'odd courses, or at one end of every course)'),
-        'english': (lambda Q: Q >= 8 and Q % 4 == 0, 'n*l + (n-1)*t, n >= 2 stretchers per stretcher course'),
+        'english': (lambda Q: Q >= 8 and Q % 4 in (0, 3), 'n*l + (n-1)*t, n >= 2 stretchers per stretcher course, or (n + 3/4)*(l + t) - t '
+                    '(a three-quarter bat at the far end of each stretcher row)'),
         'flemish': (lambda Q: Q >= 10 and Q % 6 in (0, 4), 'length + t = (1 + 1.5*m)*(l + t) (queen closers at both ends) or (1.5 + 1.5*m)*(l + t) '
                     '(three-quarter bats at the far end), m >= 1'),
 }
@@ -704,7 +711,8 @@ def wallLayout(length,
 
 	:param length, height, thickness: size of the masonry [m]; each must fit the brick module to 1e-9 relative (else
 	    ValueError naming it, with the nearest valid values): ``height`` $= Nh + (N-1)t$ for $N \\geq 1$ courses;
-	    ``length`` $= nl + (n-1)t$ with $n \\geq 1$ bricks per course (stack, running) or $n \\geq 2$ (english);
+	    ``length`` $= nl + (n-1)t$ with $n \\geq 1$ bricks per course (stack, running) or $n \\geq 2$ (english), or
+	    $(n + 1/2)(l + t) - t$ (running) or $(n + 3/4)(l + t) - t$ (english: a three-quarter bat ends each stretcher row);
 	    flemish: ``length`` $+ t = (1 + 1.5m)(l + t)$ or $(1.5 + 1.5m)(l + t)$, $m \\geq 1$; ``thickness``
 	    $= nw + (n-1)t$, $n \\geq 1$ wythes (stack, running), $l$ or $l + t + w$ (english, flemish, which need $l = 2w + t$).
 	:param brick: nominal $(l, w, h)$ of a brick [m].

@@ -45,13 +45,22 @@ class Rules(unittest.TestCase):
 		self.rows = db.readTable()
 
 	def testGeometryMI1(self):
-		# English bond, 10 mm joints: 6 stretchers (6*0.25 + 5*0.01 = 1.55 m), 31 courses (31*0.065 - 0.01 = 2.005 m),
-		# l + t + w = 0.38 m: the configuration doc/validation.md validated
+		# English bond, 10 mm joints: 5 stretchers and a three-quarter bat (23 quarter modules of 0.065 m less a joint =
+		# 1.485 m, -1.0 %; 6 stretchers would be 1.55 m, +3.3 %), 31 courses (31*0.065 - 0.01 = 2.005 m), l + t + w = 0.38 m
 		g = db.geometry(self.rows['MI1'])
 		self.assertEqual((g['bond'], g['joint'], g['blocksPerBrick'], g['courses']), ('english', 0.01, (2, 1, 1), 31))
-		for key, value in (('length', 1.55), ('height', 2.005), ('thickness', 0.38)):
+		for key, value in (('length', 1.485), ('height', 2.005), ('thickness', 0.38)):
 			self.assertAlmostEqual(g[key], value, delta=1e-12)
-		self.assertAlmostEqual(g['deviation']['length'], 1.55 / 1.5 - 1, delta=1e-12)
+		self.assertAlmostEqual(g['deviation']['length'], 1.485 / 1.5 - 1, delta=1e-12)
+
+	def testNearestLengthTheBondLays(self):
+		# quarter modules of 0.065 m less a 0.01 m joint; English bond lays q = 0 or 3 (mod 4), q >= 8
+		english = lambda q: q % 4 in (0, 3)
+		for target, q in ((1.5, 23), (1.55, 24), (1.42, 23), (0.3, 8)):
+			self.assertEqual(db._nearestModules(target, 0.065, 0.01, 8, english), q, target)
+		self.assertEqual(db._nearestModules(1.38, 0.065, 0.01, 8, english), 20)  # 21.4 quarters: 20 is nearer than 23
+		self.assertEqual(db._nearestModules(1.3875, 0.065, 0.01, 8, english), 20)  # 21.5 quarters, a tie: the smaller
+		self.assertEqual(db._nearestModules(1.5, 0.13, 0.01, 2), 12)
 
 	def testGeometryOneWythe(self):
 		# CS: 248 mm units, 2 mm thin-layer joints: 10 half modules of 0.125 m less a joint = 1.248 m, 10 courses of

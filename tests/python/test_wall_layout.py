@@ -108,6 +108,10 @@ PATTERNS = [
         ('english', TWO, LENGTH, {'stretcher': 22}, {'header': 21, 'queen closer': 2}),
         # one and a half bricks: front stretchers + header run behind / header run + back stretchers
         ('english', THREE, LENGTH, {'stretcher': 11, 'header': 21, 'queen closer': 2}, {'header': 21, 'queen closer': 2, 'stretcher': 11}),
+        # 3.045 = 11.75 modules - t: stretcher rows end with a three-quarter bat / header, queen closer, 22 headers
+        ('english', TWO, 3.045, {'stretcher': 22, 'three-quarter bat': 2}, {'header': 23, 'queen closer': 1}),
+        ('english', THREE, 3.045, {'stretcher': 11, 'three-quarter bat': 1, 'header': 23, 'queen closer': 1},
+         {'header': 23, 'queen closer': 1, 'stretcher': 11, 'three-quarter bat': 1}),
         # 1.03 = 4 modules - t: HQ S H S QH (stretchers doubled front and back) / S H S H S
         ('flemish', TWO, 1.03, {'header': 3, 'queen closer': 2, 'stretcher': 4}, {'stretcher': 6, 'header': 2}),
         # 1.16 = 4.5 modules - t: HQ S H S H T (T doubled) / S H S H S H
@@ -492,6 +496,9 @@ class Validation(unittest.TestCase):
 		with self.assertRaisesRegex(ValueError, r'length = 1\.1: .* nearest valid values: 1\.03 and 1\.16'):
 			wallLayout(1.1, HEIGHT, TWO, bond='flemish')
 		self.refused('length', 0.25, bond='english', thickness=TWO)  # one stretcher: too short for the closers
+		# English bond: whole stretchers, or whole stretchers and a three-quarter bat (not a half or a quarter)
+		with self.assertRaisesRegex(ValueError, r'length = 1\.42: .* nearest valid values: 1\.29 and 1\.485'):
+			wallLayout(1.42, HEIGHT, TWO, bond='english')
 
 	def testHeight(self):
 		self.refused('height', 0, -0.3, None, 0.3, 0.05)
