@@ -218,7 +218,12 @@ namespace {
 		if (stress.state == rdem::SegmentState::BrokenTension) breaks.tension += 1;
 		else
 			breaks.shear += 1;
-		e.bondBreak += rdem::restoringEnergy<Real>(b.k, stress, b.A, b.wn, b.ws);
+		/* Released: the shear spring's energy, and the normal spring's unless the segment stays in contact, where its
+		   contact spring (brokenSegment, in this step) takes over the compression w_n k̄_n A u_n²/2 with the same constant
+		   (paper §3.2): booked there as elastic, it is not lost. */
+		const Vector3r us      = ust + (withCells ? b.slip : Vector3r::Zero());
+		const Real     carried = b.touching(b.contactOpening(p, i, un), us) ? b.springN * un * un / 2 : Real(0);
+		e.bondBreak += rdem::restoringEnergy<Real>(b.k, stress, b.A, b.wn, b.ws) - carried;
 		p.segShear[i] = Vector3r::Zero();
 		return false;
 	}

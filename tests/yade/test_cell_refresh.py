@@ -114,7 +114,7 @@ class CellNetworkRefresh(unittest.TestCase):
 		mover = self.ids[len(self.ids) // 2]
 		mine = [I for I in O.interactions.withBody(mover) if I.isReal and I.geom.bonded]
 		liftApart([mover])
-		O.step()  # the law releases the bonds to the other wall blocks (the one to the top platen is held by its cell's stress)
+		O.step()  # the law releases the bonds to the other wall blocks (not the one to the top platen: the lift pushes the block into it)
 		released = [(I.id1, I.id2) for I in mine if not (I.isReal and I.geom.bonded)]
 		self.assertGreaterEqual(len(released), 4)
 		cells = {i for pair in released for i in pair}

@@ -100,6 +100,29 @@ class Breakage(unittest.TestCase):
 		self.assertEqual(rdem.breakCounts(), (0, 4))
 		self.assertEqual(list(O.interactions[0, 1].phys.segState), [2, 2, 2, 2])
 
+	def testShearBreakUnderCompressionKeepsItsNormalEnergy(self):
+		"""A spring that breaks in shear under compression stays in contact: its contact spring takes over the
+		compression with the same constant (paper §3.2), so the normal spring's energy A w_n σ²/(2 k_n) stays elastic and
+		only the shear spring's A w_s τ²/(2 k_s) is released (rdemBondBreak). Across the break, elastic + released is
+		the energy held just before it."""
+		import math
+		c, phi = 2e6, 0.5
+		self.build(ft=float('inf'), c=c, phi=phi)
+		wn, ws = O.interactions[0, 1].phys.weightNormal, O.interactions[0, 1].phys.weightShear
+		O.trackEnergy = True
+		sigma = -3e6  # compression
+		tauLimit = c - sigma * math.tan(phi)  # eq. 16
+		un = sigma / KN
+		self.place(Vector3(un, tauLimit / KS * (1 - 1e-9), 0))
+		held = O.energy['rdemElastic']
+		self.assertAlmostEqual(held / (AREA * (wn * sigma**2 / KN + ws * tauLimit**2 / KS) / 2), 1, delta=1e-8)
+		self.place(Vector3(un, tauLimit / KS * (1 + 1e-9), 0))
+		self.assertEqual(rdem.breakCounts(), (0, 4))
+		# tau moved by 1e-9 of itself between the two placements: 2e-9 of the shear energy; round-off of u (see above) 1e-12
+		self.assertAlmostEqual(O.energy['rdemBondBreak'] / (AREA * ws * tauLimit**2 / (2 * KS)), 1, delta=1e-8)
+		self.assertAlmostEqual(O.energy['rdemElastic'] / (AREA * wn * sigma**2 / (2 * KN)), 1, delta=1e-8)
+		self.assertAlmostEqual((O.energy['rdemElastic'] + O.energy['rdemBondBreak']) / held, 1, delta=1e-8)
+
 	def testTensionCheckedFirst(self):
 		self.build(ft=1e6, c=1e6, phi=0.5)
 		self.place(Vector3(2e6 / KN, 2e6 / KS, 0))  # violates both criteria
