@@ -16,6 +16,7 @@
 #include <pkg/rdem/math/ContactBound.hpp>
 #include <pkg/rdem/math/DensityScaling.hpp>
 #include <pkg/rdem/math/FaceSprings.hpp>
+#include <pkg/rdem/math/LeapfrogEnergy.hpp>
 #include <pkg/rdem/math/Softening.hpp>
 #include <pkg/rdem/math/SortedKeys.hpp>
 #include <algorithm>
@@ -220,10 +221,14 @@ namespace {
 			breaks.shear += 1;
 		/* Released: the shear spring's energy, and the normal spring's unless the segment stays in contact, where its
 		   contact spring (brokenSegment, in this step) takes over the compression w_n k̄_n A u_n²/2 with the same constant
-		   (paper §3.2): booked there as elastic, it is not lost. */
-		const Vector3r us      = ust + (withCells ? b.slip : Vector3r::Zero());
-		const Real     carried = b.touching(b.contactOpening(p, i, un), us) ? b.springN * un * un / 2 : Real(0);
-		e.bondBreak += rdem::restoringEnergy<Real>(b.k, stress, b.A, b.wn, b.ws) - carried;
+		   (paper §3.2): booked there as elastic, it is not lost. Each as the leapfrog balance needs it,
+		   rdem::releasedSpringEnergy with the springs' w k̄ A and the point's velocity v_{n-1/2} (body 2's relative to
+		   body 1's; the elongations grew by it in the last step). */
+		const Vector3r us    = ust + (withCells ? b.slip : Vector3r::Zero());
+		const Vector3r v     = b.pair.relativeVelocity(b.kin.arm(s, r));
+		const Real     vn    = v.dot(b.n);
+		const Real     shear = rdem::releasedSpringEnergy<Real>(b.springS, ust, Vector3r(v - vn * b.n), b.pair.dt);
+		e.bondBreak += b.touching(b.contactOpening(p, i, un), us) ? shear : shear + rdem::releasedSpringEnergy<Real>(b.springN, un, vn, b.pair.dt);
 		p.segShear[i] = Vector3r::Zero();
 		return false;
 	}

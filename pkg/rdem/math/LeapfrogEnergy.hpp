@@ -79,6 +79,20 @@ namespace rdem {
 		return out;
 	}
 
+	/* Energy a linear spring of stiffness k [N/m] releases when it is removed in step n (a restoring spring that breaks),
+	   so that the balance above stays exact: ½ k u_{n-1}·u_n with u_{n-1} = u_n - Δt v_{n-1/2}, its elongation u_n [m] and
+	   the velocity v_{n-1/2} [m/s] at which it grew in the last step. For one spring between a mass and a wall: K_{n-1}
+	   + U_{n-1} = K_n + (U_n without the spring) + ½ k u_{n-1}u_n, the step's kinetic change being -½ k u_{n-1} v_{n-1/2}Δt;
+	   booking ½ k u_n² instead creates ½ k u_n·(u_n - u_{n-1}), the spring force times half the last step's travel, at
+	   every break of a spring that was still stretching [J]. */
+	template <class S> S releasedSpringEnergy(S k, const Eigen::Matrix<S, 3, 1>& u, const Eigen::Matrix<S, 3, 1>& vel, S dt)
+	{
+		return k * u.dot(u - dt * vel) / 2;
+	}
+
+	/// releasedSpringEnergy of a spring along one axis: ½ k u (u - Δt v) [J].
+	template <class S> S releasedSpringEnergy(S k, S u, S vel, S dt) { return k * u * (u - dt * vel) / 2; }
+
 	/* Work of forces that act through one step, booked so that the leapfrog's energy balances (see above): a force D_n
 	   of step n does -½ D_n·v_{n-1/2}Δt in step n and -½ D_n·v_{n+1/2}Δt in step n+1. pending is the second half of
 	   the last step's dissipation [J]; keep it between steps (and in a saved scene). */
