@@ -46,7 +46,10 @@ void RdemLeapfrogEnergy::action()
 	const Real dt = scene->dt, damping = newton.damping;
 	const bool damped = paired && damping != 0;
 	if (damped) scene->forces.sync(); // synced by the integrator already; a no-op then
-	Real kinTrans = 0, kinRot = 0, withBefore = 0, withAfter = 0;
+	// a step whose Δt differs from the last tracked one's (a time stepper's update): its jump is booked (stepChangeJump)
+	const bool stepChanged = paired && lastDt > 0 && dt != lastDt;
+	if (stepChanged) scene->forces.sync();
+	Real kinTrans = 0, kinRot = 0, withBefore = 0, withAfter = 0, jump = 0;
 	velAfter.resize(nBodies, Vector3r::Zero());
 	angVelAfter.resize(nBodies, Vector3r::Zero());
 	for (const auto& b : *scene->bodies) {
@@ -69,6 +72,14 @@ void RdemLeapfrogEnergy::action()
 		const Matrix3r I = b->isAspherical() ? Matrix3r(R * J.asDiagonal() * R.transpose()) : Matrix3r(J.asDiagonal());
 		kinTrans += rdem::pairedKineticEnergy<Real>(s.mass * f, v0, s.vel, Matrix3r::Zero(), w0, s.angVel);
 		kinRot += rdem::pairedKineticEnergy<Real>(0, v0, s.vel, I, w0, s.angVel);
+		if (stepChanged) {
+			Vector3r F = scene->forces.getForce(b->getId()), T = scene->forces.getTorque(b->getId());
+			for (int i = 0; i < 3; ++i) { // blocked: the kinetic term stays; gravity's work was booked with the new Δt
+				if (s.blockedDOFs & State::axisDOF(i, false)) F[i] = -s.mass * newton.gravity[i];
+				if (s.blockedDOFs & State::axisDOF(i, true)) T[i] = 0;
+			}
+			jump += rdem::stepChangeJump<Real>(lastDt, dt, v0, F, s.mass, newton.gravity, w0, T);
+		}
 		if (!damped || !s.isDamped || s.blockedDOFs == State::DOF_ALL) continue;
 		Vector3r       D = rdem::dampingForce<Real>(s.mass, s.mass, v0, s.vel, dt, scene->forces.getForce(b->getId()), newton.gravity);
 		const Vector3r T = scene->forces.getTorque(b->getId());
@@ -88,6 +99,11 @@ void RdemLeapfrogEnergy::action()
 	}
 	const long step = scene->iter;
 	recordedIter    = step;
+	lastDt          = dt;
+	if (stepChanged) {
+		stepChangeEnergy -= jump;
+		scene->energy->set(stepChangeEnergy, "rdemStepChange", stepChangeIx);
+	}
 	if (!paired) { // NewtonIntegrator's values of this step stand; this engine's booking takes over from them
 		int ix = -1;
 		scene->energy->findId("nonviscDamp", ix, false, /*create*/ false);

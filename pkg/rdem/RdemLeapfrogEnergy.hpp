@@ -25,13 +25,18 @@ public:
 
 Bodies scaled by :yref:`RdemDensityScaling` (:yref:`State::densityScaling` $s$) are booked with their inertial mass $m/s$ and inertia $I/s$, and their damping force and torque as $1/s$ of what the integrator applied to the scaled forces; gravity's work stays with $m$ (``rdem::inertialFactor``). :yref:`NewtonIntegrator::densityScaling` itself leaves NewtonIntegrator's values standing.
 
-Rotations are paired the same way, with the inertia in global axes after the step; the balance then holds up to the rotation integrator's small-rotation error. Degrees of freedom that are blocked (imposed velocities) keep NewtonIntegrator's $\frac12 mv^2$. Velocities are read after the integrator and kept for the next step: a velocity set by hand between two steps on a free degree of freedom counts, in that step, as if the integrator had made it (impose velocities on blocked DOFs, as YADE does). At the first tracked step, after a step without tracking, and in periodic scenes (whose kinetic energy NewtonIntegrator takes from fluctuation velocities) NewtonIntegrator's values stand.)""",
+Rotations are paired the same way, with the inertia in global axes after the step; the balance then holds up to the rotation integrator's small-rotation error. Degrees of freedom that are blocked (imposed velocities) keep NewtonIntegrator's $\frac12 mv^2$. Velocities are read after the integrator and kept for the next step: a velocity set by hand between two steps on a free degree of freedom counts, in that step, as if the integrator had made it (impose velocities on blocked DOFs, as YADE does). A step whose $\\Delta t$ differs from the last one's (a :yref:`RdemTimeStepper` update) shifts that conserved total by $\\frac12(\\Delta t_n-\\Delta t_{n-1})\\,(v_{n-1/2}\\cdot(F_n-mg)+\\omega_{n-1/2}\\cdot T_n)$ summed over the bodies (``rdem::stepChangeJump``: the integrator advances the velocities with the new step from forces of positions reached with the old one): a numerical shift, not work, booked as ``rdemStepChange`` with the opposite sign so that the total stays constant across it (in a cracking house, 7.7 % shorter steps shifted it by 2.8 mJ, 10 % of the energy that step exchanged).
+
+At the first tracked step, after a step without tracking, and in periodic scenes (whose kinetic energy NewtonIntegrator takes from fluctuation velocities) NewtonIntegrator's values stand.)""",
 		((shared_ptr<NewtonIntegrator>,integrator,,,"The integrator whose steps are booked (``rdem.engines()`` hands it); ``None``: the NewtonIntegrator in :yref:`O.engines<Omega.engines>`, found at the first step."))
 		((vector<Vector3r>,velAfter,,(Attr::hidden|Attr::readonly),"$v_{n+1/2}$ of every body after the last tracked step [m/s] (saved: a reloaded run books on as the uninterrupted one)."))
 		((vector<Vector3r>,angVelAfter,,(Attr::hidden|Attr::readonly),"$\\omega_{n+1/2}$ of every body after the last tracked step [rad/s]."))
 		((long,recordedIter,-1,(Attr::hidden|Attr::readonly),"The step whose velocities ``velAfter`` holds; -1: none."))
 		((Real,dampingWork,0,(Attr::hidden|Attr::readonly),"``nonviscDamp`` as booked by this engine, cumulated [J]."))
 		((Real,pendingDamping,0,(Attr::hidden|Attr::readonly),"The second half of the last step's damping work, booked in the next step [J]."))
+		((Real,lastDt,0,(Attr::hidden|Attr::readonly),"$\\Delta t$ of the last tracked step [s] (saved): a step with another one books the jump of ``rdemStepChange``."))
+		((Real,stepChangeEnergy,0,(Attr::hidden|Attr::readonly),"``rdemStepChange`` as booked by this engine, cumulated [J]."))
+		((int,stepChangeIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 		((int,kineticIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 		((int,dampIx,-1,(Attr::hidden|Attr::noSave),"Energy index."))
 	);

@@ -203,6 +203,57 @@ TEST(LeapfrogEnergy, RemovedSpringReleasesItsPairedEnergy)
 	        1e-15 * 5e6 * u.squaredNorm());
 }
 
+/* The chain under gravity and Cundall's damping, its step changed every 37 steps (a time stepper's updates, -10 % and
+   +5 %), booked as RdemLeapfrogEnergy books it: K_n + U_n + gravity's work with the step in use + damping work split
+   over two steps, and, with `jumps`, minus stepChangeJump at each change. Returns the largest |E - E₀|/E₀. */
+Scalar changingStepBalance(bool jumps, Scalar damping)
+{
+	Chain c(6, 5);
+	c.g                         = -9.81;
+	const int               n   = c.size();
+	const Scalar            dt0 = 0.5 * c.criticalDt();
+	VectorX                 x = VectorX::Constant(n, 1e-3), v = VectorX::LinSpaced(n, -0.1, 0.1);
+	Scalar                  dt = dt0, gravWork = 0, dissipated = 0, stepChange = 0, E0 = 0, worst = 0;
+	rdem::SplitWork<Scalar> work;
+	for (int step = 0; step < 3000; ++step) {
+		const Scalar dtBefore = dt;
+		if (step > 0 && step % 37 == 0) dt = dt0 * (step % 74 == 0 ? 0.9 : 1.05); // the stepper's update, before the integrator
+		const VectorX F   = -c.K * x;
+		const Scalar  U   = x.dot(c.K * x) / 2;
+		Scalar        kin = 0, withBefore = 0, withAfter = 0, jump = 0;
+		for (int i = 0; i < n; ++i) {
+			gravWork -= c.mass[i] * c.g * v[i] * dt;
+			Scalar a = F[i] / c.mass[i] + c.g;
+			a *= 1 - damping * (a * (v[i] + dt * a / 2) > 0 ? 1 : (a * (v[i] + dt * a / 2) < 0 ? -1 : 0));
+			const V3 before(v[i], 0, 0);
+			v[i] += dt * a;
+			x[i] += dt * v[i];
+			const V3 after(v[i], 0, 0), g(c.g, 0, 0);
+			kin += rdem::pairedKineticEnergy<Scalar>(c.mass[i], before, after, rdem_test::Matrix3::Zero(), V3::Zero(), V3::Zero());
+			const V3 D = rdem::dampingForce<Scalar>(c.mass[i], c.mass[i], before, after, dt, V3(F[i], 0, 0), g);
+			withBefore -= D.dot(before) * dt;
+			withAfter -= D.dot(after) * dt;
+			if (dt != dtBefore) jump += rdem::stepChangeJump<Scalar>(dtBefore, dt, before, V3(F[i], 0, 0), c.mass[i], g, V3::Zero(), V3::Zero());
+		}
+		dissipated += work.step(withBefore, withAfter);
+		if (jumps) stepChange -= jump;
+		const Scalar E = kin + U + gravWork + dissipated + stepChange;
+		if (step == 0) E0 = E;
+		worst = std::max(worst, std::abs(E - E0) / std::abs(E0));
+	}
+	return worst;
+}
+
+TEST(LeapfrogEnergy, StepChangesBalanceWithTheirJump)
+{
+	// with the jump booked: round-off (measured 1.5e-14; the file's bound); without: off by 7.7 % of E₀ undamped and
+	// 0.28 % with damping 0.2 (measured), shown above 1e-4
+	for (Scalar damping : { 0.0, 0.2 }) {
+		EXPECT_LT(changingStepBalance(true, damping), roundOff) << "damping " << damping;
+		EXPECT_GT(changingStepBalance(false, damping), 1e-4) << "damping " << damping;
+	}
+}
+
 TEST(LeapfrogEnergy, SplitWorkBooksEachHalfOnce)
 {
 	rdem::SplitWork<Scalar> w;

@@ -84,6 +84,23 @@ class EnergyBalance(unittest.TestCase):
 			print('without RdemLeapfrogEnergy, safety %g: worst |E - E0|/E0 = %.3g' % (safety, err))
 			self.assertGreater(err, 0.05, 'safety %g' % safety)
 
+	def testStepChangesBalance(self):
+		"""The step changed every 50 steps (as the time stepper's updates change it), translations, gravity and Cundall's
+		damping 0.1: the total, with the jump each change makes in the leapfrog's conserved energy booked as
+		``rdemStepChange`` (rdem::stepChangeJump), stays constant to round-off; the jumps themselves are far above it."""
+		grid(0.5, rotations=False, damping=0.1, gravity=(0, 0, -9.81), speed=1.0)
+		rdem.run(2)
+		E0, dt0, worst = O.energy.total(), O.dt, 0.0
+		for k in range(1, 9):
+			O.dt = dt0 * (0.9 if k % 2 else 1.05)
+			for _ in range(50):
+				O.step()
+				worst = max(worst, abs(O.energy.total() - E0) / abs(E0))
+		jumps = abs(O.energy['rdemStepChange'])
+		print('step changed 8 times: worst |E - E0|/E0 = %.3g, |rdemStepChange| = %.3g of %.3g J' % (worst, jumps, E0))
+		self.assertGreater(jumps, 1e3 * ROUND_OFF * abs(E0))
+		self.assertLess(worst, ROUND_OFF)
+
 	def testBreakBalancesToRoundOff(self):
 		"""Two bonded blocks, one fixed, the other free along the bond's axis only (one linear degree of freedom), released
 		from a compression of 2 MPa: it swings out and its four springs break together in tension at 1 MPa, half its

@@ -79,6 +79,29 @@ namespace rdem {
 		return out;
 	}
 
+	/* The jump of the booked total in a step n whose Δt_n differs from the last step's Δt_{n-1} (a time stepper's
+	   update), per body [J]: J = ½(Δt_n - Δt_{n-1}) (v_{n-1/2}·(F_n - m g) + ω_{n-1/2}·T_n). The integrator advances
+	   v_{n+1/2} = v_{n-1/2} + Δt_n a_n, so K_n exceeds the value that pairs with the balance of the old step by
+	   ½(Δt_n - Δt_{n-1}) v_{n-1/2}·(F_n + D_n + m g); gravity's work booked with Δt_n, -m g·v_{n-1/2}Δt_n, differs from
+	   -m g·(x_n - x_{n-1}) by -(Δt_n - Δt_{n-1}) m g·v_{n-1/2}; the first half of the damping's work (SplitWork),
+	   -½ D_n·v_{n-1/2}Δt_n, by -½(Δt_n - Δt_{n-1}) D_n·v_{n-1/2}. From step n on the balance holds for the new step.
+	   Booking -J keeps the total constant across the change. The rotations' term is the kinetic one (first order: the
+	   rotation integrator is not linear in the torque). F_n, T_n: the forces and torques of step n [N, N·m]; gravityMass
+	   the mass gravity g acts on [kg]. */
+	template <class S>
+	S stepChangeJump(
+	        S                             dtBefore,
+	        S                             dtAfter,
+	        const Eigen::Matrix<S, 3, 1>& vel,
+	        const Eigen::Matrix<S, 3, 1>& force,
+	        S                             gravityMass,
+	        const Eigen::Matrix<S, 3, 1>& gravity,
+	        const Eigen::Matrix<S, 3, 1>& angVel,
+	        const Eigen::Matrix<S, 3, 1>& torque)
+	{
+		return (dtAfter - dtBefore) * (vel.dot(force - gravityMass * gravity) + angVel.dot(torque)) / 2;
+	}
+
 	/* Energy a linear spring of stiffness k [N/m] releases when it is removed in step n (a restoring spring that breaks),
 	   so that the balance above stays exact: ½ k u_{n-1}·u_n with u_{n-1} = u_n - Δt v_{n-1/2}, its elongation u_n [m] and
 	   the velocity v_{n-1/2} [m/s] at which it grew in the last step. For one spring between a mass and a wall: K_{n-1}
