@@ -248,7 +248,7 @@ if cli.setup_only:
 
 # 3. Recording -------------------------------------------------------------------------------------------------------
 ENERGIES = ('rdemElastic', 'rdemPoisson', 'rdemBondBreak', 'rdemContactRelease', 'rdemDashpot', 'rdemFriction', 'rdemPoissonRelease', 'rdemFractureTension', 'rdemFractureShear',
-            'rdemCrushing', 'nonviscDamp', 'kinetic', 'gravWork')
+            'rdemCrushing', 'nonviscDamp', 'kinetic', 'gravWork', 'rdemStepChange')
 # yade.plot keeps the history (plot.data): live curves with plot.plot() in a YADE with a GUI, history.txt by saveDataTxt.
 plot.reset()
 plot.plots = {'drift': ('shear', 'baseShear'), 't': ('tension', 'shearBreaks')}
