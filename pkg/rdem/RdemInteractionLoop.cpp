@@ -6,8 +6,11 @@
 *************************************************************************/
 #include <core/Scene.hpp>
 #include <pkg/rdem/Ig2_RdemBlock_RdemBlock_RdemGeom.hpp>
+#include <pkg/rdem/Law2_RdemGeom_RdemPhys_FaceSprings.hpp>
+#include <pkg/rdem/OpenMPLoops.hpp>
 #include <pkg/rdem/RdemBlock.hpp>
 #include <pkg/rdem/RdemInteractionLoop.hpp>
+#include <pkg/rdem/RdemPrefetch.hpp>
 #include <pkg/rdem/math/SeparationBound.hpp>
 
 namespace yade {
@@ -31,6 +34,55 @@ Ig2_RdemBlock_RdemBlock_RdemGeom* RdemInteractionLoop::sleepFunctor(const RdemSh
 		if (auto* ig2 = dynamic_cast<Ig2_RdemBlock_RdemBlock_RdemGeom*>(f.get())) return ig2->shared.get() == &sh ? ig2 : nullptr;
 	return nullptr;
 #endif
+}
+
+std::pair<Ig2_RdemBlock_RdemBlock_RdemGeom*, Law2_RdemGeom_RdemPhys_FaceSprings*> RdemInteractionLoop::laneFunctors() const
+{
+	const std::pair<Ig2_RdemBlock_RdemBlock_RdemGeom*, Law2_RdemGeom_RdemPhys_FaceSprings*> none { nullptr, nullptr };
+#ifdef YADE_MPI
+	return none; // YADE's loop leaves out the pairs of other subdomains (as sleepFunctor)
+#else
+	if (!bondLane || !callbacks.empty() || scene->isPeriodic || loopOnSortedInteractions) return none;
+	if (scene->interactions->iterColliderLastRun >= 0 && scene->interactions->iterColliderLastRun == scene->iter) return none;
+	auto out = none;
+	for (const auto& f : geomDispatcher->functors)
+		if (auto* ig2 = dynamic_cast<Ig2_RdemBlock_RdemBlock_RdemGeom*>(f.get())) out.first = ig2;
+	for (const auto& f : lawDispatcher->functors)
+		if (auto* law = dynamic_cast<Law2_RdemGeom_RdemPhys_FaceSprings*>(f.get())) out.second = law;
+	return out.first && out.second ? out : none;
+#endif
+}
+
+void RdemInteractionLoop::rotations()
+{
+	const long n = long(scene->bodies->size());
+	rot.resize(size_t(n));
+#ifdef YADE_OPENMP
+#pragma omp parallel for schedule(static) num_threads(rdem::threadsFor(ompThreads))
+#endif
+	for (long i = 0; i < n; ++i)
+		if (const auto& b = (*scene->bodies)[Body::id_t(i)]) rot[size_t(i)] = b->state->ori.toRotationMatrix();
+}
+
+bool RdemInteractionLoop::inLane(const Interaction& I, const Law2_RdemGeom_RdemPhys_FaceSprings& law) const
+{
+	// the law cached by the dispatch takes only RdemGeom and RdemPhys; real: the functors made both
+	if (I.functorCache.constLaw.get() != &law || !I.isReal() || !static_cast<const RdemGeom&>(*I.geom).bonded) return false;
+	const auto& bodies = *scene->bodies;
+	const auto &b1 = bodies[I.getId1()], &b2 = bodies[I.getId2()];
+	return b1 && b2 && !b1->isClump() && !b2->isClump();
+}
+
+void RdemInteractionLoop::bondInLane(const shared_ptr<Interaction>& I, const Ig2_RdemBlock_RdemBlock_RdemGeom& ig2, Law2_RdemGeom_RdemPhys_FaceSprings& law)
+{
+	// Ig2_RdemBlock_RdemBlock_RdemGeom::go of a bond: the prefetch, then this step's face normal and segment kinematics
+	if (const int distance = rdem::prefetchDistanceFor(ig2.prefetchDistance, scene->interactions->size()))
+		rdem::prefetchInteractionsAhead(*scene, *I, distance);
+	const Body::id_t id1 = I->getId1(), id2 = I->getId2();
+	const State &    s1 = *(*scene->bodies)[id1]->state, &s2 = *(*scene->bodies)[id2]->state;
+	static_cast<RdemGeom&>(*I->geom).updateBond(rot[size_t(id1)], rot[size_t(id2)], s2.pos + Vector3r::Zero() - s1.pos);
+	// the physics functor leaves a real interaction as it is; the law, as the dispatch calls it
+	if (!law.Law2_RdemGeom_RdemPhys_FaceSprings::go(I->geom, I->phys, I.get())) scene->interactions->requestErase(I);
 }
 
 bool RdemInteractionLoop::worthSleeping(const Ig2_RdemBlock_RdemBlock_RdemGeom& ig2)
@@ -183,22 +235,27 @@ void RdemInteractionLoop::applyPhysicsAndLaw(
 
 void RdemInteractionLoop::action()
 {
-	RdemSharedState&                  sh  = RdemSharedState::of(scene, shared); // checks the engines when they changed
-	Ig2_RdemBlock_RdemBlock_RdemGeom* ig2 = sleepFunctor(sh);
-	if (!ig2 || !worthSleeping(*ig2)) {
+	RdemSharedState&                  sh    = RdemSharedState::of(scene, shared); // checks the engines when they changed
+	Ig2_RdemBlock_RdemBlock_RdemGeom* ig2   = sleepFunctor(sh);
+	const bool                        sleep = ig2 && worthSleeping(*ig2);
+	const auto                        lane  = laneFunctors();
+	if (!sleep) {
 		wakeAll();
 		fellAsleepLastStep = false;
-		InteractionLoop::action();
-		return;
+		if (!lane.first) {
+			InteractionLoop::action();
+			return;
+		}
 	}
-	prepareSleepers(sh.travel);
+	if (sleep) prepareSleepers(sh.travel);
+	if (lane.first) rotations();
 	const vector<IntrCallback::FuncPtr> callbackPtrs = prepareStep();
 	const long                          size         = long(scene->interactions->size());
 	// linIntrs and the sleepers by position, read through pointers the calls in the loop cannot change
 	const shared_ptr<Interaction>* const linIntrs = size > 0 ? &(*scene->interactions)[0] : nullptr;
-	Sleeper* const                       sleeping = sleepers.data();
+	Sleeper* const                       sleeping = sleep ? sleepers.data() : nullptr;
 	const rdem::BodyTravel&              travel   = sh.travel;
-	const bool                           witness  = ig2->skipApart;
+	const bool                           witness  = ig2 && ig2->skipApart;
 	long                                 slept = 0, witnessed = 0, fellAsleep = 0;
 #ifdef YADE_OPENMP
 #pragma omp parallel for schedule(guided) reduction(+ : slept, witnessed, fellAsleep) \
@@ -206,21 +263,28 @@ void RdemInteractionLoop::action()
 #endif
 	for (long k = 0; k < size; k++) {
 		const shared_ptr<Interaction>& I = linIntrs[k];
-		Sleeper&                       s = sleeping[k];
-		if (s.I) {
-			// the functor's test (the epoch and the record of the certificates checked for the step above)
-			if (s.I == I.get() && stillApart(s, travel, witness)) {
-				if (s.witness < 0) slept++;
-				else
-					witnessed++;
-				continue;
+		if (sleep) {
+			Sleeper& s = sleeping[k];
+			if (s.I) {
+				// the functor's test (the epoch and the record of the certificates checked for the step above)
+				if (s.I == I.get() && stillApart(s, travel, witness)) {
+					if (s.witness < 0) slept++;
+					else
+						witnessed++;
+					continue;
+				}
+				s.I = nullptr; // woken: another interaction at k, or the blocks may have moved enough to touch
+				keep[size_t(k)].reset();
 			}
-			s.I = nullptr; // woken: another interaction at k, or the blocks may have moved enough to touch
-			keep[size_t(k)].reset();
+		}
+		if (lane.first && inLane(*I, *lane.second)) {
+			bondInLane(I, *lane.first, *lane.second);
+			continue;
 		}
 		if (!visit(I, callbackPtrs)) continue;
-		if (fallAsleep(k, I, *ig2)) fellAsleep++;
+		if (sleep && fallAsleep(k, I, *ig2)) fellAsleep++;
 	}
+	if (!sleep) return;
 	fellAsleepLastStep = fellAsleep > 0;
 	sleptPairs += slept + witnessed;
 	ig2->skippedTests += Real(slept);     // tested by their certificate, as the functor would have

@@ -12,6 +12,7 @@
 namespace yade {
 
 class Ig2_RdemBlock_RdemBlock_RdemGeom;
+class Law2_RdemGeom_RdemPhys_FaceSprings;
 class RdemGap;
 
 /// YADE's InteractionLoop that does not visit the pairs of blocks known apart (RdemGap) while the geometry functor's test would find them apart.
@@ -27,6 +28,7 @@ Pairs that only touch (the neighbours of a wall, of a dry-stacked cube: their ov
 
 The sleepers are forgotten, and the loop is YADE's own for the step, whenever they cannot be trusted or the certificates do not apply: the travel record is not of this step or has restarted (a body erased, added or replaced), the number of bodies changed, a collider asks the loop to remove the pairs it did not see (``InteractionContainer::iterColliderLastRun``), the cell is periodic, ``loopOnSortedInteractions`` is set, the geometry functor does not share this loop's :yref:`RdemSharedState`, or YADE is built with MPI (a body's subdomain can change without the travel record seeing it). In a step after one in which no pair was known apart (none slept or fell asleep, the functor counted none) the loop is YADE's too, until the functor counts one: a scene without such pairs (every pair a bond or a contact) does not pay for the sleepers. Witness sleepers are woken while the functor's :yref:`skipApart<Ig2_RdemBlock_RdemBlock_RdemGeom.skipApart>` is off, as the functor then makes no witness test. A sleeper whose position now holds another interaction (the container moves its last interaction into the place of an erased one) is visited. A sleeping pair reset in place (``InteractionContainer::requestErase``, which ``O.interactions.erase`` calls) is tested again only when its certificate runs out, where YADE's loop tests it at once: its certificate proves the blocks apart, so the results are the same, but the certificates made afterwards, and so ``skippedTests`` and ``witnessTests``, can differ.)""",
 		((bool,sleepApart,true,,"Skip the pairs known apart without visiting them (above); False: YADE's :yref:`InteractionLoop` at every step, the reference the tests compare against. The same results either way."))
+		((bool,bondLane,true,Attr::noSave,"Visit the bonds (:yref:`RdemGeom.bonded`, intact or cracked) without YADE's dispatch: the geometry functor's update of a bond (``RdemGeom::updateBond``, with the blocks' rotation matrices made once per block and step instead of twice per bond) and the law's :yref:`Law2_RdemGeom_RdemPhys_FaceSprings` called directly, the same functions with the same arguments as through the dispatch, so the run is the same to the last bit (tests/yade/test_interaction_loop.py). Used in the steps this loop makes itself (a scene that is not periodic, without callbacks, ``loopOnSortedInteractions`` or a collider that asks for the removal of the pairs it did not see; not with MPI); False: every interaction through the dispatch. Not saved: a loaded scene uses the lane."))
 		((long,sleptPairs,0,Attr::noSave,"Visits of pairs known apart skipped so far (each also counted in :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom.skippedTests` if by its certificate, in :yref:`Ig2_RdemBlock_RdemBlock_RdemGeom.witnessTests` if by its witness axis); not saved with the scene."))
 		((shared_ptr<RdemSharedState>,shared,,,"What the plugin's engines share (:yref:`RdemSharedState`): the blocks' travel, which decides whether a certificate holds; the geometry functor must hold the same (handed by ``rdem.engines()``; None: the law's, taken at the first step)."))
 	);
@@ -58,6 +60,16 @@ private:
 
 	/// The geometry functor of blocks that shares sh, if the sleepers can be used in this step; nullptr: YADE's loop.
 	Ig2_RdemBlock_RdemBlock_RdemGeom* sleepFunctor(const RdemSharedState& sh) const;
+	/// The functors of the bond lane (bondLane), when it can be used in this step: this loop's geometry functor of blocks
+	/// and law, {nullptr, nullptr} otherwise.
+	std::pair<Ig2_RdemBlock_RdemBlock_RdemGeom*, Law2_RdemGeom_RdemPhys_FaceSprings*> laneFunctors() const;
+	/// The blocks' rotation matrices of this step, by body id (the bond lane); made by rotations().
+	vector<Matrix3r> rot;
+	void             rotations();
+	/// Whether I is a bond of two blocks that the lane takes (its law cached by the dispatch is law).
+	bool inLane(const Interaction& I, const Law2_RdemGeom_RdemPhys_FaceSprings& law) const;
+	/// The bond I in the lane: what Ig2_RdemBlock_RdemBlock_RdemGeom::go and the law do with a bond, without the dispatch.
+	void bondInLane(const shared_ptr<Interaction>& I, const Ig2_RdemBlock_RdemBlock_RdemGeom& ig2, Law2_RdemGeom_RdemPhys_FaceSprings& law);
 	/// Whether the last step showed pairs known apart (fellAsleepLastStep, skippedSeen, witnessSeen); records the functor's counts.
 	bool worthSleeping(const Ig2_RdemBlock_RdemBlock_RdemGeom& ig2);
 	/// Forgets every sleeper.

@@ -3,7 +3,8 @@ witness axis still separates them: runs
 with RdemInteractionLoop.sleepApart on and off (off: YADE's own InteractionLoop::action) from the same saved state give
 the same bits (positions, orientations, velocities, forces, torques, the time step, every energy, the functor's counters
 of pairs found apart by certificate and by witness axis), also when bodies and interactions are erased, a block is moved far (the collider erases its pairs:
-positions in the container change) and bodies are added while pairs sleep; and the sleepers do skip most pairs."""
+positions in the container change) and bodies are added while pairs sleep; and the sleepers do skip most pairs. The
+same for RdemInteractionLoop.bondLane (bonds visited without YADE's dispatch) on and off."""
 import unittest
 import harness
 from yade import O, Vector3
@@ -54,10 +55,12 @@ def collapse(name, n=4, h=0.02):
 
 class SleepingPairs(unittest.TestCase):
 
-	def continued(self, name, sleep, steps, disturb=None):
-		"""The state saved as name, run steps steps with sleepApart = sleep (disturb(step) called before each step)."""
+	def continued(self, name, sleep, steps, disturb=None, lane=None):
+		"""The state saved as name, run steps steps with sleepApart = sleep and bondLane = lane (None: as sleep, so that
+		off is YADE's own loop; disturb(step) called before each step)."""
 		O.loadTmp(name)
 		loop().sleepApart = sleep
+		loop().bondLane = sleep if lane is None else lane
 		visits = 0
 		for k in range(steps):
 			if disturb:
@@ -106,6 +109,31 @@ class SleepingPairs(unittest.TestCase):
 		# Loose blocks touching along edges and corners have no certificate but a witness axis (RdemGap.witness), those
 		# that parted have a certificate; both sleep.
 		self.assertGreater(slept, 0.02 * visits)
+
+	def testBondLaneSameBits(self):
+		"""The bonds visited without YADE's dispatch (bondLane) against through it, the sleepers off in both: the cracking
+		cube (paper's springs and hexahedra, springs breaking, contacts) and a running-bond wall with Poisson cells (the
+		offset correction of bonds between blocks of different lengths) vibrating from random velocities."""
+		cracked('cube')
+		lane, _, _ = self.continued('cube', False, 100, lane=True)
+		dispatch, _, _ = self.continued('cube', False, 100, lane=False)
+		self.assertGreater(sum(lane['breaks']), 0)
+		self.assertSameBits(lane, dispatch)
+		import random
+		import wall_cases as wc
+		wall, plates = wc.homogeneousWall('running', 2, (1, 1, 1), 0.3, 2)
+		rdem.poissonEngine().elements = 'cells'
+		rdem.poissonEngine().build(wall.ids + plates[0] + plates[1])
+		rnd = random.Random(5)
+		for b in O.bodies:
+			b.state.vel = Vector3(rnd.uniform(-1, 1), rnd.uniform(-1, 1), rnd.uniform(-1, 1)) * 0.01
+		O.trackEnergy = True
+		rdem.run(20)
+		self.assertTrue(any(I.phys.offsetCorrection for I in O.interactions if I.isReal and I.geom.bonded))
+		O.saveTmp('cells')
+		lane, _, _ = self.continued('cells', False, 100, lane=True)
+		dispatch, _, _ = self.continued('cells', False, 100, lane=False)
+		self.assertSameBits(lane, dispatch)
 
 	def testContainerChangesWhileSleeping(self):
 		# A body erased (its interactions erased: the container moves its last interaction into the place of each), a block
