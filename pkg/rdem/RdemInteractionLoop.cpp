@@ -18,39 +18,44 @@ namespace yade {
 YADE_PLUGIN((RdemInteractionLoop));
 CREATE_LOGGER(RdemInteractionLoop);
 
-Ig2_RdemBlock_RdemBlock_RdemGeom* RdemInteractionLoop::sleepFunctor(const RdemSharedState& sh) const
+namespace {
+	/// The first functor of type T in a dispatcher's list, nullptr if none.
+	template <class T, class V> T* firstOfType(const V& functors)
+	{
+		for (const auto& f : functors)
+			if (auto* t = dynamic_cast<T*>(f.get())) return t;
+		return nullptr;
+	}
+}
+
+bool RdemInteractionLoop::ownStepPossible() const
 {
 #ifdef YADE_MPI
 	/* YADE's loop erases the pairs of two bodies of other subdomains; a body's subdomain can change in place (mpy's
 	   migration) without the travel record restarting, so a sleeper could be such a pair: not proven equal, not used. */
-	(void)sh;
-	return nullptr;
+	return false;
 #else
-	// currentFor: the record of this step (RdemContactGate ran before this loop) of a scene that is not periodic.
-	if (!sleepApart || loopOnSortedInteractions || !sh.travel.currentFor(*scene)) return nullptr;
 	// A collider that leaves the removal of the pairs it did not see to this loop needs every pair visited.
-	if (scene->interactions->iterColliderLastRun >= 0 && scene->interactions->iterColliderLastRun == scene->iter) return nullptr;
-	for (const auto& f : geomDispatcher->functors)
-		if (auto* ig2 = dynamic_cast<Ig2_RdemBlock_RdemBlock_RdemGeom*>(f.get())) return ig2->shared.get() == &sh ? ig2 : nullptr;
-	return nullptr;
+	const long colliderRun = scene->interactions->iterColliderLastRun;
+	return !loopOnSortedInteractions && !(colliderRun >= 0 && colliderRun == scene->iter);
 #endif
+}
+
+Ig2_RdemBlock_RdemBlock_RdemGeom* RdemInteractionLoop::sleepFunctor(const RdemSharedState& sh) const
+{
+	// currentFor: the record of this step (RdemContactGate ran before this loop) of a scene that is not periodic.
+	if (!sleepApart || !ownStepPossible() || !sh.travel.currentFor(*scene)) return nullptr;
+	auto* ig2 = firstOfType<Ig2_RdemBlock_RdemBlock_RdemGeom>(geomDispatcher->functors);
+	return ig2 && ig2->shared.get() == &sh ? ig2 : nullptr;
 }
 
 std::pair<Ig2_RdemBlock_RdemBlock_RdemGeom*, Law2_RdemGeom_RdemPhys_FaceSprings*> RdemInteractionLoop::laneFunctors() const
 {
-	const std::pair<Ig2_RdemBlock_RdemBlock_RdemGeom*, Law2_RdemGeom_RdemPhys_FaceSprings*> none { nullptr, nullptr };
-#ifdef YADE_MPI
-	return none; // YADE's loop leaves out the pairs of other subdomains (as sleepFunctor)
-#else
-	if (!bondLane || !callbacks.empty() || scene->isPeriodic || loopOnSortedInteractions) return none;
-	if (scene->interactions->iterColliderLastRun >= 0 && scene->interactions->iterColliderLastRun == scene->iter) return none;
-	auto out = none;
-	for (const auto& f : geomDispatcher->functors)
-		if (auto* ig2 = dynamic_cast<Ig2_RdemBlock_RdemBlock_RdemGeom*>(f.get())) out.first = ig2;
-	for (const auto& f : lawDispatcher->functors)
-		if (auto* law = dynamic_cast<Law2_RdemGeom_RdemPhys_FaceSprings*>(f.get())) out.second = law;
-	return out.first && out.second ? out : none;
-#endif
+	if (!bondLane || !callbacks.empty() || scene->isPeriodic || !ownStepPossible()) return { nullptr, nullptr };
+	auto* ig2 = firstOfType<Ig2_RdemBlock_RdemBlock_RdemGeom>(geomDispatcher->functors);
+	auto* law = firstOfType<Law2_RdemGeom_RdemPhys_FaceSprings>(lawDispatcher->functors);
+	if (!ig2 || !law) return { nullptr, nullptr };
+	return { ig2, law };
 }
 
 void RdemInteractionLoop::rotations()

@@ -58,6 +58,9 @@ private:
 	bool fellAsleepLastStep = true;
 	Real skippedSeen = -1, witnessSeen = -1;
 
+	/// Whether this loop can make the step itself, as YADE's loop would (not with MPI, loopOnSortedInteractions or a
+	/// collider that asks for the removal of the pairs it did not see): the sleepers and the bond lane need it.
+	bool ownStepPossible() const;
 	/// The geometry functor of blocks that shares sh, if the sleepers can be used in this step; nullptr: YADE's loop.
 	Ig2_RdemBlock_RdemBlock_RdemGeom* sleepFunctor(const RdemSharedState& sh) const;
 	/// The functors of the bond lane (bondLane), when it can be used in this step: this loop's geometry functor of blocks

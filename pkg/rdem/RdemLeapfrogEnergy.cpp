@@ -45,10 +45,9 @@ void RdemLeapfrogEnergy::action()
 	const bool paired = recordedIter == scene->iter - 1 && velAfter.size() == nBodies && !scene->isPeriodic && !newton.densityScaling;
 	const Real dt = scene->dt, damping = newton.damping;
 	const bool damped = paired && damping != 0;
-	if (damped) scene->forces.sync(); // synced by the integrator already; a no-op then
 	// a step whose Δt differs from the last tracked one's (a time stepper's update): its jump is booked (stepChangeJump)
 	const bool stepChanged = paired && lastDt > 0 && dt != lastDt;
-	if (stepChanged) scene->forces.sync();
+	if (damped || stepChanged) scene->forces.sync(); // synced by the integrator already; a no-op then
 	Real kinTrans = 0, kinRot = 0, withBefore = 0, withAfter = 0, jump = 0;
 	velAfter.resize(nBodies, Vector3r::Zero());
 	angVelAfter.resize(nBodies, Vector3r::Zero());
